@@ -1,0 +1,522 @@
+//! Seeded, reproducible input generators: the thesis's experiment inputs (chapter 4)
+//! and adversarial families for the differential tests.
+//!
+//! Every generator takes the caller's RNG, so a seed reproduces a pair exactly.
+//!
+//! | [`Family`] | what | source |
+//! |---|---|---|
+//! | `Ellipse` | random angles on an ellipse (axes in (0, 1], translated in [-1, 1]²), array starting at the leftmost vertex | thesis 4.2.1 |
+//! | `Rotated` | as `Ellipse`, randomly rotated, with a random start index | thesis 4.2.3 |
+//! | `NonUniform` | angles from a random piecewise-linear density, rotated, random start | thesis 4.2.4 |
+//! | `SharedVertex`, `VertexOnEdge`, `SharedEdge`, `OverlappingEdges` | exact touchings on integer coordinates; `Disjoint` moves Q one lattice step away | |
+//! | `Nested` | a regular n-gon of radius 1 inside the n-gon of radius ½(1 + 1/cos(2π/n)) at the same angles (1.5 for n < 5): boundaries disjoint, answer true | |
+//! | `OneUlpGap` | a vertex of Q one ulp to the right of P's rightmost x, at offsets 0 and 2^10..2^52; `Intersecting` gives the touching twin | |
+//!
+//! Ellipse-based polygons are convex hulls of the generated points, so they may have
+//! slightly fewer than n vertices where rounding made neighbours collinear.
+
+use crate::intersect::{ArrayIntersection, Linear};
+use crate::kernel::Point;
+use crate::polygon::{ConvexPolygon, convex_hull};
+use rand::Rng;
+use std::f64::consts::TAU;
+use std::fmt;
+use std::str::FromStr;
+
+/// A generator family; see the module table.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Family {
+    Ellipse,
+    Rotated,
+    NonUniform,
+    SharedVertex,
+    VertexOnEdge,
+    SharedEdge,
+    OverlappingEdges,
+    Nested,
+    OneUlpGap,
+}
+
+impl Family {
+    pub const ALL: &'static [Family] = &[
+        Family::Ellipse,
+        Family::Rotated,
+        Family::NonUniform,
+        Family::SharedVertex,
+        Family::VertexOnEdge,
+        Family::SharedEdge,
+        Family::OverlappingEdges,
+        Family::Nested,
+        Family::OneUlpGap,
+    ];
+
+    /// The families whose pairs touch exactly (or miss by the smallest step) when steered.
+    pub const TOUCHING: &'static [Family] = &[
+        Family::SharedVertex,
+        Family::VertexOnEdge,
+        Family::SharedEdge,
+        Family::OverlappingEdges,
+        Family::OneUlpGap,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Family::Ellipse => "ellipse",
+            Family::Rotated => "rotated",
+            Family::NonUniform => "non-uniform",
+            Family::SharedVertex => "shared-vertex",
+            Family::VertexOnEdge => "vertex-on-edge",
+            Family::SharedEdge => "shared-edge",
+            Family::OverlappingEdges => "overlapping-edges",
+            Family::Nested => "nested",
+            Family::OneUlpGap => "one-ulp-gap",
+        }
+    }
+}
+
+impl fmt::Display for Family {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Family {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Family::ALL
+            .iter()
+            .copied()
+            .find(|f| f.name() == s)
+            .ok_or_else(|| {
+                let names: Vec<&str> = Family::ALL.iter().map(|f| f.name()).collect();
+                format!("unknown family '{s}' (valid: {})", names.join(", "))
+            })
+    }
+}
+
+/// Which answer a generated pair should have.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Relation {
+    /// Whatever the family's random placement gives (thesis: translations in [-1, 1]²).
+    #[default]
+    Any,
+    /// Steered to intersect (for touching families: to touch).
+    Intersecting,
+    /// Steered apart (for touching families: by the smallest step).
+    Disjoint,
+}
+
+/// A probability density on [0, 1) for the angles of ellipse vertices.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Density {
+    Uniform,
+    /// Piecewise linear through `weights[i]` at i / (len − 1) (thesis 4.2.4).
+    PiecewiseLinear {
+        weights: Vec<f64>,
+    },
+}
+
+impl Density {
+    /// A random piecewise-linear density: [0, 1] split into 1..=10 equal segments with
+    /// uniformly random weights at the knots (thesis 4.2.4).
+    pub fn random<R: Rng + ?Sized>(rng: &mut R) -> Density {
+        let segments = rng.random_range(1..=10);
+        let weights = (0..=segments)
+            .map(|_| rng.random_range(0.0..1.0) + 1e-3)
+            .collect();
+        Density::PiecewiseLinear { weights }
+    }
+
+    /// One sample in [0, 1].
+    pub fn sample<R: Rng + ?Sized>(&self, rng: &mut R) -> f64 {
+        match self {
+            Density::Uniform => rng.random_range(0.0..1.0),
+            Density::PiecewiseLinear { weights } => {
+                let k = weights.len() - 1;
+                let areas: Vec<f64> = weights.windows(2).map(|w| w[0] + w[1]).collect();
+                let mut pick = rng.random_range(0.0..areas.iter().sum::<f64>());
+                let mut seg = 0;
+                while seg + 1 < k && pick >= areas[seg] {
+                    pick -= areas[seg];
+                    seg += 1;
+                }
+                // Inverse CDF of the linear density from w0 to w1 on [0, 1].
+                let (w0, w1) = (weights[seg], weights[seg + 1]);
+                let u: f64 = rng.random_range(0.0..1.0);
+                let delta = w1 - w0;
+                let s = if delta.abs() < 1e-12 {
+                    u
+                } else {
+                    let target = u * (w0 + w1) / 2.0;
+                    ((w0 * w0 + 2.0 * delta * target).max(0.0).sqrt() - w0) / delta
+                };
+                (seg as f64 + s.clamp(0.0, 1.0)) / k as f64
+            }
+        }
+    }
+}
+
+/// A random convex polygon with about `n` vertices on an ellipse: axes in (0.05, 1],
+/// angles from `density`, optionally rotated, translated by a vector in [-1, 1]²;
+/// the array starts at the leftmost vertex (rotate it with [`ConvexPolygon::rotated`]).
+pub fn ellipse_polygon<R: Rng + ?Sized>(
+    rng: &mut R,
+    n: usize,
+    density: &Density,
+    rotate: bool,
+) -> ConvexPolygon {
+    let n = n.max(3);
+    loop {
+        let (a, b) = (rng.random_range(0.05..=1.0), rng.random_range(0.05..=1.0));
+        let phi: f64 = if rotate { rng.random_range(0.0..TAU) } else { 0.0 };
+        let (c, s) = (phi.cos(), phi.sin());
+        let (tx, ty) = (rng.random_range(-1.0..=1.0), rng.random_range(-1.0..=1.0));
+        let pts: Vec<Point> = (0..n)
+            .map(|_| {
+                let t = density.sample(rng) * TAU;
+                let (x, y) = (a * t.cos(), b * t.sin());
+                Point::new(c * x - s * y + tx, s * x + c * y + ty)
+            })
+            .collect();
+        if let Ok(h) = convex_hull(&pts) {
+            return h;
+        }
+    }
+}
+
+/// A regular n-gon of the given radius centred at the origin, first vertex at angle 0.
+pub fn regular_polygon(n: usize, radius: f64) -> ConvexPolygon {
+    let pts: Vec<Point> = (0..n.max(3))
+        .map(|i| {
+            let t = TAU * i as f64 / n.max(3) as f64;
+            Point::new(radius * t.cos(), radius * t.sin())
+        })
+        .collect();
+    ConvexPolygon::new(pts).expect("a regular polygon is convex")
+}
+
+/// A generated pair from `family` with about `n` vertices per polygon, steered by `relation`.
+pub fn pair<R: Rng + ?Sized>(
+    family: Family,
+    n: usize,
+    relation: Relation,
+    rng: &mut R,
+) -> (ConvexPolygon, ConvexPolygon) {
+    match family {
+        Family::Ellipse | Family::Rotated | Family::NonUniform => ellipse_pair(family, n, relation, rng),
+        Family::SharedVertex | Family::VertexOnEdge | Family::SharedEdge | Family::OverlappingEdges => {
+            touching_pair(family, n, relation, rng)
+        }
+        Family::Nested => nested_pair(n, relation, rng),
+        Family::OneUlpGap => one_ulp_pair(n, relation, rng),
+    }
+}
+
+fn ellipse_polygon_of(family: Family, n: usize, rng: &mut (impl Rng + ?Sized)) -> ConvexPolygon {
+    match family {
+        Family::Ellipse => ellipse_polygon(rng, n, &Density::Uniform, false),
+        Family::Rotated => {
+            let p = ellipse_polygon(rng, n, &Density::Uniform, true);
+            let start = rng.random_range(0..p.len());
+            p.rotated(start)
+        }
+        _ => {
+            let d = Density::random(rng);
+            let p = ellipse_polygon(rng, n, &d, true);
+            let start = rng.random_range(0..p.len());
+            p.rotated(start)
+        }
+    }
+}
+
+fn ellipse_pair<R: Rng + ?Sized>(
+    family: Family,
+    n: usize,
+    relation: Relation,
+    rng: &mut R,
+) -> (ConvexPolygon, ConvexPolygon) {
+    let p = ellipse_polygon_of(family, n, rng);
+    let q = ellipse_polygon_of(family, n, rng);
+    match relation {
+        Relation::Any => (p, q),
+        Relation::Intersecting => {
+            // Move a random interior point of Q onto a random interior point of P.
+            let (a, b) = (interior_point(&p, rng), interior_point(&q, rng));
+            let q = translate(&q, a.x - b.x, a.y - b.y);
+            (p, q)
+        }
+        Relation::Disjoint => {
+            // Push Q along a random direction u beyond P's extent in u, by a small gap.
+            loop {
+                let t: f64 = rng.random_range(0.0..TAU);
+                let (ux, uy) = (t.cos(), t.sin());
+                let dot = |v: &Point| v.x * ux + v.y * uy;
+                let p_max = p.vertices().iter().map(dot).fold(f64::MIN, f64::max);
+                let q_min = q.vertices().iter().map(dot).fold(f64::MAX, f64::min);
+                let gap = rng.random_range(1e-9..0.05);
+                let shift = p_max - q_min + gap;
+                let moved = translate(&q, shift * ux, shift * uy);
+                if !Linear.intersects(&p, &moved) {
+                    return (p, moved);
+                }
+            }
+        }
+    }
+}
+
+/// A random point inside `p`: a random convex combination of three vertices.
+fn interior_point<R: Rng + ?Sized>(p: &ConvexPolygon, rng: &mut R) -> Point {
+    let w: [f64; 3] = [
+        rng.random_range(0.1..1.0),
+        rng.random_range(0.1..1.0),
+        rng.random_range(0.1..1.0),
+    ];
+    let total: f64 = w.iter().sum();
+    let mut x = 0.0;
+    let mut y = 0.0;
+    for wi in w {
+        let v = p.vertex(rng.random_range(0..p.len()));
+        x += wi / total * v.x;
+        y += wi / total * v.y;
+    }
+    Point::new(x, y)
+}
+
+fn translate(p: &ConvexPolygon, dx: f64, dy: f64) -> ConvexPolygon {
+    let moved = p.vertices().iter().map(|v| Point::new(v.x + dx, v.y + dy));
+    let pts: Vec<Point> = moved.collect();
+    // Rounding can merge or straighten vertices; the hull keeps the result valid.
+    ConvexPolygon::new(pts.iter().copied())
+        .or_else(|_| convex_hull(&pts))
+        .expect("a translated polygon keeps its area")
+}
+
+/// A convex polygon on integer coordinates with about `n` vertices: the hull of
+/// rounded points on a circle of radius ~ 2·n^1.5 around `(cx, cy)` (a lattice polygon
+/// of radius R has O(R^⅔) vertices at most).
+fn lattice_polygon<R: Rng + ?Sized>(
+    rng: &mut R,
+    n: usize,
+    cx: f64,
+    cy: f64,
+    radius: Option<f64>,
+) -> Vec<Point> {
+    let n = n.max(3);
+    let r = radius
+        .unwrap_or_else(|| (2.0 * (n as f64).powf(1.5)).max(4.0))
+        .round();
+    let phase: f64 = rng.random_range(0.0..TAU);
+    (0..n)
+        .map(|i| {
+            let t = phase + TAU * i as f64 / n as f64;
+            Point::new((cx + r * t.cos()).round(), (cy + r * t.sin()).round())
+        })
+        .collect()
+}
+
+/// Exact touchings on integer coordinates. Q is `base + x·normal + y·along` for the
+/// points (x, y) of a lattice polygon C whose points other than its contact points have
+/// x ≥ 1: the linear map has a positive determinant, so Q is convex, lies beyond the
+/// supporting line of P through `base` and meets it exactly in the contact points.
+fn touching_pair<R: Rng + ?Sized>(
+    family: Family,
+    n: usize,
+    relation: Relation,
+    rng: &mut R,
+) -> (ConvexPolygon, ConvexPolygon) {
+    let touch = match relation {
+        Relation::Any => rng.random_bool(0.5),
+        Relation::Intersecting => true,
+        Relation::Disjoint => false,
+    };
+    // P doubled so that edge midpoints are lattice points.
+    let p_pts: Vec<Point> = lattice_polygon(rng, n, 0.0, 0.0, None)
+        .into_iter()
+        .map(|v| Point::new(2.0 * v.x, 2.0 * v.y))
+        .collect();
+    let p = convex_hull(&p_pts).expect("a lattice circle has area");
+    let k = p.len();
+    let i = rng.random_range(0..k);
+    let (prev, v, next) = (p.vertex(i + k - 1), p.vertex(i), p.vertex(i + 1));
+    let right_perp = |d: Point| Point::new(d.y, -d.x);
+    let sub = |a: Point, b: Point| Point::new(a.x - b.x, a.y - b.y);
+    let (base, normal, along, contacts): (Point, Point, Point, &[(f64, f64)]) = match family {
+        Family::SharedVertex => {
+            let d = sub(next, prev);
+            (v, right_perp(d), d, &[(0.0, 0.0)])
+        }
+        Family::VertexOnEdge => {
+            let d = sub(next, v);
+            let mid = Point::new((v.x + next.x) / 2.0, (v.y + next.y) / 2.0);
+            (mid, right_perp(d), d, &[(0.0, 0.0)])
+        }
+        Family::SharedEdge => {
+            let d = sub(next, v);
+            (v, right_perp(d), d, &[(0.0, 0.0), (0.0, 1.0)])
+        }
+        _ => {
+            // OverlappingEdges: Q's edge runs from the midpoint of P's edge to half an edge beyond it.
+            let d = sub(next, v);
+            let half = Point::new(d.x / 2.0, d.y / 2.0);
+            (v, right_perp(d), half, &[(0.0, 1.0), (0.0, 3.0)])
+        }
+    };
+    let m = (n / 2).max(3);
+    let r = (m as f64).powf(1.5).max(3.0).round();
+    let gap = if touch { 0.0 } else { 1.0 };
+    let mut c: Vec<(f64, f64)> = lattice_polygon(rng, m, r + 1.0, 0.0, Some(r))
+        .into_iter()
+        .map(|p| (p.x, p.y))
+        .collect();
+    c.extend_from_slice(contacts);
+    let q_pts: Vec<Point> = c
+        .into_iter()
+        .map(|(x, y)| {
+            let x = x + gap;
+            Point::new(
+                base.x + x * normal.x + y * along.x,
+                base.y + x * normal.y + y * along.y,
+            )
+        })
+        .collect();
+    let q = convex_hull(&q_pts).expect("the lattice image has area");
+    let (sp, sq) = (rng.random_range(0..p.len()), rng.random_range(0..q.len()));
+    (p.rotated(sp), q.rotated(sq))
+}
+
+fn nested_pair<R: Rng + ?Sized>(n: usize, relation: Relation, rng: &mut R) -> (ConvexPolygon, ConvexPolygon) {
+    let n = n.max(3);
+    let outer_radius = if n >= 5 {
+        0.5 * (1.0 + 1.0 / (TAU / n as f64).cos())
+    } else {
+        1.5
+    };
+    let outer = regular_polygon(n, outer_radius);
+    let mut inner = regular_polygon(n, 1.0);
+    let apart = match relation {
+        Relation::Any => rng.random_bool(0.5),
+        Relation::Intersecting => false,
+        Relation::Disjoint => true,
+    };
+    if apart {
+        inner = translate(&inner, 2.0 * outer_radius + 1.0, 0.0);
+    }
+    if rng.random_bool(0.5) {
+        (outer, inner)
+    } else {
+        (inner, outer)
+    }
+}
+
+/// P's rightmost x is `off`; Q's leftmost vertices sit at `off` (touching) or at the
+/// next float above it (a one-ulp gap).
+fn one_ulp_pair<R: Rng + ?Sized>(
+    n: usize,
+    relation: Relation,
+    rng: &mut R,
+) -> (ConvexPolygon, ConvexPolygon) {
+    let touch = match relation {
+        Relation::Any => rng.random_bool(0.5),
+        Relation::Intersecting => true,
+        Relation::Disjoint => false,
+    };
+    let exps = [None, Some(10), Some(20), Some(40), Some(52)];
+    let off = exps[rng.random_range(0..exps.len())].map_or(0.0, |e| 2f64.powi(e));
+    let l = convex_hull(&lattice_polygon(rng, n, 0.0, 0.0, None)).expect("lattice polygon");
+    let m = convex_hull(&lattice_polygon(rng, n, 0.0, 0.0, None)).expect("lattice polygon");
+    let max_x = l.vertices().iter().map(|v| v.x).fold(f64::MIN, f64::max);
+    let right = *l
+        .vertices()
+        .iter()
+        .find(|v| v.x == max_x)
+        .expect("a rightmost vertex");
+    let min_x = m.vertices().iter().map(|v| v.x).fold(f64::MAX, f64::min);
+    let left = *m
+        .vertices()
+        .iter()
+        .find(|v| v.x == min_x)
+        .expect("a leftmost vertex");
+    let p: Vec<Point> = l
+        .vertices()
+        .iter()
+        .map(|v| Point::new(v.x - max_x + off, v.y))
+        .collect();
+    let contact_x = if touch { off } else { off.next_up() };
+    let q: Vec<Point> = m
+        .vertices()
+        .iter()
+        .map(|v| {
+            let x = v.x - min_x;
+            let y = v.y - left.y + right.y;
+            Point::new(if x == 0.0 { contact_x } else { x + off }, y)
+        })
+        .collect();
+    let p = ConvexPolygon::new(p).expect("a translated lattice polygon");
+    let q = ConvexPolygon::new(q).expect("a one-ulp move of a leftmost vertex keeps convexity");
+    (p, q)
+}
+
+/// Maps both polygons of a pair by `f` and validates them again; `None` when the map
+/// destroys a polygon (rounding at extreme offsets can make it degenerate).
+pub fn map_pair(
+    pair: &(ConvexPolygon, ConvexPolygon),
+    f: impl Fn(Point) -> Point,
+) -> Option<(ConvexPolygon, ConvexPolygon)> {
+    let p = pair.0.map(&f).ok()?;
+    let q = pair.1.map(&f).ok()?;
+    Some((p, q))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Exact;
+    use crate::intersect::brute_force;
+    use rand::SeedableRng;
+    use rand::rngs::SmallRng;
+
+    #[test]
+    fn every_family_yields_valid_pairs_with_the_steered_answer() {
+        let mut rng = SmallRng::seed_from_u64(0xfa11);
+        for &family in Family::ALL {
+            for n in [3, 4, 5, 17, 200] {
+                for relation in [Relation::Intersecting, Relation::Disjoint] {
+                    let (p, q) = pair(family, n, relation, &mut rng);
+                    p.debug_validate().unwrap();
+                    q.debug_validate().unwrap();
+                    let want = relation == Relation::Intersecting;
+                    assert_eq!(brute_force(Exact, &p, &q), want, "{family} n={n} {relation:?}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn same_seed_same_pair() {
+        for &family in Family::ALL {
+            let a = pair(family, 50, Relation::Any, &mut SmallRng::seed_from_u64(5));
+            let b = pair(family, 50, Relation::Any, &mut SmallRng::seed_from_u64(5));
+            assert_eq!(a, b);
+        }
+    }
+
+    #[test]
+    fn ellipse_sizes_are_close_to_n() {
+        let mut rng = SmallRng::seed_from_u64(1);
+        let p = ellipse_polygon(&mut rng, 4096, &Density::Uniform, true);
+        assert!(p.len() > 4000, "{}", p.len());
+    }
+
+    #[test]
+    fn piecewise_density_stays_in_range_and_is_not_uniform() {
+        let mut rng = SmallRng::seed_from_u64(2);
+        let d = Density::PiecewiseLinear {
+            weights: vec![0.0, 0.0, 1.0],
+        };
+        let xs: Vec<f64> = (0..10_000).map(|_| d.sample(&mut rng)).collect();
+        assert!(xs.iter().all(|&x| (0.0..=1.0).contains(&x)));
+        assert!(xs.iter().all(|&x| x >= 0.5), "no mass where the weights are zero");
+        let upper = xs.iter().filter(|&&x| x > 0.75).count();
+        assert!(upper > 7_000, "density rises towards 1: {upper}");
+    }
+}

@@ -1,0 +1,338 @@
+//! Points and the geometric predicates every algorithm is written against.
+//!
+//! Algorithms never compare constructed coordinates when a predicate on input
+//! points answers the same question: they ask a [`Kernel`] for the *sign* of a
+//! polynomial in the input coordinates. Two kernels implement the trait:
+//!
+//! * [`Fast`] evaluates each polynomial once in plain `f64` arithmetic. It is
+//!   right whenever rounding cannot flip the sign, which is almost always on
+//!   random input and often wrong on nearly collinear or touching input.
+//! * [`Exact`] returns the sign of the exact real value for every finite `f64`
+//!   input, in three layers: a floating-point filter that decides almost every
+//!   call at the cost of the fast kernel plus one comparison, Shewchuk's
+//!   adaptive orientation (the `robust` crate) inside the exponent range where
+//!   it is exact, and exact big-integer arithmetic on the dyadic values of the
+//!   inputs everywhere else (see [`exact`]).
+//!
+//! Kernels are zero-sized values chosen at compile time (`Barba.intersects_with(Exact, ..)`);
+//! [`Precision`] names them at run time (the CLI's `--precision`).
+//!
+//! # Degeneracies
+//! Predicates return three-way answers ([`Orientation`], [`Sign`]); a zero is a
+//! real answer (collinear, parallel, perpendicular), never an error.
+
+pub mod exact;
+mod segment;
+
+pub use exact::Exact;
+pub use segment::{SegmentContact, point_on_segment, segment_contact, segments_intersect};
+
+use std::cmp::Ordering;
+use std::fmt;
+use std::ops::{Add, Mul, Sub};
+use std::str::FromStr;
+
+/// A point (or vector) in the plane. Every finite `f64` coordinate is valid;
+/// constructors that validate input reject NaN and infinities.
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Point {
+    pub x: f64,
+    pub y: f64,
+}
+
+impl Point {
+    #[inline]
+    pub const fn new(x: f64, y: f64) -> Self {
+        Point { x, y }
+    }
+
+    /// True when both coordinates are finite (neither NaN nor infinite).
+    #[inline]
+    pub fn is_finite(self) -> bool {
+        self.x.is_finite() && self.y.is_finite()
+    }
+
+    /// Lexicographic order: by x, then by y. Exact (no arithmetic).
+    /// Both coordinates must be comparable (not NaN); NaN compares as equal.
+    #[inline]
+    pub fn lex_cmp(self, other: Point) -> Ordering {
+        self.x
+            .partial_cmp(&other.x)
+            .unwrap_or(Ordering::Equal)
+            .then(self.y.partial_cmp(&other.y).unwrap_or(Ordering::Equal))
+    }
+}
+
+impl From<[f64; 2]> for Point {
+    fn from([x, y]: [f64; 2]) -> Self {
+        Point { x, y }
+    }
+}
+
+impl From<(f64, f64)> for Point {
+    fn from((x, y): (f64, f64)) -> Self {
+        Point { x, y }
+    }
+}
+
+impl From<Point> for [f64; 2] {
+    fn from(p: Point) -> Self {
+        [p.x, p.y]
+    }
+}
+
+/// The sign of a real number.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Sign {
+    Negative,
+    Zero,
+    Positive,
+}
+
+impl Sign {
+    /// The sign of `x`; NaN maps to `Zero` (kernels never produce NaN on finite input
+    /// except the fast kernel on overflow, where any answer is a guess).
+    #[inline]
+    pub fn of(x: f64) -> Sign {
+        if x > 0.0 {
+            Sign::Positive
+        } else if x < 0.0 {
+            Sign::Negative
+        } else {
+            Sign::Zero
+        }
+    }
+
+    #[inline]
+    pub fn reverse(self) -> Sign {
+        match self {
+            Sign::Negative => Sign::Positive,
+            Sign::Zero => Sign::Zero,
+            Sign::Positive => Sign::Negative,
+        }
+    }
+
+    /// As an ordering against zero.
+    #[inline]
+    pub fn to_ordering(self) -> Ordering {
+        match self {
+            Sign::Negative => Ordering::Less,
+            Sign::Zero => Ordering::Equal,
+            Sign::Positive => Ordering::Greater,
+        }
+    }
+}
+
+/// Orientation of an ordered triple of points, or of one direction relative to another.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Orientation {
+    /// Clockwise: a right turn.
+    Cw,
+    /// The points are collinear (or some coincide).
+    Collinear,
+    /// Counter-clockwise: a left turn.
+    Ccw,
+}
+
+impl Orientation {
+    #[inline]
+    pub fn reverse(self) -> Orientation {
+        match self {
+            Orientation::Cw => Orientation::Ccw,
+            Orientation::Collinear => Orientation::Collinear,
+            Orientation::Ccw => Orientation::Cw,
+        }
+    }
+}
+
+impl From<Sign> for Orientation {
+    #[inline]
+    fn from(s: Sign) -> Self {
+        match s {
+            Sign::Negative => Orientation::Cw,
+            Sign::Zero => Orientation::Collinear,
+            Sign::Positive => Orientation::Ccw,
+        }
+    }
+}
+
+/// A number type a predicate polynomial can be evaluated in: plain `f64`
+/// (the fast kernel), a rounding-safe interval (the exact kernel's filter) or an
+/// exact dyadic big number (the exact kernel's fallback).
+pub trait Ring: Clone + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Sized {
+    /// The exact value of a finite `f64` (or its plain copy, for `f64`).
+    fn from_f64(x: f64) -> Self;
+    /// The sign if it is certain, `None` when this representation cannot tell.
+    fn certain_sign(&self) -> Option<Sign>;
+}
+
+impl Ring for f64 {
+    #[inline]
+    fn from_f64(x: f64) -> Self {
+        x
+    }
+    #[inline]
+    fn certain_sign(&self) -> Option<Sign> {
+        Some(Sign::of(*self))
+    }
+}
+
+/// A predicate: a polynomial in input coordinates whose sign answers a geometric question.
+///
+/// Write the polynomial once, generic over [`Ring`]; each kernel chooses how to
+/// evaluate it. Only `+`, `-` and `*` of input coordinates are allowed, so the exact
+/// kernel can always evaluate it exactly.
+pub trait Polynomial {
+    fn eval<R: Ring>(&self) -> R;
+}
+
+/// Geometric predicates, answered either quickly ([`Fast`]) or exactly ([`Exact`]).
+///
+/// All methods take finite coordinates. `orient` is the hot predicate and has a
+/// dedicated implementation; everything else goes through [`Kernel::sign`].
+pub trait Kernel: Copy + Clone + Default + fmt::Debug + Send + Sync + 'static {
+    /// A short name (`"fast"` or `"exact"`).
+    const NAME: &'static str;
+
+    /// Orientation of the triple (a, b, c): the sign of (b − a) × (c − a).
+    fn orient(self, a: Point, b: Point, c: Point) -> Orientation;
+
+    /// The sign of a predicate polynomial.
+    fn sign<P: Polynomial>(self, poly: &P) -> Sign;
+
+    /// The sign of the cross product (b − a) × (d − c): `Ccw` when direction d − c
+    /// points counter-clockwise from direction b − a, `Collinear` when parallel.
+    #[inline]
+    fn cross(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
+        self.sign(&CrossPoly(a, b, c, d)).into()
+    }
+
+    /// The sign of the dot product (b − a) · (d − c).
+    #[inline]
+    fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
+        self.sign(&DotPoly(a, b, c, d))
+    }
+}
+
+pub(crate) struct CrossPoly(
+    pub(crate) Point,
+    pub(crate) Point,
+    pub(crate) Point,
+    pub(crate) Point,
+);
+impl Polynomial for CrossPoly {
+    #[inline]
+    fn eval<R: Ring>(&self) -> R {
+        let f = R::from_f64;
+        let (a, b, c, d) = (self.0, self.1, self.2, self.3);
+        (f(b.x) - f(a.x)) * (f(d.y) - f(c.y)) - (f(b.y) - f(a.y)) * (f(d.x) - f(c.x))
+    }
+}
+
+pub(crate) struct DotPoly(
+    pub(crate) Point,
+    pub(crate) Point,
+    pub(crate) Point,
+    pub(crate) Point,
+);
+impl Polynomial for DotPoly {
+    #[inline]
+    fn eval<R: Ring>(&self) -> R {
+        let f = R::from_f64;
+        let (a, b, c, d) = (self.0, self.1, self.2, self.3);
+        (f(b.x) - f(a.x)) * (f(d.x) - f(c.x)) + (f(b.y) - f(a.y)) * (f(d.y) - f(c.y))
+    }
+}
+
+/// Plain `f64` predicates: one floating-point evaluation, no error analysis.
+///
+/// # Precision
+/// The answer is wrong whenever rounding flips the sign: nearly collinear
+/// triples, exact touchings at large offsets, coordinates beyond about 2^±500
+/// (overflow and underflow). Measured per input family in docs/results.md.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Fast;
+
+impl Kernel for Fast {
+    const NAME: &'static str = "fast";
+
+    #[inline]
+    fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
+        let det = (a.x - c.x) * (b.y - c.y) - (a.y - c.y) * (b.x - c.x);
+        Sign::of(det).into()
+    }
+
+    #[inline]
+    fn sign<P: Polynomial>(self, poly: &P) -> Sign {
+        Sign::of(poly.eval::<f64>())
+    }
+}
+
+/// The run-time name of a kernel (the CLI's `--precision`). Algorithms are
+/// generic over [`Kernel`]; [`Precision::dispatch`]-style matches pick the instance.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Precision {
+    /// The [`Fast`] kernel.
+    Fast,
+    /// The [`Exact`] kernel (the default).
+    #[default]
+    Exact,
+}
+
+impl Precision {
+    pub const ALL: [Precision; 2] = [Precision::Fast, Precision::Exact];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Precision::Fast => Fast::NAME,
+            Precision::Exact => Exact::NAME,
+        }
+    }
+}
+
+impl fmt::Display for Precision {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Precision {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Precision::ALL
+            .into_iter()
+            .find(|p| p.name() == s)
+            .ok_or_else(|| format!("unknown precision '{s}' (valid: fast, exact)"))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cross_and_dot_signs() {
+        let o = Point::new(0.0, 0.0);
+        let x = Point::new(1.0, 0.0);
+        let y = Point::new(0.0, 1.0);
+        for k in [Precision::Fast, Precision::Exact] {
+            let (c, d) = match k {
+                Precision::Fast => (Fast.cross(o, x, o, y), Fast.dot(o, x, o, y)),
+                Precision::Exact => (Exact.cross(o, x, o, y), Exact.dot(o, x, o, y)),
+            };
+            assert_eq!(c, Orientation::Ccw);
+            assert_eq!(d, Sign::Zero);
+        }
+        assert_eq!(Exact.cross(o, y, o, x), Orientation::Cw);
+        assert_eq!(Exact.cross(o, x, y, Point::new(2.0, 1.0)), Orientation::Collinear);
+        assert_eq!(Exact.dot(o, x, x, o), Sign::Negative);
+    }
+
+    #[test]
+    fn precision_names_round_trip() {
+        for p in Precision::ALL {
+            assert_eq!(p.name().parse::<Precision>(), Ok(p));
+        }
+        assert!("double".parse::<Precision>().unwrap_err().contains("fast, exact"));
+    }
+}

@@ -1,0 +1,372 @@
+//! [`ConvexPolygon`]: a validated convex polygon stored as a counter-clockwise array.
+
+use super::PolygonError;
+use super::hull::convex_hull;
+use crate::kernel::{Exact, Kernel, Orientation, Point};
+
+/// A convex polygon with at least three vertices, stored counter-clockwise with
+/// every turn strictly convex (no repeated and no collinear vertices).
+///
+/// The start vertex is the first vertex of the input that survives cleaning, so
+/// callers control where the array starts (the thesis's "shifted start index").
+///
+/// # Complexity
+/// Construction is O(n) for n input vertices (error reporting for a vertex list in
+/// convex position but out of order costs O(n log n)).
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct ConvexPolygon {
+    vertices: Vec<Point>,
+}
+
+impl ConvexPolygon {
+    /// Validates and cleans `points` (either orientation, any start vertex).
+    ///
+    /// # Errors
+    /// A [`PolygonError`] naming the offending input vertex: non-finite coordinates,
+    /// fewer than three distinct vertices, all collinear, a spike, a reflex vertex,
+    /// an out-of-order (bowtie) list, or a boundary winding more than once.
+    ///
+    /// ```
+    /// use polysect::{ConvexPolygon, Point};
+    /// // Clockwise, with a repeated closing vertex and a collinear middle vertex.
+    /// let p = ConvexPolygon::new([[0.0, 0.0], [0.0, 2.0], [2.0, 2.0], [2.0, 1.0], [2.0, 0.0], [0.0, 0.0]])?;
+    /// assert_eq!(p.len(), 4);
+    /// assert_eq!(p.vertices()[0], Point::new(0.0, 0.0));
+    /// assert_eq!(p.vertices()[1], Point::new(2.0, 0.0)); // now counter-clockwise
+    /// # Ok::<(), polysect::PolygonError>(())
+    /// ```
+    pub fn new<I, P>(points: I) -> Result<Self, PolygonError>
+    where
+        I: IntoIterator<Item = P>,
+        P: Into<Point>,
+    {
+        let points: Vec<Point> = points.into_iter().map(Into::into).collect();
+        clean(&points).map(|vertices| ConvexPolygon { vertices })
+    }
+
+    /// Wraps a list already known to be strictly convex and counter-clockwise.
+    /// Nothing is checked; an invalid list makes every algorithm's answer meaningless.
+    /// Use [`ConvexPolygon::debug_validate`] in tests.
+    pub fn from_ccw_unchecked(vertices: Vec<Point>) -> Self {
+        ConvexPolygon { vertices }
+    }
+
+    /// The vertices, counter-clockwise.
+    #[inline]
+    pub fn vertices(&self) -> &[Point] {
+        &self.vertices
+    }
+
+    /// Number of vertices (at least 3).
+    #[inline]
+    #[allow(clippy::len_without_is_empty)]
+    pub fn len(&self) -> usize {
+        self.vertices.len()
+    }
+
+    /// Vertex `i` counted cyclically (`i` may exceed `len()`).
+    #[inline]
+    pub fn vertex(&self, i: usize) -> Point {
+        self.vertices[i % self.vertices.len()]
+    }
+
+    /// Consumes the polygon, returning its counter-clockwise vertices.
+    pub fn into_vertices(self) -> Vec<Point> {
+        self.vertices
+    }
+
+    /// The same polygon with the array rotated to start at vertex `start`.
+    pub fn rotated(&self, start: usize) -> ConvexPolygon {
+        let mut v = self.vertices.clone();
+        let n = v.len();
+        v.rotate_left(start % n);
+        ConvexPolygon { vertices: v }
+    }
+
+    /// The polygon with every vertex mapped by `f`, validated again (an affine map
+    /// with a positive determinant keeps convexity but rounding may not).
+    pub fn map(&self, f: impl Fn(Point) -> Point) -> Result<ConvexPolygon, PolygonError> {
+        ConvexPolygon::new(self.vertices.iter().map(|&p| f(p)))
+    }
+
+    /// Axis-aligned bounding box `(min, max)`.
+    pub fn bounding_box(&self) -> (Point, Point) {
+        let mut lo = self.vertices[0];
+        let mut hi = lo;
+        for p in &self.vertices[1..] {
+            lo.x = lo.x.min(p.x);
+            lo.y = lo.y.min(p.y);
+            hi.x = hi.x.max(p.x);
+            hi.y = hi.y.max(p.y);
+        }
+        (lo, hi)
+    }
+
+    /// Checks the invariant exactly: at least three finite vertices, every turn
+    /// strictly counter-clockwise, winding once. O(n).
+    pub fn debug_validate(&self) -> Result<(), String> {
+        let v = &self.vertices;
+        if v.len() < 3 {
+            return Err(format!("{} vertices", v.len()));
+        }
+        if let Some(i) = v.iter().position(|p| !p.is_finite()) {
+            return Err(format!("vertex {i} is not finite"));
+        }
+        let n = v.len();
+        for i in 0..n {
+            let turn = Exact.orient(v[(i + n - 1) % n], v[i], v[(i + 1) % n]);
+            if turn != Orientation::Ccw {
+                return Err(format!("turn at vertex {i} is {turn:?}"));
+            }
+        }
+        match winding_number(v) {
+            1 => Ok(()),
+            w => Err(format!("winds {w} times")),
+        }
+    }
+}
+
+impl TryFrom<Vec<Point>> for ConvexPolygon {
+    type Error = PolygonError;
+    fn try_from(points: Vec<Point>) -> Result<Self, Self::Error> {
+        ConvexPolygon::new(points)
+    }
+}
+
+/// Whether direction `d` lies in the upper half-turn [0, π) of angles.
+/// Exact: `b − a` computed in floating point has the sign of the true difference.
+#[inline]
+fn upper(a: Point, b: Point) -> bool {
+    let dy = b.y - a.y;
+    dy > 0.0 || (dy == 0.0 && b.x > a.x)
+}
+
+/// How many times the edge directions of a closed chain with all-left turns go
+/// around: the number of edges leaving the lower half-turn of directions for the
+/// upper one (each turn is less than π, so no crossing is skipped).
+fn winding_number(v: &[Point]) -> usize {
+    let n = v.len();
+    (0..n)
+        .filter(|&i| {
+            let d0 = upper(v[i], v[(i + 1) % n]);
+            let d1 = upper(v[(i + 1) % n], v[(i + 2) % n]);
+            !d0 && d1
+        })
+        .count()
+}
+
+/// Validates and cleans a vertex list; see [`ConvexPolygon::new`]. Returns the
+/// strictly convex counter-clockwise vertices, starting at the first surviving input vertex.
+pub(crate) fn clean(points: &[Point]) -> Result<Vec<Point>, PolygonError> {
+    if let Some(index) = points.iter().position(|p| !p.is_finite()) {
+        return Err(PolygonError::NonFinite {
+            index,
+            point: points[index],
+        });
+    }
+    // 1. Consecutive duplicates and the repeated closing vertex; keep input indices.
+    let mut v: Vec<(Point, usize)> = Vec::with_capacity(points.len());
+    for (i, &p) in points.iter().enumerate() {
+        if v.last().is_none_or(|&(q, _)| q != p) {
+            v.push((p, i));
+        }
+    }
+    while v.len() > 1 && v[v.len() - 1].0 == v[0].0 {
+        v.pop();
+    }
+    if v.len() < 3 {
+        return Err(PolygonError::TooFewVertices { distinct: v.len() });
+    }
+    let n = v.len();
+    if (2..n).all(|i| Exact.orient(v[0].0, v[1].0, v[i].0) == Orientation::Collinear) {
+        return Err(PolygonError::AllCollinear);
+    }
+    // 2. Turns on the deduplicated list. Dropping a collinear vertex that lies between
+    //    its neighbours leaves the other turns' signs unchanged (the neighbour lies on the
+    //    same ray), so one pass decides everything.
+    let mut turns = Vec::with_capacity(n);
+    for i in 0..n {
+        let (prev, cur, next) = (v[(i + n - 1) % n].0, v[i].0, v[(i + 1) % n].0);
+        let t = Exact.orient(prev, cur, next);
+        if t == Orientation::Collinear && !strictly_between(prev, cur, next) {
+            return Err(PolygonError::DoublesBack { index: v[i].1 });
+        }
+        turns.push(t);
+    }
+    let ccw = turns.iter().filter(|&&t| t == Orientation::Ccw).count();
+    let cw = turns.iter().filter(|&&t| t == Orientation::Cw).count();
+    if ccw > 0 && cw > 0 {
+        return Err(non_convex_error(&v, &turns, ccw, cw));
+    }
+    let mut kept: Vec<Point> = v
+        .iter()
+        .zip(&turns)
+        .filter(|(_, t)| **t != Orientation::Collinear)
+        .map(|(&(p, _), _)| p)
+        .collect();
+    if cw > 0 {
+        kept.reverse();
+        kept.rotate_right(1); // keep the same start vertex
+    }
+    match winding_number(&kept) {
+        1 => Ok(kept),
+        times => Err(PolygonError::WindsMoreThanOnce { times }),
+    }
+}
+
+/// `cur` lies strictly inside the segment prev–next (given the three are collinear and
+/// `cur` differs from both): exact coordinate comparisons.
+fn strictly_between(prev: Point, cur: Point, next: Point) -> bool {
+    let inside = |a: f64, b: f64, c: f64| (a <= b && b <= c) || (c <= b && b <= a);
+    inside(prev.x, cur.x, next.x) && inside(prev.y, cur.y, next.y) && prev != next
+}
+
+/// Mixed turns: name a vertex that turns against the polygon's overall orientation
+/// (decided by the signed area, or by the majority of turns when the area is zero).
+fn non_convex_error(v: &[(Point, usize)], turns: &[Orientation], ccw: usize, cw: usize) -> PolygonError {
+    let n = v.len();
+    let twice_area: f64 = (0..n)
+        .map(|i| {
+            let (a, b) = (v[i].0, v[(i + 1) % n].0);
+            a.x * b.y - a.y * b.x
+        })
+        .sum();
+    let overall = if twice_area > 0.0 || (twice_area == 0.0 && ccw >= cw) {
+        Orientation::Ccw
+    } else {
+        Orientation::Cw
+    };
+    let i = turns
+        .iter()
+        .position(|&t| t == overall.reverse())
+        .expect("mixed turns include one against the overall orientation");
+    let index = v[i].1;
+    // In convex position (every distinct vertex on the hull) the list is merely out
+    // of order; otherwise some vertex is truly reflex.
+    let pts: Vec<Point> = v.iter().map(|&(p, _)| p).collect();
+    let on_hull = convex_hull(&pts).map(|h| h.len()).unwrap_or(0);
+    let non_collinear = turns.iter().filter(|&&t| t != Orientation::Collinear).count();
+    if on_hull == non_collinear {
+        PolygonError::OutOfOrder { index }
+    } else {
+        PolygonError::Reflex { index }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn poly(pts: &[[f64; 2]]) -> Result<ConvexPolygon, PolygonError> {
+        ConvexPolygon::new(pts.iter().copied())
+    }
+
+    const SQUARE: [[f64; 2]; 4] = [[0., 0.], [1., 0.], [1., 1.], [0., 1.]];
+
+    #[test]
+    fn accepts_both_orientations_and_any_start() {
+        let ccw = poly(&SQUARE).unwrap();
+        let mut cw_list = SQUARE;
+        cw_list.reverse();
+        let cw = poly(&cw_list).unwrap();
+        assert_eq!(cw.vertices()[0], Point::new(0., 1.));
+        assert_eq!(cw.rotated(1).vertices(), ccw.vertices());
+        for p in [&ccw, &cw] {
+            p.debug_validate().unwrap();
+        }
+    }
+
+    #[test]
+    fn cleans_duplicates_closing_vertex_and_collinear_runs() {
+        let p = poly(&[
+            [0., 0.],
+            [0., 0.],
+            [1., 0.],
+            [2., 0.],
+            [3., 0.],
+            [3., 3.],
+            [3., 3.],
+            [0., 3.],
+            [0., 1.5],
+            [0., 0.],
+            [0., 0.],
+        ])
+        .unwrap();
+        assert_eq!(
+            p.vertices(),
+            &[
+                Point::new(0., 0.),
+                Point::new(3., 0.),
+                Point::new(3., 3.),
+                Point::new(0., 3.)
+            ]
+        );
+        // The start vertex itself collinear: the next surviving vertex starts.
+        let q = poly(&[[1., 0.], [2., 0.], [2., 2.], [0., 2.], [0., 0.]]).unwrap();
+        assert_eq!(q.vertices()[0], Point::new(2., 0.));
+        assert_eq!(q.len(), 4);
+    }
+
+    #[test]
+    fn reports_each_error_with_its_vertex() {
+        use PolygonError::*;
+        assert!(matches!(
+            poly(&[[0., 0.], [f64::NAN, 1.], [1., 1.]]),
+            Err(NonFinite { index: 1, .. })
+        ));
+        assert!(matches!(
+            poly(&[[0., 0.], [1., f64::INFINITY], [1., 1.]]),
+            Err(NonFinite { index: 1, .. })
+        ));
+        assert_eq!(poly(&[[0., 0.], [1., 1.]]), Err(TooFewVertices { distinct: 2 }));
+        assert_eq!(
+            poly(&[[0., 0.], [1., 1.], [1., 1.], [0., 0.]]),
+            Err(TooFewVertices { distinct: 2 })
+        );
+        assert_eq!(poly(&[]), Err(TooFewVertices { distinct: 0 }));
+        assert_eq!(poly(&[[0., 0.], [1., 1.], [2., 2.]]), Err(AllCollinear));
+        assert_eq!(
+            poly(&[[0., 0.], [2., 0.], [1., 0.], [1., 1.]]),
+            Err(DoublesBack { index: 1 })
+        );
+        // An arrowhead: vertex 3 points inwards.
+        assert_eq!(
+            poly(&[[0., 0.], [4., 0.], [4., 4.], [2., 1.], [0., 4.]]),
+            Err(Reflex { index: 3 })
+        );
+        // Same arrowhead, clockwise.
+        assert_eq!(
+            poly(&[[0., 4.], [2., 1.], [4., 4.], [4., 0.], [0., 0.]]),
+            Err(Reflex { index: 1 })
+        );
+        // A bowtie: the square's vertices in the wrong order.
+        assert!(matches!(
+            poly(&[[0., 0.], [1., 1.], [1., 0.], [0., 1.]]),
+            Err(OutOfOrder { .. })
+        ));
+        // A pentagram: every turn the same way, winding twice.
+        let star: Vec<[f64; 2]> = (0..5)
+            .map(|i| {
+                let a = std::f64::consts::TAU * (2 * i) as f64 / 5.0;
+                [a.cos(), a.sin()]
+            })
+            .collect();
+        assert_eq!(poly(&star), Err(WindsMoreThanOnce { times: 2 }));
+    }
+
+    #[test]
+    fn errors_have_readable_messages() {
+        let e = poly(&[[0., 0.], [4., 0.], [4., 4.], [2., 1.], [0., 4.]]).unwrap_err();
+        assert_eq!(e.to_string(), "vertex 3 is reflex: the polygon is not convex");
+    }
+
+    #[test]
+    fn keeps_one_ulp_turns_at_large_offsets() {
+        let o = 2f64.powi(50);
+        // The middle vertex is one ulp outside the chord: a genuine (tiny) convex turn.
+        let p = poly(&[[o, o], [o + 2.0, o], [o + 4.0, o + 0.25], [o + 4.0, o + 4.0]]);
+        assert_eq!(p.unwrap().len(), 4);
+        let q = poly(&[[o, o], [o + 2.0, o], [o + 4.0, o], [o + 4.0, o + 4.0]]).unwrap();
+        assert_eq!(q.len(), 3);
+    }
+}

@@ -1,0 +1,98 @@
+use crate::kernel::Point;
+use std::fmt;
+
+/// Why a vertex list is not a valid convex polygon. Indices are positions in the
+/// input list, counting from 0.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PolygonError {
+    /// A coordinate is NaN or infinite.
+    NonFinite { index: usize, point: Point },
+    /// Fewer than three distinct vertices after removing repeats.
+    TooFewVertices { distinct: usize },
+    /// All vertices lie on one line: the region has no area.
+    AllCollinear,
+    /// The boundary runs along a line and comes back on itself at this vertex
+    /// (a zero-width spike).
+    DoublesBack { index: usize },
+    /// The boundary turns the other way at this vertex than at the others.
+    Reflex { index: usize },
+    /// The vertices are in convex position but not listed in boundary order, so
+    /// the boundary crosses itself (a bowtie); the turn at this vertex is wrong.
+    OutOfOrder { index: usize },
+    /// Every turn goes the same way but the boundary winds around more than once
+    /// (a star polygon such as the pentagram).
+    WindsMoreThanOnce { times: usize },
+}
+
+impl fmt::Display for PolygonError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            PolygonError::NonFinite { index, point } => write!(
+                f,
+                "vertex {index} has a non-finite coordinate ({}, {})",
+                point.x, point.y
+            ),
+            PolygonError::TooFewVertices { distinct } => write!(
+                f,
+                "a polygon needs at least 3 distinct vertices, found {distinct}"
+            ),
+            PolygonError::AllCollinear => {
+                write!(f, "all vertices lie on one line: the polygon has no area")
+            }
+            PolygonError::DoublesBack { index } => write!(
+                f,
+                "vertex {index}: the boundary runs back along the line it came on"
+            ),
+            PolygonError::Reflex { index } => {
+                write!(f, "vertex {index} is reflex: the polygon is not convex")
+            }
+            PolygonError::OutOfOrder { index } => write!(
+                f,
+                "vertex {index}: the vertices are not in boundary order (the boundary crosses itself)"
+            ),
+            PolygonError::WindsMoreThanOnce { times } => write!(
+                f,
+                "the boundary winds around {times} times; a convex polygon winds once"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for PolygonError {}
+
+/// Why an edit of a [`LinkedPolygon`](super::LinkedPolygon) was refused. A refused
+/// edit changes nothing.
+#[derive(Clone, Debug, PartialEq)]
+pub enum EditError {
+    /// The handle names a vertex that has been removed (or belongs to no vertex of
+    /// this polygon).
+    StaleHandle,
+    /// The new point is NaN or infinite.
+    NonFinite { point: Point },
+    /// The polygon would stop being strictly convex: the new point is not in the
+    /// region outside the edge and inside the lines through the neighbouring edges.
+    WouldBreakConvexity { point: Point },
+    /// A removal would leave fewer than three vertices.
+    TooFewVertices,
+}
+
+impl fmt::Display for EditError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            EditError::StaleHandle => write!(f, "the vertex handle is stale (the vertex was removed)"),
+            EditError::NonFinite { point } => {
+                write!(f, "point ({}, {}) has a non-finite coordinate", point.x, point.y)
+            }
+            EditError::WouldBreakConvexity { point } => write!(
+                f,
+                "placing a vertex at ({}, {}) would make the polygon non-convex",
+                point.x, point.y
+            ),
+            EditError::TooFewVertices => {
+                write!(f, "a polygon keeps at least 3 vertices; removal refused")
+            }
+        }
+    }
+}
+
+impl std::error::Error for EditError {}
