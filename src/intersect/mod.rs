@@ -10,12 +10,15 @@
 //! |---|---|---|---|
 //! | [`Linear`] | arrays | O(n + m) | separating-edge search with rotating pointers; the reference |
 //! | [`brute_force`] | arrays | O(n·m) | every edge pair plus containment; the oracle for `Linear` |
+//! | [`ChazelleDobkin`] | arrays | O(log n + log m) | pivot, pencil of tangents, the two L chains halved by middle-edge slopes in a projective frame |
 //!
 //! Each algorithm is a unit struct implementing [`ArrayIntersection`] and is listed
 //! once in [`Algorithm`], which the CLI, tests and benches iterate over.
 
+mod chazelle_dobkin;
 mod linear;
 
+pub use chazelle_dobkin::ChazelleDobkin;
 pub use linear::{Linear, brute_force};
 
 use crate::kernel::{Exact, Fast, Kernel, Precision};
@@ -75,15 +78,17 @@ pub trait ArrayIntersection {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Algorithm {
     Linear,
+    ChazelleDobkin,
 }
 
 impl Algorithm {
     /// Every algorithm, in the order tables list them.
-    pub const ALL: &'static [Algorithm] = &[Algorithm::Linear];
+    pub const ALL: &'static [Algorithm] = &[Algorithm::Linear, Algorithm::ChazelleDobkin];
 
     pub fn name(self) -> &'static str {
         match self {
             Algorithm::Linear => Linear::NAME,
+            Algorithm::ChazelleDobkin => ChazelleDobkin::NAME,
         }
     }
 
@@ -105,6 +110,7 @@ impl Algorithm {
         let mut it = Iterations::default();
         let answer = match self {
             Algorithm::Linear => Linear.intersects_probed(k, p, q, &mut it),
+            Algorithm::ChazelleDobkin => ChazelleDobkin.intersects_probed(k, p, q, &mut it),
         };
         (answer, it.0)
     }

@@ -1,0 +1,673 @@
+//! [`ChazelleDobkin`]: the O(log n + log m) intersection test after Chazelle and
+//! Dobkin (1987): a pivot vertex, its pencil of tangents, the two chains the pencil
+//! cuts out (the *L sets*), and a pruning loop that halves one chain per iteration by
+//! comparing the chains' middle edges.
+//!
+//! # The algorithm
+//! Let P have n and Q have m vertices, both counter-clockwise; the pivot A is vertex 0
+//! of P.
+//!
+//! 1. **Pivot and pencil.** If A ∈ Q the answer is yes. Otherwise the *pencil* of A
+//!    is the pair of tangent lines from A to Q; it bounds the wedge W(A) ⊇ Q (angle
+//!    strictly between 0 and π) and touches Q at the tangent points q_L and q_R.
+//!    They are the ends of the block of edges of Q *visible* from A (A strictly
+//!    outside the edge's line), a contiguous cyclic block. One edge inside the block
+//!    and one outside it come from locating A in the fan of Q around vertex 0 (the
+//!    intersection of Q with the line through A and vertex 0: IGL by binary search);
+//!    two binary searches on the cyclic edge sequence then find the block's ends.
+//! 2. **L sets.** Q can meet P only inside W(A), and P ∩ W(A) is the part of P
+//!    seen from A through the pencil. Its far boundary is the chain F of P between
+//!    the edges the two pencil lines cross (found by binary search over the fan of P
+//!    around A; this is IGL for a line through a vertex). The part of Q that faces A
+//!    is the chain G of visible edges, from q_L to q_R. F and G are the L sets.
+//!    If the pencil does not enter P (the angle of P at A and W(A) share only A)
+//!    the answer is no.
+//! 3. **Pruning.** Send A to infinity by a projective map τ whose line at infinity
+//!    passes through A outside W(A) (we take the line through A parallel to q_L q_R).
+//!    Rays from A become vertical lines, W(A) becomes a vertical slab, τ(P ∩ W(A))
+//!    becomes the region below the concave function f whose graph is F, and τ(Q)
+//!    the region above the convex function g whose graph is G. So P and Q intersect
+//!    iff f(x) ≥ g(x) for some x in the window D (the directions common to W(A) and
+//!    the angle of P at A). h = f − g is concave. Take the middle edges e_F (over
+//!    [a1, a2]) and e_G (over [b1, b2]) with τ-slopes s_F, s_G:
+//!    * **case 1**, a middle edge lies outside the window: drop the half of its
+//!      chain beyond it;
+//!    * **case 2**, s_F ≤ s_G: h is non-increasing on [max(a1, b1), ∞), so the part
+//!      of the chain whose middle edge starts later that lies right of its middle
+//!      edge can go;
+//!    * **case 3**, s_F > s_G: symmetrically, h is increasing on (−∞, min(a2, b2)],
+//!      so the part left of the middle edge that ends earlier can go;
+//!    * **case 4**, one chain is down to at most two edges: compare the other
+//!      chain's middle edge with the short chain's edge at the same place (same
+//!      argument, one chain only);
+//!    * **case 5**, both chains have at most two edges: h is piecewise linear with
+//!      its breakpoints at the chains' vertices and its window ends at chain vertices,
+//!      so the answer is whether some chain vertex in the window lies on the other
+//!      side (or on) the other chain's edge above/below it: at most six orientation
+//!      tests.
+//!
+//!    Each of cases 1–4 keeps at most ⌈k/2⌉ + 1 of a chain's k ≥ 3 edges.
+//!
+//! # Where the sources are vague, and what we decided
+//! The paper's version uses a second pencil (pivot B on Q, tangents to P) to bound
+//! the search to the quadrilateral AXBY, falls back to a pentagon when X or Y is
+//! undefined, and prunes with five cases on where the middle edges' lines cross the
+//! quadrilateral. In the projective frame above the first pencil alone gives a
+//! slab and two monotone chains, so the second pencil, the quadrilateral and the
+//! pentagon are not needed, and every comparison "which crossing comes first along
+//! the boundary" becomes an orientation or a slope comparison. The seed's
+//! description also stops pruning when either chain has fewer than six vertices and
+//! finishes with all pairs of edges, which is not logarithmic when the other chain
+//! is long; case 4 keeps pruning the long chain. See docs/algorithms.md.
+//!
+//! # Complexity
+//! O(log n + log m) time, O(1) memory, on every input: three binary searches on Q,
+//! two on P, at most about 2·(log₂ n + log₂ m) pruning iterations (each reported to
+//! the [`Probe`]), and a constant finish.
+//!
+//! # Degeneracies
+//! Closed sets throughout: A on the boundary of Q is "inside"; edges of Q collinear
+//! with A are not visible, so q_L and q_R are the tangent points nearest A; a pencil
+//! line along an edge of P gives a window of a single direction, handled by the
+//! finish like any other window; ties in the angular order and equal slopes fall on
+//! the side whose argument still holds (non-strict monotonicity); every final test
+//! counts "on the line" as contact.
+//!
+//! # Precision
+//! Every decision is the sign of a polynomial in input coordinates: `orient`, and
+//! one degree-4 slope comparison in the projective frame (below). Nothing is
+//! constructed, so the test is exact under [`Exact`](crate::Exact). Under
+//! [`Fast`](crate::Fast) wrong signs near degeneracies can give wrong answers but
+//! every step still shortens a chain, so the test always terminates.
+
+use super::{ArrayIntersection, Probe};
+use crate::kernel::{Kernel, Orientation, Point, Polynomial, Ring, Sign};
+use crate::polygon::ConvexPolygon;
+
+/// The Chazelle–Dobkin O(log n + log m) test; see the module docs.
+///
+/// ```
+/// use polysect::{ConvexPolygon, intersect::{ArrayIntersection, ChazelleDobkin}};
+/// let p = ConvexPolygon::new([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+/// let touching = ConvexPolygon::new([[2.0, 1.0], [3.0, 0.0], [3.0, 2.0]])?;
+/// let apart = ConvexPolygon::new([[2.5, 1.0], [3.0, 0.0], [3.0, 2.0]])?;
+/// assert!(ChazelleDobkin.intersects(&p, &touching));
+/// assert!(!ChazelleDobkin.intersects(&p, &apart));
+/// # Ok::<(), polysect::PolygonError>(())
+/// ```
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ChazelleDobkin;
+
+impl ArrayIntersection for ChazelleDobkin {
+    const NAME: &'static str = "chazelle-dobkin";
+
+    fn intersects_probed<K: Kernel, P: Probe>(
+        &self,
+        k: K,
+        p: &ConvexPolygon,
+        q: &ConvexPolygon,
+        probe: &mut P,
+    ) -> bool {
+        intersects(k, p.vertices(), q.vertices(), probe)
+    }
+}
+
+use Orientation::{Ccw, Cw};
+
+/// A contiguous piece of a polygon's boundary, walked forward or backward, with
+/// vertex positions `lo..=hi` (so `hi - lo` edges).
+#[derive(Clone, Copy, Debug)]
+struct Chain<'a> {
+    pts: &'a [Point],
+    start: usize,
+    forward: bool,
+    lo: usize,
+    hi: usize,
+}
+
+impl Chain<'_> {
+    #[inline]
+    fn at(&self, i: usize) -> Point {
+        let len = self.pts.len();
+        let i = i % len;
+        let idx = if self.forward {
+            let j = self.start + i;
+            if j >= len { j - len } else { j }
+        } else if i <= self.start {
+            self.start - i
+        } else {
+            self.start + len - i
+        };
+        self.pts[idx]
+    }
+
+    #[inline]
+    fn edges(&self) -> usize {
+        self.hi - self.lo
+    }
+
+    /// Position of the middle edge (i, i + 1); both ends are interior vertices
+    /// when the chain has at least three edges.
+    #[inline]
+    fn middle(&self) -> usize {
+        self.lo + (self.edges() - 1) / 2
+    }
+}
+
+/// The geometry of one query: the pivot and the pencil's tangent points, which fix
+/// the projective frame.
+#[derive(Clone, Copy)]
+struct Frame<K> {
+    k: K,
+    a: Point,
+    ql: Point,
+    qr: Point,
+}
+
+impl<K: Kernel> Frame<K> {
+    /// x(u) < x(v) in the frame: v lies counter-clockwise of u as seen from A.
+    #[inline]
+    fn before(&self, u: Point, v: Point) -> bool {
+        self.k.orient(self.a, u, v) == Ccw
+    }
+
+    /// Direction of `d` within the closed arc from `lo` to `hi` (an arc < π).
+    #[inline]
+    fn in_arc(&self, d: Point, lo: Point, hi: Point) -> bool {
+        self.k.orient(self.a, lo, d) != Cw && self.k.orient(self.a, d, hi) != Cw
+    }
+
+    /// Sign of slope(u1 u2) − slope(v1 v2) in the frame (both edges left to right).
+    #[inline]
+    fn slope_cmp(&self, u: (Point, Point), v: (Point, Point)) -> Sign {
+        self.k.sign(&SlopeCmp {
+            a: self.a,
+            c0: self.ql,
+            c1: self.qr,
+            u1: u.0,
+            u2: u.1,
+            v1: v.0,
+            v2: v.1,
+        })
+    }
+}
+
+/// The slope comparison in the projective frame that sends the pivot `a` to vertical
+/// infinity with the line through `a` in direction c = c1 − c0 as the line at infinity.
+///
+/// With coordinates z − a = s·c + t·n (any n with c × n < 0), the map
+/// z ↦ (s/t, −1/t) sends rays from `a` to vertical lines, keeps x increasing
+/// counter-clockwise around `a` and y increasing away from `a` on the side
+/// t > 0, which holds the whole wedge when c0, c1 are the tangent points q_L, q_R.
+/// The image of the line through u1, u2 has slope cross(u2 − u1, c) / orient(a, u1, u2)
+/// (n cancels), so for two edges ordered left to right (positive denominators)
+///
+/// sign(slope_u − slope_v) = sign(cross(u2 − u1, c)·orient(a, v1, v2) − cross(v2 − v1, c)·orient(a, u1, u2)),
+///
+/// a polynomial of degree 4 in the input coordinates.
+struct SlopeCmp {
+    a: Point,
+    c0: Point,
+    c1: Point,
+    u1: Point,
+    u2: Point,
+    v1: Point,
+    v2: Point,
+}
+
+impl Polynomial for SlopeCmp {
+    #[inline]
+    fn eval<R: Ring>(&self) -> R {
+        let f = R::from_f64;
+        let (cx, cy) = (f(self.c1.x) - f(self.c0.x), f(self.c1.y) - f(self.c0.y));
+        let cross_c = |p: Point, q: Point| (f(q.x) - f(p.x)) * cy.clone() - (f(q.y) - f(p.y)) * cx.clone();
+        let orient_a = |p: Point, q: Point| {
+            (f(p.x) - f(self.a.x)) * (f(q.y) - f(self.a.y)) - (f(p.y) - f(self.a.y)) * (f(q.x) - f(self.a.x))
+        };
+        cross_c(self.u1, self.u2) * orient_a(self.v1, self.v2)
+            - cross_c(self.v1, self.v2) * orient_a(self.u1, self.u2)
+    }
+}
+
+/// The tangent points of the pencil from `a` to the polygon `q`: the first and the
+/// last edge of the block of edges visible from `a`, or `None` when `a` ∈ q.
+fn pencil<K: Kernel>(k: K, q: &[Point], a: Point) -> Option<(usize, usize)> {
+    let m = q.len();
+    let visible = |i: usize| k.orient(q[i % m], q[(i + 1) % m], a) == Cw;
+    let (first_vis, last_vis) = (visible(0), visible(m - 1));
+    // One visible edge `v` and one invisible edge `n`.
+    let (v, n) = if !first_vis && !last_vis {
+        // A in the closed angle of q at vertex 0: locate it in the fan around q[0].
+        let (mut lo, mut hi) = (1, m - 1);
+        while hi - lo > 1 {
+            let mid = (lo + hi) / 2;
+            if k.orient(q[0], q[mid], a) != Cw {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        if k.orient(q[lo], q[hi], a) != Cw {
+            return None; // in the fan triangle (q0, q_lo, q_hi)
+        }
+        (lo, 0)
+    } else if first_vis != last_vis {
+        if first_vis { (0, m - 1) } else { (m - 1, 0) }
+    } else {
+        // A beyond both edges at q[0]: the ray from q[0] away from A crosses the fan.
+        let (mut lo, mut hi) = (1, m - 1);
+        while hi - lo > 1 {
+            let mid = (lo + hi) / 2;
+            if k.orient(q[0], q[mid], a) != Ccw {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        (0, lo)
+    };
+    // Last visible edge walking counter-clockwise from v to n.
+    let d = (n + m - v) % m;
+    let (mut lo, mut hi) = (0, d);
+    while hi - lo > 1 {
+        let mid = (lo + hi) / 2;
+        if visible(v + mid) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let last = (v + lo) % m;
+    // First visible edge walking counter-clockwise from n to v.
+    let d = (v + m - n) % m;
+    let (mut lo, mut hi) = (0, d);
+    while hi - lo > 1 {
+        let mid = (lo + hi) / 2;
+        if visible(n + mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    let first = (n + hi) % m;
+    Some((first, last))
+}
+
+fn intersects<K: Kernel, P: Probe>(k: K, pv: &[Point], qv: &[Point], probe: &mut P) -> bool {
+    let (n, m) = (pv.len(), qv.len());
+    let a = pv[0];
+    let Some((first, last)) = pencil(k, qv, a) else {
+        return true;
+    };
+    // G: the visible chain of Q from q_L = q[last + 1] back to q_R = q[first].
+    let g_edges = (last + m - first) % m + 1;
+    let mut g = Chain {
+        pts: qv,
+        start: (last + 1) % m,
+        forward: false,
+        lo: 0,
+        hi: g_edges,
+    };
+    let (ql, qr) = (g.at(0), g.at(g_edges));
+    let fr = Frame { k, a, ql, qr };
+    // The window: directions common to the pencil and to the angle of P at A.
+    let (p1, pl) = (pv[1], pv[n - 1]);
+    let (mut dlo, k0) = if fr.in_arc(ql, p1, pl) {
+        // Largest k with p_k at or clockwise of q_L (p_1 .. p_{n-1} turn counter-clockwise around A).
+        let (mut lo, mut hi) = (1, n);
+        while hi - lo > 1 {
+            let mid = (lo + hi) / 2;
+            if k.orient(a, pv[mid], ql) != Cw {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        (ql, lo.min(n - 2))
+    } else if fr.in_arc(p1, ql, qr) {
+        (p1, 1)
+    } else {
+        return false; // the pencil does not enter P: P ∩ W(A) = {A} and A ∉ Q
+    };
+    let (mut dhi, k1) = if fr.in_arc(qr, p1, pl) {
+        // Smallest k with p_k at or counter-clockwise of q_R.
+        let (mut lo, mut hi) = (0, n - 1);
+        while hi - lo > 1 {
+            let mid = (lo + hi) / 2;
+            if k.orient(a, qr, pv[mid]) != Cw {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        (qr, hi.max(2))
+    } else if fr.in_arc(pl, ql, qr) {
+        (pl, n - 1)
+    } else {
+        return false; // unreachable under an exact kernel: the arcs overlap
+    };
+    let k1 = k1.max(k0 + 1);
+    let mut f = Chain {
+        pts: pv,
+        start: 0,
+        forward: true,
+        lo: k0,
+        hi: k1,
+    };
+
+    while f.edges() > 2 || g.edges() > 2 {
+        probe.iteration();
+        // Case 1: a middle edge entirely outside the window.
+        if f.edges() > 2 {
+            let i = f.middle();
+            if !fr.before(dlo, f.at(i + 1)) {
+                f.lo = i + 1;
+                continue;
+            }
+            if !fr.before(f.at(i), dhi) {
+                f.hi = i;
+                continue;
+            }
+        }
+        if g.edges() > 2 {
+            let j = g.middle();
+            if !fr.before(dlo, g.at(j + 1)) {
+                g.lo = j + 1;
+                continue;
+            }
+            if !fr.before(g.at(j), dhi) {
+                g.hi = j;
+                continue;
+            }
+        }
+        if f.edges() > 2 && g.edges() > 2 {
+            let (i, j) = (f.middle(), g.middle());
+            let (v1, v2, w1, w2) = (f.at(i), f.at(i + 1), g.at(j), g.at(j + 1));
+            if fr.slope_cmp((v1, v2), (w1, w2)) != Sign::Positive {
+                // Case 2: h non-increasing right of max(a1, b1).
+                if !fr.before(v1, w1) {
+                    f.hi = i + 1;
+                    shrink_hi(&fr, &mut dhi, v2);
+                } else {
+                    g.hi = j + 1;
+                    shrink_hi(&fr, &mut dhi, w2);
+                }
+            } else if !fr.before(w2, v2) {
+                // Case 3: h increasing left of min(a2, b2).
+                f.lo = i;
+                grow_lo(&fr, &mut dlo, v1);
+            } else {
+                g.lo = j;
+                grow_lo(&fr, &mut dlo, w1);
+            }
+        } else if g.edges() > 2 {
+            // Case 4, G long: the slope of f just right of b2.
+            let j = g.middle();
+            let (w1, w2) = (g.at(j), g.at(j + 1));
+            let e = edge_right_of(&fr, &f, w2);
+            if fr.slope_cmp(e, (w1, w2)) != Sign::Positive {
+                g.hi = j + 1;
+                shrink_hi(&fr, &mut dhi, w2);
+            } else {
+                g.lo = j;
+                grow_lo(&fr, &mut dlo, w1);
+            }
+        } else {
+            // Case 4, F long: the slope of g just right of a2.
+            let i = f.middle();
+            let (v1, v2) = (f.at(i), f.at(i + 1));
+            let e = edge_right_of(&fr, &g, v2);
+            if fr.slope_cmp(e, (v1, v2)) != Sign::Negative {
+                f.hi = i + 1;
+                shrink_hi(&fr, &mut dhi, v2);
+            } else {
+                f.lo = i;
+                grow_lo(&fr, &mut dlo, v1);
+            }
+        }
+    }
+    finish(&fr, &f, &g, dlo, dhi)
+}
+
+#[inline]
+fn shrink_hi<K: Kernel>(fr: &Frame<K>, hi: &mut Point, v: Point) {
+    if fr.before(v, *hi) {
+        *hi = v;
+    }
+}
+
+#[inline]
+fn grow_lo<K: Kernel>(fr: &Frame<K>, lo: &mut Point, v: Point) {
+    if fr.before(*lo, v) {
+        *lo = v;
+    }
+}
+
+/// The edge of a chain of at most two edges that holds the part just right of `x`.
+#[inline]
+fn edge_right_of<K: Kernel>(fr: &Frame<K>, c: &Chain<'_>, x: Point) -> (Point, Point) {
+    if c.edges() >= 2 && !fr.before(x, c.at(c.lo + 1)) {
+        (c.at(c.lo + 1), c.at(c.lo + 2))
+    } else {
+        (c.at(c.lo), c.at(c.lo + 1))
+    }
+}
+
+/// Case 5: both chains have at most two edges. h = f − g is concave and piecewise
+/// linear with breakpoints at chain vertices, and the window's ends are chain
+/// vertices, so h ≥ 0 somewhere iff it is at a chain vertex inside the window.
+fn finish<K: Kernel>(fr: &Frame<K>, f: &Chain<'_>, g: &Chain<'_>, dlo: Point, dhi: Point) -> bool {
+    let k = fr.k;
+    for i in f.lo..=f.hi {
+        let z = f.at(i);
+        if fr.in_arc(z, dlo, dhi) {
+            let (w1, w2) = edge_right_of(fr, g, z);
+            // z on or above g (not strictly on A's side of the edge's line).
+            if k.orient(w1, w2, z) != Ccw {
+                return true;
+            }
+        }
+    }
+    for j in g.lo..=g.hi {
+        let w = g.at(j);
+        if fr.in_arc(w, dlo, dhi) {
+            let (v1, v2) = edge_right_of(fr, f, w);
+            // w on or below f (on A's side of the edge's line, or on it).
+            if k.orient(v1, v2, w) != Cw {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::intersect::{Iterations, Linear, brute_force};
+    use crate::{Exact, Fast};
+
+    fn poly(pts: &[[f64; 2]]) -> ConvexPolygon {
+        ConvexPolygon::new(pts.iter().copied()).unwrap()
+    }
+
+    /// The slope formula against an explicit projective map in floating point.
+    #[test]
+    fn slope_comparison_matches_the_explicit_frame() {
+        let a = Point::new(0.0, 0.0);
+        let (ql, qr) = (Point::new(3.0, -1.0), Point::new(1.0, 3.0));
+        let c = Point::new(qr.x - ql.x, qr.y - ql.y);
+        let nvec = Point::new(c.y, -c.x); // c × n = −|c|² < 0
+        let dcn = c.x * nvec.y - c.y * nvec.x;
+        let tau = |z: Point| {
+            let (u, v) = (z.x - a.x, z.y - a.y);
+            let s = (u * nvec.y - v * nvec.x) / dcn;
+            let t = (c.x * v - c.y * u) / dcn;
+            assert!(t > 0.0, "{z:?} not in the frame's half plane");
+            (s / t, -1.0 / t)
+        };
+        let fr = Frame { k: Exact, a, ql, qr };
+        let pts = [
+            Point::new(2.0, 0.5),
+            Point::new(2.5, 1.5),
+            Point::new(1.0, 2.0),
+            Point::new(3.0, 0.0),
+            Point::new(1.5, 1.0),
+            Point::new(4.0, 2.0),
+        ];
+        for &u1 in &pts {
+            for &u2 in &pts {
+                for &v1 in &pts {
+                    for &v2 in &pts {
+                        if !fr.before(u1, u2) || !fr.before(v1, v2) {
+                            continue;
+                        }
+                        let slope = |p: Point, q: Point| {
+                            let (tp, tq) = (tau(p), tau(q));
+                            (tq.1 - tp.1) / (tq.0 - tp.0)
+                        };
+                        let (su, sv) = (slope(u1, u2), slope(v1, v2));
+                        if (su - sv).abs() < 1e-9 {
+                            continue;
+                        }
+                        assert_eq!(fr.slope_cmp((u1, u2), (v1, v2)), Sign::of(su - sv));
+                    }
+                }
+            }
+        }
+        // x grows counter-clockwise, y away from A.
+        assert!(tau(Point::new(3.0, 0.0)).0 < tau(Point::new(1.0, 2.0)).0);
+        assert!(tau(Point::new(1.0, 1.0)).1 < tau(Point::new(2.0, 2.0)).1);
+    }
+
+    #[test]
+    fn pencil_finds_the_tangent_points() {
+        let sq = poly(&[[0., 0.], [1., 0.], [1., 1.], [0., 1.]]);
+        // Below the bottom edge: only edge 0 visible.
+        assert_eq!(pencil(Exact, sq.vertices(), Point::new(0.5, -1.0)), Some((0, 0)));
+        // Beyond the corner (1, 1): edges 1 and 2 visible.
+        assert_eq!(pencil(Exact, sq.vertices(), Point::new(2.0, 2.0)), Some((1, 2)));
+        // On the extension of the bottom edge: edge 0 is collinear, not visible.
+        assert_eq!(pencil(Exact, sq.vertices(), Point::new(-1.0, 0.0)), Some((3, 3)));
+        // Inside and on the boundary.
+        assert_eq!(pencil(Exact, sq.vertices(), Point::new(0.5, 0.5)), None);
+        assert_eq!(pencil(Exact, sq.vertices(), Point::new(1.0, 0.5)), None);
+        assert_eq!(pencil(Exact, sq.vertices(), Point::new(0.0, 0.0)), None);
+        // Every start vertex, every outside point on a grid: the block is exactly the visible edges.
+        for start in 0..4 {
+            let r = sq.rotated(start);
+            let v = r.vertices();
+            for x in -4..=8 {
+                for y in -4..=8 {
+                    let a = Point::new(x as f64 * 0.25, y as f64 * 0.25);
+                    let vis: Vec<bool> = (0..4)
+                        .map(|i| Exact.orient(v[i], v[(i + 1) % 4], a) == Cw)
+                        .collect();
+                    match pencil(Exact, v, a) {
+                        None => assert!(vis.iter().all(|b| !b), "{a:?}"),
+                        Some((s, t)) => {
+                            let mut i = s;
+                            loop {
+                                assert!(vis[i], "{a:?} start {start}");
+                                if i == t {
+                                    break;
+                                }
+                                i = (i + 1) % 4;
+                            }
+                            let count = vis.iter().filter(|b| **b).count();
+                            assert_eq!((t + 4 - s) % 4 + 1, count, "{a:?}");
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn hand_cases_and_degenerate_pencils() {
+        let sq = poly(&[[0., 0.], [2., 0.], [2., 2.], [0., 2.]]);
+        let cases: &[(&[[f64; 2]], bool)] = &[
+            (&[[1., 1.], [1.5, 1.], [1., 1.5]], true),             // contained
+            (&[[-1., -1.], [3., -1.], [3., 3.], [-1., 3.]], true), // contains
+            (&[[2., 2.], [3., 2.], [3., 3.]], true),               // shared vertex
+            (&[[2., 0.5], [3., 0.], [3., 1.]], true),              // vertex on edge
+            (&[[2., 0.], [3., 0.], [3., 2.], [2., 2.]], true),     // shared edge
+            (&[[2., 1.], [3., 1.], [3., 3.], [2., 3.]], true),     // overlapping edges
+            (&[[2.5, 0.], [3., 0.], [3., 2.]], false),
+            (&[[3., 3.], [4., 3.], [4., 4.]], false),
+            (&[[1.5, 3.], [3., 1.5], [3., 3.]], false),
+            // pencil lines along an edge of P (window of one direction)
+            (&[[3., 0.], [4., 0.], [4., 1.]], false),
+            (&[[2., 0.], [4., 0.], [4., 1.]], true),
+            (&[[-3., 0.], [-1., 0.], [-2., -1.]], false),
+            (&[[-3., 0.], [0., 0.], [-2., -1.]], true),
+            (&[[0., 3.], [0., 4.], [-1., 4.]], false),
+        ];
+        for (q, want) in cases {
+            let q = poly(q);
+            for s in 0..sq.len() {
+                let p = sq.rotated(s);
+                for t in 0..q.len() {
+                    let qq = q.rotated(t);
+                    assert_eq!(ChazelleDobkin.intersects(&p, &qq), *want, "{p:?} {qq:?}");
+                    assert_eq!(ChazelleDobkin.intersects(&qq, &p), *want, "{qq:?} {p:?}");
+                    assert_eq!(brute_force(Exact, &p, &qq), *want);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn integer_grid_triangles_and_quads_agree_with_linear() {
+        // Every small lattice polygon against a fixed set: heavy on collinear and touching cases.
+        let tris: Vec<ConvexPolygon> = {
+            let mut v = Vec::new();
+            let pts: Vec<[f64; 2]> = (0..4)
+                .flat_map(|x| (0..4).map(move |y| [x as f64, y as f64]))
+                .collect();
+            for i in 0..pts.len() {
+                for j in i + 1..pts.len() {
+                    for l in j + 1..pts.len() {
+                        if let Ok(t) = ConvexPolygon::new([pts[i], pts[j], pts[l]]) {
+                            v.push(t);
+                        }
+                    }
+                }
+            }
+            v
+        };
+        let others = [
+            poly(&[[1., 1.], [2., 1.], [2., 2.], [1., 2.]]),
+            poly(&[[0., 0.], [3., 0.], [3., 1.], [1., 3.], [0., 2.]]),
+            poly(&[[1., 0.], [2., 1.], [1., 2.], [0., 1.]]),
+            poly(&[[4., 0.], [5., 1.], [4., 3.]]),
+        ];
+        let mut count = 0;
+        for t in tris.iter().step_by(3) {
+            for o in &others {
+                for s in 0..o.len() {
+                    let o = o.rotated(s);
+                    let want = Linear.intersects(t, &o);
+                    assert_eq!(ChazelleDobkin.intersects(t, &o), want, "{t:?} {o:?}");
+                    assert_eq!(ChazelleDobkin.intersects(&o, t), want, "{o:?} {t:?}");
+                    count += 1;
+                }
+            }
+        }
+        assert!(count > 500);
+    }
+
+    #[test]
+    fn iterations_are_counted_and_fast_kernel_terminates() {
+        let p = crate::generate::regular_polygon(1000, 1.0);
+        for (dx, want) in [(-1.4, true), (-1.6, false)] {
+            let q = crate::generate::regular_polygon(1000, 0.5)
+                .map(|v| Point::new(v.x + dx, v.y))
+                .unwrap();
+            let mut it = Iterations::default();
+            assert_eq!(ChazelleDobkin.intersects_probed(Exact, &p, &q, &mut it), want);
+            assert!(it.0 > 0 && it.0 < 60, "{it:?}");
+            assert_eq!(ChazelleDobkin.intersects_with(Fast, &p, &q), want);
+        }
+    }
+}
