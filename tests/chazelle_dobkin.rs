@@ -221,29 +221,56 @@ fn triangles_against_large_polygons() {
 #[test]
 fn extremes_scaled_offset_and_one_ulp() {
     let mut rng = SmallRng::seed_from_u64(SEED + 5);
-    let (mut wrong, mut total) = (0, 0);
+    // Fast-kernel disagreements per variant: scale 2^1000, 2^-1000, 2^600, 2^-1022,
+    // offset 2^40..2^52, offset after scaling by 2^20 (rounded pairs that stop being
+    // valid polygons are skipped).
+    let labels = [
+        "x2^1000",
+        "x2^-1000",
+        "x2^600",
+        "x2^-1022",
+        "offset",
+        "offset+x2^20",
+    ];
+    let mut wrong = [0u32; 6];
+    let mut total = [0u32; 6];
     for i in 0..400 {
         let family = Family::ALL[i % Family::ALL.len()];
         let relation = [Relation::Intersecting, Relation::Disjoint, Relation::Any][i % 3];
         let n = [3, 5, 12, 40, 200][i % 5];
         let base = generate::pair(family, n, relation, &mut rng);
-        let e = [1000, -1000, 600, -1022][i % 4];
-        let s = 2f64.powi(e);
+        let ei = i % 4;
+        let s = 2f64.powi([1000, -1000, 600, -1022][ei]);
         let off = 2f64.powi(rng.random_range(40..=52));
         let variants = [
-            map_pair(&base, |p| Point::new(p.x * s, p.y * s)),
-            map_pair(&base, |p| Point::new(p.x + off, p.y - off)),
-            map_pair(&base, |p| {
-                Point::new(p.x * 2f64.powi(-30) + off, p.y * 2f64.powi(-30))
-            }),
+            (ei, map_pair(&base, |p| Point::new(p.x * s, p.y * s))),
+            (4, map_pair(&base, |p| Point::new(p.x + off, p.y - off))),
+            (
+                5,
+                map_pair(&base, |p| {
+                    Point::new(p.x * 2f64.powi(20) + off, p.y * 2f64.powi(20) - off)
+                }),
+            ),
         ];
-        for pair in variants.into_iter().flatten() {
-            let r = check_pair(&pair, &mut rng, &format!("extreme {family} n={n} #{i} e={e}"));
-            wrong += r.0;
-            total += r.1;
+        for (v, pair) in variants {
+            if let Some(pair) = pair {
+                let r = check_pair(
+                    &pair,
+                    &mut rng,
+                    &format!("extreme {family} n={n} #{i} {}", labels[v]),
+                );
+                wrong[v] += r.0;
+                total[v] += r.1;
+            }
         }
     }
-    println!("chazelle-dobkin fast-kernel disagreements on extremes: {wrong}/{total}");
+    let report: Vec<String> = (0..6)
+        .map(|v| format!("{}: {}/{}", labels[v], wrong[v], total[v]))
+        .collect();
+    println!(
+        "chazelle-dobkin fast-kernel disagreements on extremes: {}",
+        report.join(", ")
+    );
     // One-ulp gaps and their touching twins.
     for n in [3, 10, 100, 1000] {
         for _ in 0..30 {
@@ -283,3 +310,38 @@ fn iterations_grow_like_log_n() {
     println!("chazelle-dobkin pruning iterations at n = 2^20: worst {worst}");
     assert!(worst <= 3 * log2n, "{worst} iterations at n = 2^20");
 }
+
+/// Hulls of random points on a small lattice: many collinear triples, shared
+/// vertices, vertices on edges and overlapping edges, at every start of P.
+#[test]
+fn lattice_hulls_at_every_pivot() {
+    let mut rng = SmallRng::seed_from_u64(SEED + 7);
+    let lattice_poly = |rng: &mut SmallRng, size: i32| loop {
+        let k = rng.random_range(3..12);
+        let pts: Vec<Point> = (0..k)
+            .map(|_| Point::new(rng.random_range(0..size) as f64, rng.random_range(0..size) as f64))
+            .collect();
+        if let Ok(h) = polysect::polygon::convex_hull(&pts) {
+            return h;
+        }
+    };
+    let mut count = 0;
+    for i in 0..STRESS_LATTICE {
+        let size = [3, 5, 8][i % 3];
+        let p = lattice_poly(&mut rng, size);
+        let q = lattice_poly(&mut rng, size);
+        let want = truth(&p, &q);
+        for s in 0..p.len() {
+            let ps = p.rotated(s);
+            assert_eq!(
+                ChazelleDobkin.intersects(&ps, &q),
+                want,
+                "lattice #{i}\n{ps:?}\n{q:?}"
+            );
+            count += 1;
+        }
+    }
+    assert!(count >= STRESS_LATTICE);
+}
+
+const STRESS_LATTICE: usize = 20_000;
