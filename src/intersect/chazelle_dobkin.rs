@@ -75,8 +75,10 @@
 //!
 //! # Precision
 //! Every decision is the sign of a polynomial in input coordinates: `orient`, and
-//! one degree-4 slope comparison in the projective frame (below). Nothing is
-//! constructed, so the test is exact under [`Exact`](crate::Exact). Under
+//! one degree-4 slope comparison in the projective frame (below), which first tries
+//! a floating-point evaluation with a static error bound and asks the kernel only
+//! when that cannot certify the sign. Nothing is constructed, so the test is exact
+//! under [`Exact`](crate::Exact). Under
 //! [`Fast`](crate::Fast) wrong signs near degeneracies can give wrong answers but
 //! every step still shortens a chain, so the test always terminates.
 
@@ -180,7 +182,7 @@ impl<K: Kernel> Frame<K> {
     /// Sign of slope(u1 u2) − slope(v1 v2) in the frame (both edges left to right).
     #[inline]
     fn slope_cmp(&self, u: (Point, Point), v: (Point, Point)) -> Sign {
-        self.k.sign(&SlopeCmp {
+        let poly = SlopeCmp {
             a: self.a,
             c0: self.ql,
             c1: self.qr,
@@ -188,7 +190,11 @@ impl<K: Kernel> Frame<K> {
             u2: u.1,
             v1: v.0,
             v2: v.1,
-        })
+        };
+        match poly.filtered() {
+            Some(s) => s,
+            None => self.k.sign(&poly),
+        }
     }
 }
 
@@ -213,6 +219,46 @@ struct SlopeCmp {
     u2: Point,
     v1: Point,
     v2: Point,
+}
+
+impl SlopeCmp {
+    /// The sign when a floating-point evaluation with a static error bound certifies
+    /// it, `None` otherwise (then the kernel decides). A sign returned here is the
+    /// exact sign, so this only saves the exact kernel its interval evaluation.
+    ///
+    /// Each factor X = d1·d2 − d3·d4 of differences of inputs is computed with absolute
+    /// error at most 4.1ε·(|d1·d2| + |d3·d4|) (ε = 2^-53), so the value
+    /// X1·Y2 − X2·Y1 has error at most 10.5ε·(P_X1·P_Y2 + P_X2·P_Y1), where P_X is
+    /// the factor's sum of absolute products; the bound used is 16ε times the
+    /// computed sum. It is valid while nothing overflows (the bound is then finite)
+    /// and no factor's products underflow (every P ≥ 2^-960, the bound ≥ 2^-900).
+    #[inline]
+    fn filtered(&self) -> Option<Sign> {
+        let (c0, c1, a) = (self.c0, self.c1, self.a);
+        let (cx, cy) = (c1.x - c0.x, c1.y - c0.y);
+        let cross_c = |p: Point, q: Point| {
+            let (l, r) = ((q.x - p.x) * cy, (q.y - p.y) * cx);
+            (l - r, l.abs() + r.abs())
+        };
+        let orient_a = |p: Point, q: Point| {
+            let (l, r) = ((p.x - a.x) * (q.y - a.y), (p.y - a.y) * (q.x - a.x));
+            (l - r, l.abs() + r.abs())
+        };
+        let (x1, px1) = cross_c(self.u1, self.u2);
+        let (y2, py2) = orient_a(self.v1, self.v2);
+        let (x2, px2) = cross_c(self.v1, self.v2);
+        let (y1, py1) = orient_a(self.u1, self.u2);
+        let value = x1 * y2 - x2 * y1;
+        let bound = 8.0 * f64::EPSILON * (px1 * py2 + px2 * py1);
+        const TINY_FACTOR: f64 = f64::from_bits((1023 - 960) << 52); // 2^-960
+        const TINY_BOUND: f64 = f64::from_bits((1023 - 900) << 52); // 2^-900
+        let normal = px1.min(py2).min(px2).min(py1) >= TINY_FACTOR && bound >= TINY_BOUND;
+        if normal && bound.is_finite() && value.abs() > bound {
+            Some(Sign::of(value))
+        } else {
+            None
+        }
+    }
 }
 
 impl Polynomial for SlopeCmp {
@@ -538,6 +584,39 @@ mod tests {
         // x grows counter-clockwise, y away from A.
         assert!(tau(Point::new(3.0, 0.0)).0 < tau(Point::new(1.0, 2.0)).0);
         assert!(tau(Point::new(1.0, 1.0)).1 < tau(Point::new(2.0, 2.0)).1);
+    }
+
+    #[test]
+    fn slope_filter_never_contradicts_the_exact_sign() {
+        use rand::{Rng, SeedableRng, rngs::SmallRng};
+        let mut rng = SmallRng::seed_from_u64(7);
+        let mut decided = 0;
+        for i in 0..200_000 {
+            let scale = 2f64.powi([0, 0, 300, -300, 600, -600, 40][i % 7]);
+            let grid = i % 2 == 0;
+            let mut pt = || {
+                let (x, y): (f64, f64) = if grid {
+                    (rng.random_range(-4..=4) as f64, rng.random_range(-4..=4) as f64)
+                } else {
+                    (rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0))
+                };
+                Point::new(x * scale, y * scale)
+            };
+            let poly = SlopeCmp {
+                a: pt(),
+                c0: pt(),
+                c1: pt(),
+                u1: pt(),
+                u2: pt(),
+                v1: pt(),
+                v2: pt(),
+            };
+            if let Some(s) = poly.filtered() {
+                decided += 1;
+                assert_eq!(s, Exact.sign(&poly), "#{i}");
+            }
+        }
+        assert!(decided > 50_000, "{decided}");
     }
 
     #[test]
