@@ -130,8 +130,10 @@ struct Chain<'a> {
 impl Chain<'_> {
     #[inline]
     fn at(&self, i: usize) -> Point {
+        // Positions never exceed the polygon's length, so one conditional
+        // subtraction replaces a division.
         let len = self.pts.len();
-        let i = i % len;
+        let i = if i >= len { i - len } else { i };
         let idx = if self.forward {
             let j = self.start + i;
             if j >= len { j - len } else { j }
@@ -279,7 +281,9 @@ impl Polynomial for SlopeCmp {
 /// last edge of the block of edges visible from `a`, or `None` when `a` ∈ q.
 fn pencil<K: Kernel>(k: K, q: &[Point], a: Point) -> Option<(usize, usize)> {
     let m = q.len();
-    let visible = |i: usize| k.orient(q[i % m], q[(i + 1) % m], a) == Cw;
+    // Edge positions stay below 2m, so wrapping is one conditional subtraction.
+    let wrap = |i: usize| if i >= m { i - m } else { i };
+    let visible = |i: usize| k.orient(q[wrap(i)], q[wrap(i + 1)], a) == Cw;
     let (first_vis, last_vis) = (visible(0), visible(m - 1));
     // One visible edge `v` and one invisible edge `n`.
     let (v, n) = if !first_vis && !last_vis {
