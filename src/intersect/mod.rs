@@ -10,12 +10,18 @@
 //! |---|---|---|---|
 //! | [`Linear`] | arrays | O(n + m) | separating-edge search with rotating pointers; the reference |
 //! | [`brute_force`] | arrays | O(n·m) | every edge pair plus containment; the oracle for `Linear` |
+//! | [`Barba`] | arrays | O(log n + log m) | inner triangle of P against the edge hull of three edges of Q; halves one of them per step; uses one degree-4 predicate |
+//! | [`Dobkin`] | arrays | O(log n + log m) | top/bottom by binary search, then left chain against right chain twice by slope comparisons; orient/cross only |
 //!
 //! Each algorithm is a unit struct implementing [`ArrayIntersection`] and is listed
 //! once in [`Algorithm`], which the CLI, tests and benches iterate over.
 
+mod barba;
+mod dobkin;
 mod linear;
 
+pub use barba::Barba;
+pub use dobkin::Dobkin;
 pub use linear::{Linear, brute_force};
 
 use crate::kernel::{Exact, Fast, Kernel, Precision};
@@ -75,21 +81,29 @@ pub trait ArrayIntersection {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Algorithm {
     Linear,
+    Barba,
+    Dobkin,
 }
 
 impl Algorithm {
     /// Every algorithm, in the order tables list them.
-    pub const ALL: &'static [Algorithm] = &[Algorithm::Linear];
+    pub const ALL: &'static [Algorithm] = &[Algorithm::Linear, Algorithm::Barba, Algorithm::Dobkin];
+
+    /// The O(log n) tests on sorted arrays (the thesis's experiment 2 checks that
+    /// their iteration counts grow like log n).
+    pub const LOGARITHMIC: &'static [Algorithm] = &[Algorithm::Barba, Algorithm::Dobkin];
 
     pub fn name(self) -> &'static str {
         match self {
             Algorithm::Linear => Linear::NAME,
+            Algorithm::Barba => Barba::NAME,
+            Algorithm::Dobkin => Dobkin::NAME,
         }
     }
 
     /// The fastest algorithm on array polygons, what `--algorithm auto` runs.
     pub fn fastest_array() -> Algorithm {
-        Algorithm::Linear
+        Algorithm::Barba
     }
 
     /// Runs the algorithm on two array polygons with the kernel named by `precision`,
@@ -105,6 +119,8 @@ impl Algorithm {
         let mut it = Iterations::default();
         let answer = match self {
             Algorithm::Linear => Linear.intersects_probed(k, p, q, &mut it),
+            Algorithm::Barba => Barba.intersects_probed(k, p, q, &mut it),
+            Algorithm::Dobkin => Dobkin.intersects_probed(k, p, q, &mut it),
         };
         (answer, it.0)
     }
