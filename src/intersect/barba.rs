@@ -83,7 +83,6 @@
 //! step 5 (no separating edge found) falls back to [`Linear`](super::Linear) on the
 //! remaining pieces.
 
-use super::dobkin::turn_gt;
 use super::{ArrayIntersection, Linear, Probe};
 use crate::kernel::{Kernel, Orientation, Point, Sign, line_meet_side, segments_intersect};
 use crate::polygon::ConvexPolygon;
@@ -336,6 +335,28 @@ fn prune_by_line<K: Kernel>(k: K, pv: &[Point], pr: Range, (s, u): (Point, Point
 
 fn same_direction<K: Kernel>(k: K, a: (Point, Point), b: (Point, Point)) -> bool {
     k.cross(a.0, a.1, b.0, b.1) == Collinear && k.dot(a.0, a.1, b.0, b.1) == Sign::Positive
+}
+
+/// Whether direction `a` is turned further counter-clockwise from `base` than `c`,
+/// with turns measured in [0, 2π).
+fn turn_gt<K: Kernel>(k: K, base: (Point, Point), a: (Point, Point), c: (Point, Point)) -> bool {
+    let class = |d: (Point, Point)| match k.cross(base.0, base.1, d.0, d.1) {
+        Orientation::Ccw => 1,
+        Orientation::Cw => 3,
+        Orientation::Collinear => {
+            if k.dot(base.0, base.1, d.0, d.1) == Sign::Positive {
+                0
+            } else {
+                2
+            }
+        }
+    };
+    let (ca, cc) = (class(a), class(c));
+    if ca != cc {
+        ca > cc
+    } else {
+        (ca == 1 || ca == 3) && k.cross(c.0, c.1, a.0, a.1) == Orientation::Ccw
+    }
 }
 
 /// Whether the line through `l` misses T_Q = ∩ H(lines[j]): the line meets T_Q iff

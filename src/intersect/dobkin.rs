@@ -2,13 +2,15 @@
 //!
 //! # The algorithm
 //! 1. **Top and bottom by binary search.** The edge directions of a convex polygon
-//!    stored counter-clockwise turn monotonically through one full turn, so "edge i
-//!    points further round than a target direction, measured from edge 0" is a
-//!    monotone predicate of i. Two binary searches find the first edge pointing
-//!    strictly below west (it starts at the topmost vertex, the left one if the top
-//!    is a horizontal edge) and the first edge pointing strictly above east (it starts
-//!    at the bottommost vertex, the right one if the bottom is horizontal). A
-//!    horizontal top or bottom edge is detected by looking at the edge just before.
+//!    stored counter-clockwise turn monotonically through one full turn. Each edge
+//!    falls in one of four direction classes (east, up, west, down), read off by
+//!    comparing its endpoints' coordinates; counted from edge 0's class, the
+//!    classes grow monotonically along the array except for the last edges of edge
+//!    0's own class, which one `cross` against edge 0 puts at the end. Two binary
+//!    searches on that rank find the first downward edge (it starts at the topmost
+//!    vertex, the left one if the top is a horizontal edge) and the first upward
+//!    edge (it starts at the bottommost vertex, the right one if the bottom is
+//!    horizontal). A horizontal top or bottom edge is the edge just before.
 //! 2. **Chains.** The *left chain* runs counter-clockwise from the top (left end of a
 //!    horizontal top) down to the bottom (left end of a horizontal bottom); every edge
 //!    strictly descends. The *right chain* runs from the bottom (right end) up to
@@ -55,14 +57,13 @@
 //! equality.
 //!
 //! # Precision
-//! Every decision is a comparison of input coordinates or an `orient`/`cross`/`dot`
-//! on input points (the west and east directions are the exact vectors (−1, 0) and
-//! (1, 0)); exact under [`Exact`](crate::Exact). Under [`Fast`](crate::Fast) the
+//! Every decision is a comparison of input coordinates or an `orient`/`cross`
+//! on input points; exact under [`Exact`](crate::Exact). Under [`Fast`](crate::Fast) the
 //! searches may misjudge near-degenerate input but always terminate: every loop
 //! shrinks an index range.
 
 use super::{ArrayIntersection, Probe};
-use crate::kernel::{Kernel, Orientation, Point, Sign};
+use crate::kernel::{Kernel, Orientation, Point};
 use crate::polygon::ConvexPolygon;
 
 /// The Dobkin–Souvaine O(log n) test; see the module docs.
@@ -90,9 +91,31 @@ impl ArrayIntersection for Dobkin {
         probe: &mut P,
     ) -> bool {
         let (pv, qv) = (p.vertices(), q.vertices());
-        let (pl, pr) = chains(k, pv);
-        let (ql, qr) = chains(k, qv);
-        pair_meets(k, pv, pl, qv, qr, probe) && pair_meets(k, qv, ql, pv, pr, probe)
+        let [p_top, p_bottom, q_top, q_bottom] = extremes(k, pv, qv);
+        let (pl, pr) = chains(pv, p_top, p_bottom);
+        let (ql, qr) = chains(qv, q_top, q_bottom);
+        // Both chain pairs advance in lockstep: their memory accesses are
+        // independent, so the processor overlaps the cache misses on large arrays.
+        let mut a = PairSearch::new(pv, pl, qv, qr);
+        let mut b = PairSearch::new(qv, ql, pv, pr);
+        let (mut ra, mut rb) = (None, None);
+        loop {
+            if ra.is_none() {
+                ra = a.step(k, probe);
+                if ra == Some(false) {
+                    return false;
+                }
+            }
+            if rb.is_none() {
+                rb = b.step(k, probe);
+                if rb == Some(false) {
+                    return false;
+                }
+            }
+            if let (Some(x), Some(y)) = (ra, rb) {
+                return x && y;
+            }
+        }
     }
 }
 
@@ -110,28 +133,39 @@ fn at(v: &[Point], c: Chain, pos: usize) -> Point {
     v[if i >= v.len() { i - v.len() } else { i }]
 }
 
-const ORIGIN: Point = Point::new(0.0, 0.0);
-const WEST: Point = Point::new(-1.0, 0.0);
-const EAST: Point = Point::new(1.0, 0.0);
+/// Direction classes of an edge, counter-clockwise from east, decided by comparing
+/// the endpoints' coordinates (no arithmetic).
+const EAST: u8 = 0;
+const UP: u8 = 1;
+const WEST: u8 = 2;
+const DOWN: u8 = 3;
+
+#[inline]
+fn class(a: Point, b: Point) -> u8 {
+    if b.y > a.y {
+        UP
+    } else if b.y < a.y {
+        DOWN
+    } else if b.x > a.x {
+        EAST
+    } else {
+        WEST
+    }
+}
 
 /// The left chain (top to bottom, strictly descending) and the right chain (bottom
-/// to top, strictly ascending) of a counter-clockwise polygon.
-fn chains<K: Kernel>(k: K, v: &[Point]) -> (Chain, Chain) {
+/// to top, strictly ascending) of a counter-clockwise polygon, given the first
+/// downward edge (`top`) and the first upward edge (`bottom`).
+fn chains(v: &[Point], top_left: usize, bottom_right: usize) -> (Chain, Chain) {
     let n = v.len();
-    let edge = |i: usize| (v[i], v[(i + 1) % n]);
-    let top_left = first_edge_past(k, v, (ORIGIN, WEST));
-    let bottom_right = first_edge_past(k, v, (ORIGIN, EAST));
-    let is_dir = |i: usize, d: Point| {
-        let (a, b) = edge(i);
-        k.cross(a, b, ORIGIN, d) == Orientation::Collinear && k.dot(a, b, ORIGIN, d) == Sign::Positive
-    };
+    let edge_class = |i: usize| class(v[i], v[(i + 1) % n]);
     let before = |i: usize| (i + n - 1) % n;
-    let top_right = if is_dir(before(top_left), WEST) {
+    let top_right = if edge_class(before(top_left)) == WEST {
         before(top_left)
     } else {
         top_left
     };
-    let bottom_left = if is_dir(before(bottom_right), EAST) {
+    let bottom_left = if edge_class(before(bottom_right)) == EAST {
         before(bottom_right)
     } else {
         bottom_right
@@ -143,43 +177,48 @@ fn chains<K: Kernel>(k: K, v: &[Point]) -> (Chain, Chain) {
     (span(top_left, bottom_left), span(bottom_right, top_right))
 }
 
-/// The start of the first edge whose direction, measured counter-clockwise from
-/// edge 0, lies strictly beyond `target`: a binary search over the monotone
-/// sequence of edge directions. Returns 0 when no edge does (the wrap-around).
-fn first_edge_past<K: Kernel>(k: K, v: &[Point], target: (Point, Point)) -> usize {
-    let n = v.len();
-    let base = (v[0], v[1]);
-    let (mut lo, mut hi) = (0, n);
-    while lo < hi {
-        let mid = lo + (hi - lo) / 2;
-        if turn_gt(k, base, (v[mid], v[(mid + 1) % n]), target) {
-            hi = mid;
+/// The starts of the first downward and the first upward edge of `p` and of `q`
+/// (each the first edge of its class following an edge of another class): four
+/// binary searches over the edges' turn from edge 0, run in lockstep so that their
+/// independent memory accesses overlap. The turn is measured in classes rotated so
+/// that edge 0's class is 0; edges of edge 0's class turned less than edge 0 (one
+/// `cross`) come last (rank 4), so the rank grows monotonically along the array.
+fn extremes<K: Kernel>(k: K, p: &[Point], q: &[Point]) -> [usize; 4] {
+    let polys = [p, p, q, q];
+    let targets = [DOWN, UP, DOWN, UP];
+    let c0 = polys.map(|v| class(v[0], v[1]));
+    let goal: [u8; 4] = std::array::from_fn(|s| match (targets[s] + 4 - c0[s]) % 4 {
+        0 => 4,
+        r => r,
+    });
+    let rank = |s: usize, i: usize| {
+        let v = polys[s];
+        let (a, b) = (v[i], v[(i + 1) % v.len()]);
+        let r = (class(a, b) + 4 - c0[s]) % 4;
+        if r == 0 && i > 0 && k.cross(v[0], v[1], a, b) == Orientation::Cw {
+            4
         } else {
-            lo = mid + 1;
-        }
-    }
-    lo % n
-}
-
-/// Whether direction `a` is turned further counter-clockwise from `base` than `c`,
-/// with turns measured in [0, 2π).
-pub(super) fn turn_gt<K: Kernel>(k: K, base: (Point, Point), a: (Point, Point), c: (Point, Point)) -> bool {
-    let class = |d: (Point, Point)| match k.cross(base.0, base.1, d.0, d.1) {
-        Orientation::Ccw => 1,
-        Orientation::Cw => 3,
-        Orientation::Collinear => {
-            if k.dot(base.0, base.1, d.0, d.1) == Sign::Positive {
-                0
-            } else {
-                2
-            }
+            r
         }
     };
-    let (ca, cc) = (class(a), class(c));
-    if ca != cc {
-        ca > cc
-    } else {
-        (ca == 1 || ca == 3) && k.cross(c.0, c.1, a.0, a.1) == Orientation::Ccw
+    let mut lo = [0; 4];
+    let mut hi = polys.map(|v| v.len());
+    loop {
+        let mut active = false;
+        for s in 0..4 {
+            if lo[s] < hi[s] {
+                active = true;
+                let mid = lo[s] + (hi[s] - lo[s]) / 2;
+                if rank(s, mid) >= goal[s] {
+                    hi[s] = mid;
+                } else {
+                    lo[s] = mid + 1;
+                }
+            }
+        }
+        if !active {
+            return std::array::from_fn(|s| lo[s] % polys[s].len());
+        }
     }
 }
 
@@ -190,91 +229,129 @@ enum Side {
     Right,
 }
 
-/// Whether the region right of left chain `l` (of polygon `lv`) meets the region
-/// left of right chain `r` (of polygon `rv`); see step 4 of the module docs.
-fn pair_meets<K: Kernel, P: Probe>(
-    k: K,
-    lv: &[Point],
+/// The search of step 4 of the module docs: whether the region right of left chain
+/// `l` (of polygon `lv`) meets the region left of right chain `r` (of polygon `rv`),
+/// one pruning iteration per [`PairSearch::step`].
+struct PairSearch<'a> {
+    lv: &'a [Point],
     l: Chain,
-    rv: &[Point],
+    rv: &'a [Point],
     r: Chain,
-    probe: &mut P,
-) -> bool {
-    let lp = |i: usize| at(lv, l, i);
-    let rp = |j: usize| at(rv, r, j);
-    // Left positions i0..=i1 descend from top to bottom; right j0..=j1 ascend.
-    let (mut i0, mut i1, mut j0, mut j1) = (0, l.len - 1, 0, r.len - 1);
-    let mut lo = if lp(i1).y >= rp(j0).y {
-        (Side::Left, lp(i1))
-    } else {
-        (Side::Right, rp(j0))
-    };
-    let mut hi = if lp(i0).y <= rp(j1).y {
-        (Side::Left, lp(i0))
-    } else {
-        (Side::Right, rp(j1))
-    };
-    if lo.1.y > hi.1.y {
-        return false;
+    /// Left positions `i0..=i1` descend from top to bottom; right `j0..=j1` ascend.
+    i0: usize,
+    i1: usize,
+    j0: usize,
+    j1: usize,
+    /// The vertices whose heights bound the common y-interval I, and their chains.
+    lo: (Side, Point),
+    hi: (Side, Point),
+}
+
+impl<'a> PairSearch<'a> {
+    fn new(lv: &'a [Point], l: Chain, rv: &'a [Point], r: Chain) -> Self {
+        let (i0, i1, j0, j1) = (0, l.len - 1, 0, r.len - 1);
+        let (lt, lb) = (at(lv, l, i0), at(lv, l, i1));
+        let (rb, rt) = (at(rv, r, j0), at(rv, r, j1));
+        let lo = if lb.y >= rb.y {
+            (Side::Left, lb)
+        } else {
+            (Side::Right, rb)
+        };
+        let hi = if lt.y <= rt.y {
+            (Side::Left, lt)
+        } else {
+            (Side::Right, rt)
+        };
+        PairSearch {
+            lv,
+            l,
+            rv,
+            r,
+            i0,
+            i1,
+            j0,
+            j1,
+            lo,
+            hi,
+        }
     }
-    let test = |(side, w): (Side, Point), i0: usize, i1: usize, j0: usize, j1: usize| match side {
-        Side::Left => inside_right_chain(k, &rp, j0, j1, w),
-        Side::Right => inside_left_chain(k, &lp, i0, i1, w),
-    };
-    loop {
-        if lo.1.y >= hi.1.y {
-            return test(lo, i0, i1, j0, j1);
+
+    #[inline]
+    fn lp(&self, i: usize) -> Point {
+        at(self.lv, self.l, i)
+    }
+
+    #[inline]
+    fn rp(&self, j: usize) -> Point {
+        at(self.rv, self.r, j)
+    }
+
+    /// Is `x_L ≤ x_R` at the height of the bounding vertex `w`?
+    fn test<K: Kernel>(&self, k: K, (side, w): (Side, Point)) -> bool {
+        match side {
+            Side::Left => inside_right_chain(k, &|j| self.rp(j), self.j0, self.j1, w),
+            Side::Right => inside_left_chain(k, &|i| self.lp(i), self.i0, self.i1, w),
         }
-        let (le, re) = (i1 - i0, j1 - j0);
-        if le <= 1 && re <= 1 {
-            return test(lo, i0, i1, j0, j1) || test(hi, i0, i1, j0, j1);
+    }
+
+    /// One pruning iteration; `Some(answer)` once the search is decided.
+    fn step<K: Kernel, P: Probe>(&mut self, k: K, probe: &mut P) -> Option<bool> {
+        let (lo, hi) = (self.lo, self.hi);
+        if lo.1.y > hi.1.y {
+            return Some(false);
         }
-        if le == 0 || re == 0 {
-            // Only reachable with an inconsistent kernel: a chain that does not cover I.
-            return test(lo, i0, i1, j0, j1) || test(hi, i0, i1, j0, j1);
+        if lo.1.y == hi.1.y {
+            return Some(self.test(k, lo));
+        }
+        let (le, re) = (self.i1 - self.i0, self.j1 - self.j0);
+        // Both chains linear on I (or, with an inconsistent kernel, a chain that no
+        // longer covers I): g is linear, test both ends.
+        if (le <= 1 && re <= 1) || le == 0 || re == 0 {
+            return Some(self.test(k, lo) || self.test(k, hi));
         }
         probe.iteration();
-        let ke = i0 + le / 2; // e = (lp(ke), lp(ke + 1)), top to bottom
-        let kf = j0 + re / 2; // f = (rp(kf), rp(kf + 1)), bottom to top
-        let (e_top, e_bot) = (lp(ke), lp(ke + 1));
-        let (f_bot, f_top) = (rp(kf), rp(kf + 1));
+        let ke = self.i0 + le / 2; // e = (lp(ke), lp(ke + 1)), top to bottom
+        let kf = self.j0 + re / 2; // f = (rp(kf), rp(kf + 1)), bottom to top
+        let (e_top, e_bot) = (self.lp(ke), self.lp(ke + 1));
+        let (f_bot, f_top) = (self.rp(kf), self.rp(kf + 1));
         if k.cross(f_bot, f_top, e_bot, e_top) != Orientation::Cw {
             // s_R ≥ s_L: g is non-decreasing below min(top(e), top(f)).
             if e_top.y <= f_top.y {
                 if e_top.y >= hi.1.y {
-                    return test(hi, i0, i1, j0, j1);
+                    return Some(self.test(k, hi));
                 }
-                i1 = ke;
+                self.i1 = ke;
                 if e_top.y > lo.1.y {
-                    lo = (Side::Left, e_top);
+                    self.lo = (Side::Left, e_top);
                 }
             } else {
                 if f_top.y >= hi.1.y {
-                    return test(hi, i0, i1, j0, j1);
+                    return Some(self.test(k, hi));
                 }
-                j0 = kf + 1;
+                self.j0 = kf + 1;
                 if f_top.y > lo.1.y {
-                    lo = (Side::Right, f_top);
+                    self.lo = (Side::Right, f_top);
                 }
             }
         } else if e_bot.y >= f_bot.y {
             // s_R < s_L: g is decreasing above max(bottom(e), bottom(f)).
             if e_bot.y <= lo.1.y {
-                return test(lo, i0, i1, j0, j1);
+                return Some(self.test(k, lo));
             }
-            i0 = ke + 1;
+            self.i0 = ke + 1;
             if e_bot.y < hi.1.y {
-                hi = (Side::Left, e_bot);
+                self.hi = (Side::Left, e_bot);
             }
         } else {
             if f_bot.y <= lo.1.y {
-                return test(lo, i0, i1, j0, j1);
+                return Some(self.test(k, lo));
             }
-            j1 = kf;
+            self.j1 = kf;
             if f_bot.y < hi.1.y {
-                hi = (Side::Right, f_bot);
+                self.hi = (Side::Right, f_bot);
             }
         }
+        None
     }
 }
 
@@ -335,7 +412,8 @@ mod tests {
             let pts: Vec<[f64; 2]> = (0..4).map(|i| sq[(s + i) % 4]).collect();
             let p = poly(&pts);
             let v = p.vertices();
-            let (l, r) = chains(Exact, v);
+            let [t, b, _, _] = extremes(Exact, v, v);
+            let (l, r) = chains(v, t, b);
             assert_eq!(
                 (at(v, l, 0), at(v, l, l.len - 1)),
                 (Point::new(0., 2.), Point::new(0., 0.))
@@ -348,7 +426,8 @@ mod tests {
         }
         // A diamond: single top and bottom vertices shared by both chains.
         let d = poly(&[[0., -1.], [1., 0.], [0., 1.], [-1., 0.]]);
-        let (l, r) = chains(Exact, d.vertices());
+        let [t, b, _, _] = extremes(Exact, d.vertices(), d.vertices());
+        let (l, r) = chains(d.vertices(), t, b);
         assert_eq!((l.len, r.len), (3, 3));
         assert_eq!(at(d.vertices(), l, 0), Point::new(0., 1.));
         assert_eq!(at(d.vertices(), r, 0), Point::new(0., -1.));

@@ -212,6 +212,13 @@ pub trait Kernel: Copy + Clone + Default + fmt::Debug + Send + Sync + 'static {
     fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
         self.sign(&DotPoly(a, b, c, d))
     }
+
+    /// The sign of the degree-4 polynomial behind [`line_meet_side`] for the points
+    /// `[a, b, c, d, e, f]`; a method so that a kernel can add a static filter.
+    #[inline]
+    fn line_meet_sign(self, pts: [Point; 6]) -> Sign {
+        self.sign(&LineMeetSidePoly(pts))
+    }
 }
 
 pub(crate) struct CrossPoly(
@@ -262,7 +269,7 @@ pub fn line_meet_side<K: Kernel>(
     if den == Orientation::Collinear {
         return Orientation::Collinear;
     }
-    let s: Orientation = k.sign(&LineMeetSidePoly([a, b, c, d, e, f])).into();
+    let s: Orientation = k.line_meet_sign([a, b, c, d, e, f]).into();
     if den == Orientation::Ccw { s } else { s.reverse() }
 }
 
