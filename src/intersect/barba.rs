@@ -78,7 +78,8 @@
 //!
 //! # Precision
 //! Decided by `orient`, `cross` and the degree-4 [`line_meet_side`] on input
-//! points: exact under [`Exact`](crate::Exact). Under [`Fast`](crate::Fast) every
+//! points: exact under [`Exact`](crate::Exact) (which puts a static filter with a
+//! proven error bound in front of the degree-4 predicate). Under [`Fast`](crate::Fast) every
 //! loop still shrinks a range, so the test terminates; an inconsistent answer in
 //! step 5 (no separating edge found) falls back to [`Linear`](super::Linear) on the
 //! remaining pieces.
@@ -271,10 +272,11 @@ fn step<K: Kernel>(k: K, pv: &[Point], pr: Range, qv: &[Point], qr: Range, cache
         return Step::Meet;
     }
     // 4. Transversal crossings of T_P's edges with T_Q's lines.
+    let sides: [[Orientation; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| side(i, j)));
     for a in 0..3 {
         let b = (a + 1) % 3;
         for j in 0..3 {
-            let (sa, sb) = (side(a, j), side(b, j));
+            let (sa, sb) = (sides[a][j], sides[b][j]);
             if sa == Collinear || sb != sa.reverse() {
                 continue;
             }
@@ -282,9 +284,15 @@ fn step<K: Kernel>(k: K, pv: &[Point], pr: Range, qv: &[Point], qr: Range, cache
             if segments_intersect(k, t[a], t[b], s, u) {
                 return Step::Meet;
             }
+            // The crossing X lies on the segment t[a]t[b]: when both ends are on the
+            // same side of another line, so is X, without the degree-4 predicate.
             let inside = (0..3)
                 .filter(|&l| l != j)
-                .all(|l| line_meet_side(k, (t[a], t[b]), lines[j], lines[l]) != Cw);
+                .all(|l| match (sides[a][l], sides[b][l]) {
+                    (Cw, Cw) => false,
+                    (x, y) if x != Cw && y != Cw => true,
+                    _ => line_meet_side(k, (t[a], t[b]), lines[j], lines[l]) != Cw,
+                });
             if inside {
                 let before_s = k.orient(t[a], t[b], s);
                 let after = k.cross(t[a], t[b], s, u) == before_s.reverse();
