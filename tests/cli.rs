@@ -48,7 +48,7 @@ const EXPECTED: [bool; 11] = [
 #[test]
 fn check_answers_touching_containment_gaps_and_extremes() {
     for precision in ["exact", "fast"] {
-        for algorithm in ["auto", "linear"] {
+        for algorithm in ["auto", "linear", "barba", "dobkin"] {
             let got = answers(
                 &["check", "--algorithm", algorithm, "--precision", precision],
                 CASES,

@@ -10,15 +10,21 @@
 //! |---|---|---|---|
 //! | [`Linear`] | arrays | O(n + m) | separating-edge search with rotating pointers; the reference |
 //! | [`brute_force`] | arrays | O(n·m) | every edge pair plus containment; the oracle for `Linear` |
+//! | [`Barba`] | arrays | O(log n + log m) | inner triangle of P against the edge hull of three edges of Q; halves one of them per step; uses one degree-4 predicate |
+//! | [`Dobkin`] | arrays | O(log n + log m) | top/bottom by binary search, then left chain against right chain twice by slope comparisons; orient/cross only |
 //! | [`ChazelleDobkin`] | arrays | O(log n + log m) | pivot, pencil of tangents, the two L chains halved by middle-edge slopes in a projective frame |
 //!
 //! Each algorithm is a unit struct implementing [`ArrayIntersection`] and is listed
 //! once in [`Algorithm`], which the CLI, tests and benches iterate over.
 
+mod barba;
 mod chazelle_dobkin;
+mod dobkin;
 mod linear;
 
+pub use barba::Barba;
 pub use chazelle_dobkin::ChazelleDobkin;
+pub use dobkin::Dobkin;
 pub use linear::{Linear, brute_force};
 
 use crate::kernel::{Exact, Fast, Kernel, Precision};
@@ -78,23 +84,31 @@ pub trait ArrayIntersection {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Algorithm {
     Linear,
+    Barba,
+    Dobkin,
     ChazelleDobkin,
 }
 
 impl Algorithm {
     /// Every algorithm, in the order tables list them.
-    pub const ALL: &'static [Algorithm] = &[Algorithm::Linear, Algorithm::ChazelleDobkin];
+    pub const ALL: &'static [Algorithm] = &[Algorithm::Linear, Algorithm::Barba, Algorithm::Dobkin, Algorithm::ChazelleDobkin];
+
+    /// The O(log n) tests on sorted arrays (the thesis's experiment 2 checks that
+    /// their iteration counts grow like log n).
+    pub const LOGARITHMIC: &'static [Algorithm] = &[Algorithm::Barba, Algorithm::Dobkin, Algorithm::ChazelleDobkin];
 
     pub fn name(self) -> &'static str {
         match self {
             Algorithm::Linear => Linear::NAME,
+            Algorithm::Barba => Barba::NAME,
+            Algorithm::Dobkin => Dobkin::NAME,
             Algorithm::ChazelleDobkin => ChazelleDobkin::NAME,
         }
     }
 
     /// The fastest algorithm on array polygons, what `--algorithm auto` runs.
     pub fn fastest_array() -> Algorithm {
-        Algorithm::Linear
+        Algorithm::Barba
     }
 
     /// Runs the algorithm on two array polygons with the kernel named by `precision`,
@@ -110,6 +124,8 @@ impl Algorithm {
         let mut it = Iterations::default();
         let answer = match self {
             Algorithm::Linear => Linear.intersects_probed(k, p, q, &mut it),
+            Algorithm::Barba => Barba.intersects_probed(k, p, q, &mut it),
+            Algorithm::Dobkin => Dobkin.intersects_probed(k, p, q, &mut it),
             Algorithm::ChazelleDobkin => ChazelleDobkin.intersects_probed(k, p, q, &mut it),
         };
         (answer, it.0)

@@ -20,7 +20,7 @@
 //!    `m · 2^e` of the inputs with big integers ([`Dyadic`]). No finite input is
 //!    refused and none is misjudged; the cost is paid only by near-degenerate calls.
 
-use super::{Kernel, Orientation, Point, Polynomial, Ring, Sign};
+use super::{Kernel, LineMeetSidePoly, Orientation, Point, Polynomial, Ring, Sign};
 use num_bigint::BigInt;
 use num_traits::{Signed, Zero};
 use std::ops::{Add, Mul, Sub};
@@ -66,12 +66,60 @@ impl Kernel for Exact {
             .into()
     }
 
+    /// A static filter for `D·A + N·B`, each factor a cross product of differences,
+    /// then the interval filter and the exact fallback (see [`line_meet_filtered`]).
+    #[inline]
+    fn line_meet_sign(self, pts: [Point; 6]) -> Sign {
+        line_meet_filtered(pts).unwrap_or_else(|| self.sign(&LineMeetSidePoly(pts)))
+    }
+
     /// Same shape as `orient` with a sum instead of a difference: the same static filter.
     #[inline]
     fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
         let left = (b.x - a.x) * (d.x - c.x);
         let right = (b.y - a.y) * (d.y - c.y);
         filtered(left, right, left + right).unwrap_or_else(|| sign_slow(&super::DotPoly(a, b, c, d)))
+    }
+}
+
+/// The static filter of [`Exact::line_meet_sign`]: `S = D·A + N·B` with
+/// `D = (b−a)×(d−c)`, `N = (c−a)×(d−c)`, `A = (f−e)×(a−e)`, `B = (f−e)×(b−a)`,
+/// evaluated in `f64`. With u = 2^-53, every difference carries a relative error
+/// ≤ u, each cross product an absolute error ≤ 4.01u·P (P its permanent, the sum of
+/// the two products' magnitudes), each product of two of them ≤ 9.1u·P₁P₂ and the
+/// sum adds u·|S|, so |S̃ − S| ≤ 10.2u·(P_D·P_A + P_N·P_B); we use 12u. The bound is
+/// trusted only when every computed difference is 0 or has magnitude in
+/// [2^-250, 2^250]: then no product overflows, products of differences never
+/// underflow, and an underflow in a product of two cross products (at most 2^-1074)
+/// is far below the 1.8u·2^-1000 left over in the bound; otherwise, and when |S̃| is
+/// within the bound, `None`.
+#[inline]
+fn line_meet_filtered([a, b, c, d, e, f]: [Point; 6]) -> Option<Sign> {
+    const U: f64 = f64::EPSILON / 2.0;
+    const LO: f64 = f64::from_bits((1023 - 250) << 52); // 2^-250
+    const HI: f64 = f64::from_bits((1023 + 250) << 52); // 2^250
+    let cross = |ux: f64, uy: f64, vx: f64, vy: f64| {
+        let (l, r) = (ux * vy, uy * vx);
+        (l - r, l.abs() + r.abs())
+    };
+    let (bax, bay, dcx, dcy) = (b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y);
+    let (fex, fey, cax, cay, aex, aey) = (f.x - e.x, f.y - e.y, c.x - a.x, c.y - a.y, a.x - e.x, a.y - e.y);
+    let diffs = [bax, bay, dcx, dcy, fex, fey, cax, cay, aex, aey];
+    if !diffs.iter().all(|&v| v == 0.0 || (LO..=HI).contains(&v.abs())) {
+        return None;
+    }
+    let (den, pd) = cross(bax, bay, dcx, dcy);
+    let (num, pn) = cross(cax, cay, dcx, dcy);
+    let (side_a, pa) = cross(fex, fey, aex, aey);
+    let (side_dir, pb) = cross(fex, fey, bax, bay);
+    let s = den * side_a + num * side_dir;
+    let bound = 12.0 * U * (pd * pa + pn * pb);
+    if s > bound {
+        Some(Sign::Positive)
+    } else if -s > bound {
+        Some(Sign::Negative)
+    } else {
+        None
     }
 }
 
@@ -292,6 +340,48 @@ mod tests {
     use crate::kernel::Fast;
     use rand::rngs::SmallRng;
     use rand::{Rng, SeedableRng};
+
+    /// The static filter of `line_meet_sign` never claims a wrong sign: random
+    /// points, nearly parallel lines, crossings on or one ulp off the third line,
+    /// tiny and huge magnitudes, all against exact dyadic evaluation.
+    #[test]
+    fn line_meet_filter_never_claims_a_wrong_sign() {
+        let mut rng = SmallRng::seed_from_u64(0x11ee);
+        let mut decided = 0;
+        for i in 0..40_000 {
+            let scale = [1.0, 1e-60, 1e60, 1e-140][(i / 4) % 4];
+            let mut r = || {
+                Point::new(
+                    rng.random_range(-1.0..1.0) * scale,
+                    rng.random_range(-1.0..1.0) * scale,
+                )
+            };
+            let (a, b, c, e) = (r(), r(), r(), r());
+            let mut d = r();
+            if i % 3 == 0 {
+                // Nearly parallel to ab.
+                d = Point::new(c.x + (b.x - a.x) * 1.5, c.y + (b.y - a.y) * 1.5 + scale * 1e-12);
+            }
+            // f chosen so that ef passes (nearly) through the crossing of ab and cd.
+            let den = (b.x - a.x) * (d.y - c.y) - (b.y - a.y) * (d.x - c.x);
+            let num = (c.x - a.x) * (d.y - c.y) - (c.y - a.y) * (d.x - c.x);
+            let t = num / den;
+            let x = Point::new(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y));
+            let mut f = if i % 2 == 0 { x } else { r() };
+            if i % 4 == 1 {
+                f = Point::new(x.x.next_up(), x.y);
+            }
+            if !f.is_finite() {
+                continue;
+            }
+            let pts = [a, b, c, d, e, f];
+            if let Some(sign) = line_meet_filtered(pts) {
+                decided += 1;
+                assert_eq!(sign, sign_slow(&LineMeetSidePoly(pts)), "{pts:?}");
+            }
+        }
+        assert!(decided > 5_000, "the filter decides too little: {decided}");
+    }
 
     fn exact_orient(a: Point, b: Point, c: Point) -> Orientation {
         sign_slow(&OrientPoly(a, b, c)).into()

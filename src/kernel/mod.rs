@@ -212,6 +212,13 @@ pub trait Kernel: Copy + Clone + Default + fmt::Debug + Send + Sync + 'static {
     fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
         self.sign(&DotPoly(a, b, c, d))
     }
+
+    /// The sign of the degree-4 polynomial behind [`line_meet_side`] for the points
+    /// `[a, b, c, d, e, f]`; a method so that a kernel can add a static filter.
+    #[inline]
+    fn line_meet_sign(self, pts: [Point; 6]) -> Sign {
+        self.sign(&LineMeetSidePoly(pts))
+    }
 }
 
 pub(crate) struct CrossPoly(
@@ -241,6 +248,47 @@ impl Polynomial for DotPoly {
         let f = R::from_f64;
         let (a, b, c, d) = (self.0, self.1, self.2, self.3);
         (f(b.x) - f(a.x)) * (f(d.x) - f(c.x)) + (f(b.y) - f(a.y)) * (f(d.y) - f(c.y))
+    }
+}
+
+/// Where the intersection point X of the lines ab and cd lies relative to the
+/// directed line ef: `Ccw` when X is left of e→f, `Cw` when right, `Collinear` on it.
+///
+/// X is never constructed: the sign is that of the degree-4 polynomial
+/// `D·((f−e)×(a−e)) + N·((f−e)×(b−a))` with `D = (b−a)×(d−c)` and `N = (c−a)×(d−c)`,
+/// multiplied by the sign of `D` (X = a + (N/D)(b−a)). Exact under [`Exact`].
+/// The lines must not be parallel (`D ≠ 0`); for parallel lines the answer is `Collinear`.
+#[inline]
+pub fn line_meet_side<K: Kernel>(
+    k: K,
+    (a, b): (Point, Point),
+    (c, d): (Point, Point),
+    (e, f): (Point, Point),
+) -> Orientation {
+    let den = k.cross(a, b, c, d);
+    if den == Orientation::Collinear {
+        return Orientation::Collinear;
+    }
+    let s: Orientation = k.line_meet_sign([a, b, c, d, e, f]).into();
+    if den == Orientation::Ccw { s } else { s.reverse() }
+}
+
+/// The polynomial behind [`line_meet_side`].
+pub(crate) struct LineMeetSidePoly(pub(crate) [Point; 6]);
+impl Polynomial for LineMeetSidePoly {
+    #[inline]
+    fn eval<R: Ring>(&self) -> R {
+        let f = R::from_f64;
+        let [a, b, c, d, e, g] = self.0;
+        let cr = |ux: R, uy: R, vx: R, vy: R| ux * vy - uy * vx;
+        let (bax, bay) = (f(b.x) - f(a.x), f(b.y) - f(a.y));
+        let (dcx, dcy) = (f(d.x) - f(c.x), f(d.y) - f(c.y));
+        let (gex, gey) = (f(g.x) - f(e.x), f(g.y) - f(e.y));
+        let den = cr(bax.clone(), bay.clone(), dcx.clone(), dcy.clone());
+        let num = cr(f(c.x) - f(a.x), f(c.y) - f(a.y), dcx, dcy);
+        let side_a = cr(gex.clone(), gey.clone(), f(a.x) - f(e.x), f(a.y) - f(e.y));
+        let side_dir = cr(gex, gey, bax, bay);
+        den * side_a + num * side_dir
     }
 }
 
@@ -326,6 +374,27 @@ mod tests {
         assert_eq!(Exact.cross(o, y, o, x), Orientation::Cw);
         assert_eq!(Exact.cross(o, x, y, Point::new(2.0, 1.0)), Orientation::Collinear);
         assert_eq!(Exact.dot(o, x, x, o), Sign::Negative);
+    }
+
+    #[test]
+    fn line_meet_side_signs() {
+        let p = |x: f64, y: f64| Point::new(x, y);
+        // Lines y = 0 and x = 1 meet at (1, 0).
+        let (l1, l2) = ((p(0., 0.), p(2., 0.)), (p(1., -1.), p(1., 3.)));
+        for (ef, want) in [
+            ((p(0., 1.), p(3., 1.)), Orientation::Cw),
+            ((p(3., -1.), p(0., -1.)), Orientation::Cw),
+            ((p(0., -1.), p(3., -1.)), Orientation::Ccw),
+            ((p(0., -1.), p(2., 1.)), Orientation::Collinear),
+        ] {
+            assert_eq!(line_meet_side(Exact, l1, l2, ef), want);
+            assert_eq!(line_meet_side(Exact, l2, l1, ef), want);
+            assert_eq!(line_meet_side(Fast, (l1.1, l1.0), l2, ef), want);
+        }
+        assert_eq!(
+            line_meet_side(Exact, l1, (p(0., 1.), p(1., 1.)), l2),
+            Orientation::Collinear
+        );
     }
 
     #[test]

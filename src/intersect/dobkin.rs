@@ -1,0 +1,459 @@
+//! [`Dobkin`]: the Dobkin–Souvaine O(log n) test on sorted arrays (thesis 3.2).
+//!
+//! # The algorithm
+//! 1. **Top and bottom by binary search.** The edge directions of a convex polygon
+//!    stored counter-clockwise turn monotonically through one full turn. Each edge
+//!    falls in one of four direction classes (east, up, west, down), read off by
+//!    comparing its endpoints' coordinates; counted from edge 0's class, the
+//!    classes grow monotonically along the array except for the last edges of edge
+//!    0's own class, which one `cross` against edge 0 puts at the end. Two binary
+//!    searches on that rank find the first downward edge (it starts at the topmost
+//!    vertex, the left one if the top is a horizontal edge) and the first upward
+//!    edge (it starts at the bottommost vertex, the right one if the bottom is
+//!    horizontal). A horizontal top or bottom edge is the edge just before.
+//! 2. **Chains.** The *left chain* runs counter-clockwise from the top (left end of a
+//!    horizontal top) down to the bottom (left end of a horizontal bottom); every edge
+//!    strictly descends. The *right chain* runs from the bottom (right end) up to
+//!    the top (right end); every edge strictly ascends. Horizontal edges belong to
+//!    neither. The left chain bounds the region `L = {y ∈ [y_bot, y_top], x ≥ x_L(y)}`,
+//!    the right chain `R = {y ∈ [y_bot, y_top], x ≤ x_R(y)}`, and `P = L_P ∩ R_P`.
+//!    Chains are index ranges into the polygon's array; nothing is copied.
+//! 3. **Lemma (Dobkin–Souvaine).** P and Q intersect iff `L_P ∩ R_Q ≠ ∅` and
+//!    `L_Q ∩ R_P ≠ ∅`. (On the common y-interval put `h1 = x_R^Q − x_L^P` and
+//!    `h2 = x_R^P − x_L^Q`; both are concave and `h1 + h2 ≥ 0` because both polygons
+//!    have non-negative width, so if `{h1 ≥ 0}` and `{h2 ≥ 0}` are both non-empty
+//!    they cannot be disjoint intervals: a height between them would make the sum
+//!    negative.)
+//! 4. **Pruning a left chain against a right chain** (the LR-region lemmas, stated
+//!    here as a search for the maximum of the concave function `g = x_R − x_L` on
+//!    the common y-interval I; the regions meet iff `max g ≥ 0`). Take the median
+//!    edge e of the left chain and f of the right chain, with slopes `s_L = dx/dy`
+//!    and `s_R`; their comparison is one `cross` on input points. `x_L` is convex
+//!    and `x_R` concave in y, so
+//!    * if `s_R ≥ s_L`, g is non-decreasing below `min(top(e), top(f))`: the lower
+//!      part of the chain whose median ends lower is pruned and I starts there;
+//!    * if `s_R < s_L`, g is decreasing above `max(bottom(e), bottom(f))`: the upper
+//!      part of the chain whose median starts higher is pruned and I ends there.
+//!
+//!    When the cut would empty I, the maximum lies at the end of I and a single
+//!    height is tested. Each iteration halves one chain, so once both have one
+//!    edge left g is linear on I and its two ends are tested.
+//! 5. **Height test.** Every end of I is the height of a vertex w of one of the
+//!    chains (both ranges always cover I and every cut is at a vertex), so "is
+//!    `x_L ≤ x_R` at that height" is one `orient` of w against the other chain's
+//!    edge at that height (found by binary search) or one comparison of x
+//!    coordinates when both chains have a vertex there.
+//!
+//! # Complexity
+//! O(log n + log m) time, O(1) memory, for polygons of n and m vertices, on every
+//! input: four binary searches for the extreme vertices, two chain-pair searches
+//! that halve a chain per iteration, at most four height tests of O(log) each.
+//! On arrays of millions of vertices the cost is cache misses, so the four extreme
+//! searches run in lockstep, and so do the two chain-pair searches.
+//!
+//! # Degeneracies
+//! Horizontal top and bottom edges are excluded from the chains (step 1), so no
+//! slope is infinite. Touching pairs are intersecting: every test is closed (`≥`,
+//! `orient ≠ Cw`). Polygons whose y-ranges meet in a single height reduce to one
+//! height test. Equal slopes fall in the `s_R ≥ s_L` case, which is valid for
+//! equality.
+//!
+//! # Precision
+//! Every decision is a comparison of input coordinates or an `orient`/`cross`
+//! on input points; exact under [`Exact`](crate::Exact). Under [`Fast`](crate::Fast) the
+//! searches may misjudge near-degenerate input but always terminate: every loop
+//! shrinks an index range.
+
+use super::{ArrayIntersection, Probe};
+use crate::kernel::{Kernel, Orientation, Point};
+use crate::polygon::ConvexPolygon;
+
+/// The Dobkin–Souvaine O(log n) test; see the module docs.
+///
+/// ```
+/// use polysect::{ConvexPolygon, intersect::{ArrayIntersection, Dobkin}};
+/// let p = ConvexPolygon::new([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+/// let touching = ConvexPolygon::new([[2.0, 1.0], [3.0, 0.0], [3.0, 2.0]])?;
+/// let apart = ConvexPolygon::new([[2.5, 1.0], [3.0, 0.0], [3.0, 2.0]])?;
+/// assert!(Dobkin.intersects(&p, &touching));
+/// assert!(!Dobkin.intersects(&p, &apart));
+/// # Ok::<(), polysect::PolygonError>(())
+/// ```
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Dobkin;
+
+impl ArrayIntersection for Dobkin {
+    const NAME: &'static str = "dobkin";
+
+    fn intersects_probed<K: Kernel, P: Probe>(
+        &self,
+        k: K,
+        p: &ConvexPolygon,
+        q: &ConvexPolygon,
+        probe: &mut P,
+    ) -> bool {
+        let (pv, qv) = (p.vertices(), q.vertices());
+        let [p_top, p_bottom, q_top, q_bottom] = extremes(k, pv, qv);
+        let (pl, pr) = chains(pv, p_top, p_bottom);
+        let (ql, qr) = chains(qv, q_top, q_bottom);
+        // Both chain pairs advance in lockstep: their memory accesses are
+        // independent, so the processor overlaps the cache misses on large arrays.
+        let mut a = PairSearch::new(pv, pl, qv, qr);
+        let mut b = PairSearch::new(qv, ql, pv, pr);
+        let (mut ra, mut rb) = (None, None);
+        loop {
+            if ra.is_none() {
+                ra = a.step(k, probe);
+                if ra == Some(false) {
+                    return false;
+                }
+            }
+            if rb.is_none() {
+                rb = b.step(k, probe);
+                if rb == Some(false) {
+                    return false;
+                }
+            }
+            if let (Some(x), Some(y)) = (ra, rb) {
+                return x && y;
+            }
+        }
+    }
+}
+
+/// A chain: `len` consecutive vertices of a polygon starting at array index `start`.
+#[derive(Clone, Copy, Debug)]
+struct Chain {
+    start: usize,
+    len: usize,
+}
+
+/// The vertex at position `pos` of a chain.
+#[inline]
+fn at(v: &[Point], c: Chain, pos: usize) -> Point {
+    let i = c.start + pos;
+    v[if i >= v.len() { i - v.len() } else { i }]
+}
+
+/// Direction classes of an edge, counter-clockwise from east, decided by comparing
+/// the endpoints' coordinates (no arithmetic).
+const EAST: u8 = 0;
+const UP: u8 = 1;
+const WEST: u8 = 2;
+const DOWN: u8 = 3;
+
+#[inline]
+fn class(a: Point, b: Point) -> u8 {
+    if b.y > a.y {
+        UP
+    } else if b.y < a.y {
+        DOWN
+    } else if b.x > a.x {
+        EAST
+    } else {
+        WEST
+    }
+}
+
+/// The left chain (top to bottom, strictly descending) and the right chain (bottom
+/// to top, strictly ascending) of a counter-clockwise polygon, given the first
+/// downward edge (`top`) and the first upward edge (`bottom`).
+fn chains(v: &[Point], top_left: usize, bottom_right: usize) -> (Chain, Chain) {
+    let n = v.len();
+    let edge_class = |i: usize| class(v[i], v[(i + 1) % n]);
+    let before = |i: usize| (i + n - 1) % n;
+    let top_right = if edge_class(before(top_left)) == WEST {
+        before(top_left)
+    } else {
+        top_left
+    };
+    let bottom_left = if edge_class(before(bottom_right)) == EAST {
+        before(bottom_right)
+    } else {
+        bottom_right
+    };
+    let span = |from: usize, to: usize| Chain {
+        start: from,
+        len: (to + n - from) % n + 1,
+    };
+    (span(top_left, bottom_left), span(bottom_right, top_right))
+}
+
+/// The starts of the first downward and the first upward edge of `p` and of `q`
+/// (each the first edge of its class following an edge of another class): four
+/// binary searches over the edges' turn from edge 0, run in lockstep so that their
+/// independent memory accesses overlap. The turn is measured in classes rotated so
+/// that edge 0's class is 0; edges of edge 0's class turned less than edge 0 (one
+/// `cross`) come last (rank 4), so the rank grows monotonically along the array.
+fn extremes<K: Kernel>(k: K, p: &[Point], q: &[Point]) -> [usize; 4] {
+    let polys = [p, p, q, q];
+    let targets = [DOWN, UP, DOWN, UP];
+    let c0 = polys.map(|v| class(v[0], v[1]));
+    let goal: [u8; 4] = std::array::from_fn(|s| match (targets[s] + 4 - c0[s]) % 4 {
+        0 => 4,
+        r => r,
+    });
+    let rank = |s: usize, i: usize| {
+        let v = polys[s];
+        let (a, b) = (v[i], v[(i + 1) % v.len()]);
+        let r = (class(a, b) + 4 - c0[s]) % 4;
+        if r == 0 && i > 0 && k.cross(v[0], v[1], a, b) == Orientation::Cw {
+            4
+        } else {
+            r
+        }
+    };
+    let mut lo = [0; 4];
+    let mut hi = polys.map(|v| v.len());
+    loop {
+        let mut active = false;
+        for s in 0..4 {
+            if lo[s] < hi[s] {
+                active = true;
+                let mid = lo[s] + (hi[s] - lo[s]) / 2;
+                if rank(s, mid) >= goal[s] {
+                    hi[s] = mid;
+                } else {
+                    lo[s] = mid + 1;
+                }
+            }
+        }
+        if !active {
+            return std::array::from_fn(|s| lo[s] % polys[s].len());
+        }
+    }
+}
+
+/// Which chain a vertex bounding the y-interval belongs to.
+#[derive(Clone, Copy)]
+enum Side {
+    Left,
+    Right,
+}
+
+/// The search of step 4 of the module docs: whether the region right of left chain
+/// `l` (of polygon `lv`) meets the region left of right chain `r` (of polygon `rv`),
+/// one pruning iteration per [`PairSearch::step`].
+struct PairSearch<'a> {
+    lv: &'a [Point],
+    l: Chain,
+    rv: &'a [Point],
+    r: Chain,
+    /// Left positions `i0..=i1` descend from top to bottom; right `j0..=j1` ascend.
+    i0: usize,
+    i1: usize,
+    j0: usize,
+    j1: usize,
+    /// The vertices whose heights bound the common y-interval I, and their chains.
+    lo: (Side, Point),
+    hi: (Side, Point),
+}
+
+impl<'a> PairSearch<'a> {
+    fn new(lv: &'a [Point], l: Chain, rv: &'a [Point], r: Chain) -> Self {
+        let (i0, i1, j0, j1) = (0, l.len - 1, 0, r.len - 1);
+        let (lt, lb) = (at(lv, l, i0), at(lv, l, i1));
+        let (rb, rt) = (at(rv, r, j0), at(rv, r, j1));
+        let lo = if lb.y >= rb.y {
+            (Side::Left, lb)
+        } else {
+            (Side::Right, rb)
+        };
+        let hi = if lt.y <= rt.y {
+            (Side::Left, lt)
+        } else {
+            (Side::Right, rt)
+        };
+        PairSearch {
+            lv,
+            l,
+            rv,
+            r,
+            i0,
+            i1,
+            j0,
+            j1,
+            lo,
+            hi,
+        }
+    }
+
+    #[inline]
+    fn lp(&self, i: usize) -> Point {
+        at(self.lv, self.l, i)
+    }
+
+    #[inline]
+    fn rp(&self, j: usize) -> Point {
+        at(self.rv, self.r, j)
+    }
+
+    /// Is `x_L ≤ x_R` at the height of the bounding vertex `w`?
+    fn test<K: Kernel>(&self, k: K, (side, w): (Side, Point)) -> bool {
+        match side {
+            Side::Left => inside_right_chain(k, &|j| self.rp(j), self.j0, self.j1, w),
+            Side::Right => inside_left_chain(k, &|i| self.lp(i), self.i0, self.i1, w),
+        }
+    }
+
+    /// One pruning iteration; `Some(answer)` once the search is decided.
+    fn step<K: Kernel, P: Probe>(&mut self, k: K, probe: &mut P) -> Option<bool> {
+        let (lo, hi) = (self.lo, self.hi);
+        if lo.1.y > hi.1.y {
+            return Some(false);
+        }
+        if lo.1.y == hi.1.y {
+            return Some(self.test(k, lo));
+        }
+        let (le, re) = (self.i1 - self.i0, self.j1 - self.j0);
+        // Both chains linear on I (or, with an inconsistent kernel, a chain that no
+        // longer covers I): g is linear, test both ends.
+        if (le <= 1 && re <= 1) || le == 0 || re == 0 {
+            return Some(self.test(k, lo) || self.test(k, hi));
+        }
+        probe.iteration();
+        let ke = self.i0 + le / 2; // e = (lp(ke), lp(ke + 1)), top to bottom
+        let kf = self.j0 + re / 2; // f = (rp(kf), rp(kf + 1)), bottom to top
+        let (e_top, e_bot) = (self.lp(ke), self.lp(ke + 1));
+        let (f_bot, f_top) = (self.rp(kf), self.rp(kf + 1));
+        if k.cross(f_bot, f_top, e_bot, e_top) != Orientation::Cw {
+            // s_R ≥ s_L: g is non-decreasing below min(top(e), top(f)).
+            if e_top.y <= f_top.y {
+                if e_top.y >= hi.1.y {
+                    return Some(self.test(k, hi));
+                }
+                self.i1 = ke;
+                if e_top.y > lo.1.y {
+                    self.lo = (Side::Left, e_top);
+                }
+            } else {
+                if f_top.y >= hi.1.y {
+                    return Some(self.test(k, hi));
+                }
+                self.j0 = kf + 1;
+                if f_top.y > lo.1.y {
+                    self.lo = (Side::Right, f_top);
+                }
+            }
+        } else if e_bot.y >= f_bot.y {
+            // s_R < s_L: g is decreasing above max(bottom(e), bottom(f)).
+            if e_bot.y <= lo.1.y {
+                return Some(self.test(k, lo));
+            }
+            self.i0 = ke + 1;
+            if e_bot.y < hi.1.y {
+                self.hi = (Side::Left, e_bot);
+            }
+        } else {
+            if f_bot.y <= lo.1.y {
+                return Some(self.test(k, lo));
+            }
+            self.j1 = kf;
+            if f_bot.y < hi.1.y {
+                self.hi = (Side::Right, f_bot);
+            }
+        }
+        None
+    }
+}
+
+/// Whether `w` lies on or left of the ascending right chain (positions `j0..=j1`) at
+/// the height of `w`.
+fn inside_right_chain<K: Kernel>(k: K, rp: &impl Fn(usize) -> Point, j0: usize, j1: usize, w: Point) -> bool {
+    // Last position with y ≤ w.y (clamped to the range).
+    let (mut lo, mut hi) = (j0, j1);
+    while lo < hi {
+        let mid = lo + (hi - lo).div_ceil(2);
+        if rp(mid).y <= w.y {
+            lo = mid;
+        } else {
+            hi = mid - 1;
+        }
+    }
+    let a = rp(lo);
+    if a.y == w.y || lo == j1 {
+        return w.x <= a.x;
+    }
+    k.orient(a, rp(lo + 1), w) != Orientation::Cw
+}
+
+/// Whether `w` lies on or right of the descending left chain (positions `i0..=i1`)
+/// at the height of `w`.
+fn inside_left_chain<K: Kernel>(k: K, lp: &impl Fn(usize) -> Point, i0: usize, i1: usize, w: Point) -> bool {
+    // Last position with y ≥ w.y (clamped to the range).
+    let (mut lo, mut hi) = (i0, i1);
+    while lo < hi {
+        let mid = lo + (hi - lo).div_ceil(2);
+        if lp(mid).y >= w.y {
+            lo = mid;
+        } else {
+            hi = mid - 1;
+        }
+    }
+    let a = lp(lo);
+    if a.y == w.y || lo == i1 {
+        return a.x <= w.x;
+    }
+    k.orient(a, lp(lo + 1), w) != Orientation::Cw
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Exact;
+
+    fn poly(pts: &[[f64; 2]]) -> ConvexPolygon {
+        ConvexPolygon::new(pts.iter().copied()).unwrap()
+    }
+
+    #[test]
+    fn chains_with_horizontal_top_and_bottom() {
+        // A square starting at every vertex: top-left is (0,2), bottom-right (2,0).
+        let sq = [[0., 0.], [2., 0.], [2., 2.], [0., 2.]];
+        for s in 0..4 {
+            let pts: Vec<[f64; 2]> = (0..4).map(|i| sq[(s + i) % 4]).collect();
+            let p = poly(&pts);
+            let v = p.vertices();
+            let [t, b, _, _] = extremes(Exact, v, v);
+            let (l, r) = chains(v, t, b);
+            assert_eq!(
+                (at(v, l, 0), at(v, l, l.len - 1)),
+                (Point::new(0., 2.), Point::new(0., 0.))
+            );
+            assert_eq!(
+                (at(v, r, 0), at(v, r, r.len - 1)),
+                (Point::new(2., 0.), Point::new(2., 2.))
+            );
+            assert_eq!((l.len, r.len), (2, 2));
+        }
+        // A diamond: single top and bottom vertices shared by both chains.
+        let d = poly(&[[0., -1.], [1., 0.], [0., 1.], [-1., 0.]]);
+        let [t, b, _, _] = extremes(Exact, d.vertices(), d.vertices());
+        let (l, r) = chains(d.vertices(), t, b);
+        assert_eq!((l.len, r.len), (3, 3));
+        assert_eq!(at(d.vertices(), l, 0), Point::new(0., 1.));
+        assert_eq!(at(d.vertices(), r, 0), Point::new(0., -1.));
+    }
+
+    #[test]
+    fn hand_cases() {
+        let sq = poly(&[[0., 0.], [2., 0.], [2., 2.], [0., 2.]]);
+        let cases: &[(&[[f64; 2]], bool)] = &[
+            (&[[1., 1.], [1.5, 1.], [1., 1.5]], true),
+            (&[[-1., -1.], [3., -1.], [3., 3.], [-1., 3.]], true),
+            (&[[2., 2.], [3., 2.], [3., 3.]], true),
+            (&[[2., 0.5], [3., 0.], [3., 1.]], true),
+            (&[[2., 0.], [3., 0.], [3., 2.], [2., 2.]], true),
+            (&[[0., 2.], [2., 2.], [1., 3.]], true), // shared horizontal top edge
+            (&[[0., 2.5], [2., 2.5], [1., 3.]], false),
+            (&[[2.5, 0.], [3., 0.], [3., 2.]], false),
+            (&[[3., 3.], [4., 3.], [4., 4.]], false),
+            (&[[1.5, 3.], [3., 1.5], [3., 3.]], false),
+        ];
+        for (q, want) in cases {
+            let q = poly(q);
+            assert_eq!(Dobkin.intersects(&sq, &q), *want, "{q:?}");
+            assert_eq!(Dobkin.intersects(&q, &sq), *want, "{q:?}");
+        }
+    }
+}
