@@ -16,8 +16,10 @@ mod convex;
 mod error;
 mod hull;
 mod linked;
+mod simple;
 
 pub use convex::ConvexPolygon;
 pub use error::{EditError, PolygonError};
 pub use hull::convex_hull;
 pub use linked::{LinkedPolygon, SampleWorkspace, VertexId};
+pub use simple::{SimplePolygon, SimplePolygonError};
