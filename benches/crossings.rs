@@ -7,6 +7,8 @@
 //! coordinates are real), so the seed's other Δ and σ give the same combinatorics.
 //! The expected number of points (brute force, exact) is asserted inside every
 //! iteration. Brute force stops at n = 5,000 (n·m = 25·10⁶ edge pairs).
+//! `brute-nobox-exact` is the seed's baseline (a segment test on every pair, no
+//! bounding-box rejection, no point construction), up to the seed's n = 2,000.
 //!
 //! ```text
 //! cargo bench --bench crossings -- --warm-up-time 1 --measurement-time 2
@@ -17,6 +19,7 @@ use geo::algorithm::sweep::{Cross, Intersections};
 use geo::{Line, coord};
 use polysect::crossings::{Brute, Crossings, Sweep, SweepWorkspace};
 use polysect::generate::simple::{PointDistribution, SimpleMethod, random_simple_polygon};
+use polysect::kernel::segment_contact;
 use polysect::{Exact, Fast, SimplePolygon};
 use rand::SeedableRng;
 use rand::rngs::SmallRng;
@@ -24,6 +27,8 @@ use std::hint::black_box;
 
 const SIZES: [usize; 11] = [5, 50, 100, 200, 500, 800, 1000, 2000, 5000, 10_000, 20_000];
 const BRUTE_MAX: usize = 5000;
+/// The largest size in the seed's tables.
+const SEED_MAX: usize = 2000;
 
 /// An edge tagged with its polygon, for geo's sweep over both edge sets.
 #[derive(Clone, Debug)]
@@ -75,6 +80,7 @@ fn bench(c: &mut Criterion) {
                 assert_eq!(Brute.crossings(&p, &q), expected);
             }
             let k = expected.len();
+            eprintln!("{dname}: n = m = {n}: {k} points");
             group.throughput(Throughput::Elements((p.len() + q.len()) as u64));
             let mut ws = SweepWorkspace::default();
             let mut out = Vec::new();
@@ -94,6 +100,27 @@ fn bench(c: &mut Criterion) {
                 group.bench_with_input(BenchmarkId::new("brute-exact", n), &(&p, &q), |b, (p, q)| {
                     b.iter(|| assert_eq!(Brute.crossings_with(Exact, black_box(p), black_box(q)).len(), k))
                 });
+            }
+            if n <= SEED_MAX {
+                // The seed's baseline: a segment test on every pair, no bounding-box
+                // rejection (counting meeting pairs: random input has no touchings).
+                group.bench_with_input(
+                    BenchmarkId::new("brute-nobox-exact", n),
+                    &(&p, &q),
+                    |b, (p, q)| {
+                        b.iter(|| {
+                            let mut meets = 0;
+                            for i in 0..p.len() {
+                                let (p1, p2) = p.edge(i);
+                                for j in 0..q.len() {
+                                    let (q1, q2) = q.edge(j);
+                                    meets += segment_contact(Exact, p1, p2, q1, q2).meets() as usize;
+                                }
+                            }
+                            assert_eq!(meets, k);
+                        })
+                    },
+                );
             }
             let edges: Vec<Tagged> = tagged(&p, 0).chain(tagged(&q, 1)).collect();
             group.bench_with_input(BenchmarkId::new("geo-sweep", n), &edges, |b, edges| {

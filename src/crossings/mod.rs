@@ -29,8 +29,8 @@
 //! misclassified (a touching missed or a near miss reported), and the two algorithms
 //! may then differ by such points.
 
-mod brute;
-mod sweep;
+pub mod brute;
+pub mod sweep;
 
 pub use brute::Brute;
 pub use sweep::{Sweep, SweepWorkspace};

@@ -1,32 +1,7 @@
 //! [`SimplePolygon`]: a validated simple polygon (possibly non-convex, either
 //! orientation), the input of the crossings query ([`crate::crossings`]).
 //!
-//! # Validation
-//! 1. Every coordinate must be finite.
-//! 2. Consecutive duplicates and a repeated closing vertex are removed; at least
-//!    three vertices must remain, and not all of them on one line (zero area).
-//! 3. A vertex whose neighbours lie on one line with it is dropped when it lies
-//!    between them (a straight vertex: the boundary is the same point set without
-//!    it) and refused when the boundary turns back on itself there (a spike).
-//!    Dropping a straight vertex changes no edge direction, so one pass decides.
-//!    After this step adjacent edges meet only at their shared vertex.
-//! 4. No two non-adjacent edges may meet (crossing, touching, overlapping or a
-//!    vertex repeated further along). This is checked by Shamos and Hoey's sweep
-//!    over the vertices in lexicographic order (x, then y; a vertical edge starts at
-//!    its lower end), with the edges pierced by the sweep line in an ordered set
-//!    (a `BTreeSet` ordered by exact orientation tests); only edges that become
-//!    neighbours in that order are tested, and the leftmost meeting point is always
-//!    found by two such neighbours. Touchings count: the segments are closed.
-//!
-//! # Complexity
-//! O(n log n) time and O(n) memory for n input vertices, in the worst case: a
-//! sort, at most 2n set insertions and removals and at most 4n segment tests.
-//! There is no size limit.
-//!
-//! # Precision
-//! Every decision is taken with the [`Exact`] kernel on the input coordinates, so a
-//! polygon is accepted or refused independently of rounding. The vertices are
-//! stored unchanged (no coordinate is computed).
+//! See [`SimplePolygon`] for the validation rules, complexity and precision.
 
 use crate::kernel::{Exact, Kernel, Orientation, Point, SegmentContact, Sign, segment_contact};
 use std::cmp::Ordering;
@@ -104,15 +79,39 @@ impl std::error::Error for SimplePolygonError {}
 /// The vertices are stored in input order and orientation, starting at the first
 /// input vertex that survives cleaning.
 ///
+/// # Validation
+/// 1. Every coordinate must be finite.
+/// 2. Consecutive duplicates and a repeated closing vertex are removed; at least
+///    three vertices must remain, and not all of them on one line (zero area).
+/// 3. A vertex whose neighbours lie on one line with it is dropped when it lies
+///    between them (a straight vertex: the boundary is the same point set without
+///    it) and refused when the boundary turns back on itself there (a spike).
+///    Dropping a straight vertex changes no edge direction, so one pass decides.
+///    After this step adjacent edges meet only at their shared vertex.
+/// 4. No two non-adjacent edges may meet (crossing, touching, overlapping or a
+///    vertex repeated further along). This is checked by Shamos and Hoey's sweep
+///    over the vertices in lexicographic order (x, then y; a vertical edge starts at
+///    its lower end), with the edges pierced by the sweep line in an ordered set
+///    (a `BTreeSet` ordered by exact orientation tests); only edges that become
+///    neighbours in that order are tested, and the leftmost meeting point is always
+///    found by two such neighbours. Touchings count: the segments are closed.
+///
 /// # Complexity
-/// Construction is O(n log n); see the [module docs](self).
+/// O(n log n) time and O(n) memory for n input vertices, in the worst case: a
+/// sort, at most 2n set insertions and removals and at most 4n segment tests.
+/// There is no size limit.
+///
+/// # Precision
+/// Every decision is taken with the [`Exact`] kernel on the input coordinates, so a
+/// polygon is accepted or refused independently of rounding. The vertices are
+/// stored unchanged (no coordinate is computed).
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct SimplePolygon {
     vertices: Vec<Point>,
 }
 
 impl SimplePolygon {
-    /// Validates and cleans `points` (see the [module docs](self)).
+    /// Validates and cleans `points` (see the [type docs](SimplePolygon)).
     ///
     /// # Errors
     /// A [`SimplePolygonError`] naming the offending input vertex or edges:
