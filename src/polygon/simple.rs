@@ -580,6 +580,52 @@ mod tests {
     }
 
     #[test]
+    fn sweep_agrees_with_all_pairs_on_random_real_vertex_lists() {
+        use rand::rngs::SmallRng;
+        use rand::{Rng, SeedableRng};
+        let mut rng = SmallRng::seed_from_u64(13);
+        let (mut valid, mut invalid) = (0, 0);
+        for _ in 0..20000 {
+            let n = rng.random_range(4..9);
+            let pts: Vec<Point> = (0..n)
+                .map(|_| Point::new(rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0)))
+                .collect();
+            let Ok(cleaned) = clean(&pts) else { continue };
+            let v: Vec<Point> = cleaned.iter().map(|c| c.0).collect();
+            let sweep = find_self_intersection(&v).is_some();
+            assert_eq!(sweep, brute_self_intersects(&v), "{v:?}");
+            if sweep { invalid += 1 } else { valid += 1 }
+        }
+        assert!(valid > 1000 && invalid > 1000, "{valid} {invalid}");
+    }
+
+    #[test]
+    fn sweep_agrees_with_all_pairs_on_large_perturbed_polygons() {
+        use crate::generate::simple::{PointDistribution, SimpleMethod, random_simple_polygon};
+        use rand::rngs::SmallRng;
+        use rand::{Rng, SeedableRng};
+        let mut rng = SmallRng::seed_from_u64(17);
+        let dist = PointDistribution::Uniform { min: 0.0, max: 1.0 };
+        let (mut valid, mut invalid) = (0, 0);
+        for i in 0..200 {
+            let n = rng.random_range(100..400);
+            let p = random_simple_polygon(SimpleMethod::ALL[i % 2], dist, n, &mut rng).unwrap();
+            let mut v = p.into_vertices();
+            // Move a vertex by a small random step: sometimes its edges now cross others.
+            let k = rng.random_range(0..v.len());
+            let step = 10f64.powi(-rng.random_range(1..4));
+            v[k].x += rng.random_range(-step..step);
+            v[k].y += rng.random_range(-step..step);
+            let Ok(cleaned) = clean(&v) else { continue };
+            let w: Vec<Point> = cleaned.iter().map(|c| c.0).collect();
+            let sweep = find_self_intersection(&w).is_some();
+            assert_eq!(sweep, brute_self_intersects(&w));
+            if sweep { invalid += 1 } else { valid += 1 }
+        }
+        assert!(valid > 20 && invalid > 20, "{valid} {invalid}");
+    }
+
+    #[test]
     fn sweep_agrees_with_all_pairs_on_random_grid_polygons() {
         use rand::rngs::SmallRng;
         use rand::{Rng, SeedableRng};
