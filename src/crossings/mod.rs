@@ -221,10 +221,11 @@ fn scale(x: f64, k: i32) -> f64 {
 /// and κ = 1 / |sin θ| the condition number of the intersection, the distance from
 /// the returned point to the true crossing is at most
 ///
-/// ‖p̃ − p‖ ≤ u · (3κ · (2ℓ₁ + ℓ₂) + 2ℓ₁ + 2‖p‖∞) + O(u²)
+/// ‖p̃ − p‖ ≤ u · (3κ · (3ℓ₁ + ℓ₂) + 3ℓ₁ + 2‖p‖∞) + O(u²)
 ///
 /// (first-order analysis: each cross product is within γ₃ = 3u/(1 − 3u) of its
-/// terms' magnitude, |c − a| ≤ ℓ₁ + ℓ₂, and two roundings in a + t(b − a)), plus,
+/// terms' magnitude, |c − a| ≤ |b − a| + |e − c|, the max-norm choice of the
+/// shorter segment costs at most a factor √2, and two roundings in a + t(b − a)), plus,
 /// only when coordinates of very different magnitudes meet in one pair, the loss
 /// of the smaller ones to subnormal range after scaling (at most 2^-1074 relative
 /// to the largest coordinate). For well-conditioned crossings this is a few ulps of
