@@ -7,7 +7,7 @@
 //! Output numbers are printed so that they parse back to the same `f64`.
 
 use crate::kernel::Point;
-use crate::polygon::ConvexPolygon;
+use crate::polygon::{ConvexPolygon, SimplePolygon};
 use serde::Deserialize;
 use serde_json::Value;
 
@@ -102,6 +102,30 @@ pub fn check_line(line: &[u8], answer: impl Fn(&ConvexPolygon, &ConvexPolygon) -
     }
 }
 
+/// Validates both polygons of a parsed pair as simple polygons; errors name the
+/// polygon (`p` or `q`).
+pub fn simple_pair(pair: &ParsedPair) -> Result<(SimplePolygon, SimplePolygon), LineError> {
+    let make = |name: &str, pts: &[Point]| {
+        SimplePolygon::new(pts.iter().copied()).map_err(|e| LineError {
+            id: pair.id.clone(),
+            message: format!("{name}: {e}"),
+        })
+    };
+    Ok((make("p", &pair.p)?, make("q", &pair.q)?))
+}
+
+/// Answers one `crossings` line: `{"points": [[x, y], ...]}` or `{"error": ...}`.
+pub fn crossings_line(line: &[u8], answer: impl Fn(&SimplePolygon, &SimplePolygon) -> Vec<Point>) -> String {
+    let result = parse_pair(line).and_then(|pair| {
+        let (p, q) = simple_pair(&pair)?;
+        Ok((pair.id, answer(&p, &q)))
+    });
+    match result {
+        Ok((id, points)) => output_line(id.as_ref(), "points", &points_json(&points)),
+        Err(e) => error_line(&e),
+    }
+}
+
 /// A vertex list as JSON, each number printed so that it parses back to the same `f64`.
 pub fn points_json(points: &[Point]) -> String {
     let pairs: Vec<[f64; 2]> = points.iter().map(|&p| p.into()).collect();
@@ -174,6 +198,34 @@ mod tests {
         let big_int = parse_pair(br#"{"p": [[123456789012345678901234567890, -0]], "q": []}"#).unwrap();
         assert_eq!(big_int.p[0].x, 123456789012345678901234567890.0);
         assert!(Algorithm::ALL.contains(&Algorithm::Linear));
+    }
+
+    #[test]
+    fn crossings_lines_answer_and_report_errors() {
+        use crate::crossings::{Crossings, Sweep};
+        let cross = |line: &str| crossings_line(line.as_bytes(), |p, q| Sweep.crossings(p, q));
+        assert_eq!(
+            cross(r#"{"id": 7, "p": [[0,0],[2,0],[2,2],[0,2]], "q": [[1,1],[3,1],[3,3]]}"#),
+            r#"{"id": 7, "points": [[2.0,1.0],[2.0,2.0]]}"#
+        );
+        assert_eq!(
+            cross(r#"{"p": [[0,0],[1,0],[0,1]], "q": [[5,5],[6,5],[5,6]]}"#),
+            r#"{"points": []}"#
+        );
+        for (line, needle) in [
+            (
+                r#"{"p": [[0,0],[2,2],[2,0],[0,2]], "q": [[0,0],[1,0],[0,1]]}"#,
+                "p: the boundary intersects itself",
+            ),
+            (
+                r#"{"p": [[0,0],[1,0],[0,1]], "q": [[0,0],[1,1]]}"#,
+                "q: a polygon needs at least 3",
+            ),
+            ("{", "invalid JSON"),
+        ] {
+            let out = cross(line);
+            assert!(out.contains(needle), "{line} -> {out}");
+        }
     }
 
     #[test]

@@ -1,6 +1,7 @@
 //! polysect: dynamic convex polygons with sublinear intersection queries.
 #![forbid(unsafe_code)]
 
+pub mod crossings;
 pub mod generate;
 pub mod intersect;
 pub mod jsonl;
@@ -10,3 +11,4 @@ pub mod polygon;
 pub use kernel::{Exact, Fast, Kernel, Orientation, Point, Precision, Sign};
 
 pub use polygon::{ConvexPolygon, EditError, LinkedPolygon, PolygonError, VertexId};
+pub use polygon::{SimplePolygon, SimplePolygonError};

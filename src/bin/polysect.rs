@@ -1,6 +1,7 @@
 //! The `polysect` command line: a thin layer over the library.
 
 use clap::{Parser, Subcommand, ValueEnum};
+use polysect::crossings::CrossingAlgorithm;
 use polysect::generate::{self, Family, Relation};
 use polysect::intersect::Algorithm;
 use polysect::jsonl;
@@ -35,6 +36,17 @@ enum Command {
         /// Algorithm: auto, or one of the names `polysect list` prints.
         #[arg(long, default_value = "auto", value_parser = parse_algorithm)]
         algorithm: AlgorithmArg,
+        #[arg(long, default_value = "exact", value_parser = parse_precision)]
+        precision: Precision,
+    },
+    /// Report where the boundaries of simple polygons meet, for JSON Lines pairs
+    /// {"p": [[x,y],...], "q": [...]}: writes {"points": [[x,y],...]} per line.
+    Crossings {
+        /// Input file (JSON Lines); standard input when absent.
+        file: Option<String>,
+        /// Algorithm: sweep (Žalik's sweep line) or brute (all edge pairs).
+        #[arg(long, default_value = "sweep", value_parser = parse_crossing_algorithm)]
+        algorithm: CrossingAlgorithm,
         #[arg(long, default_value = "exact", value_parser = parse_precision)]
         precision: Precision,
     },
@@ -85,6 +97,10 @@ fn parse_algorithm(s: &str) -> Result<AlgorithmArg, String> {
         .map_err(|e| e.replace("(valid: ", "(valid: auto, "))
 }
 
+fn parse_crossing_algorithm(s: &str) -> Result<CrossingAlgorithm, String> {
+    s.parse()
+}
+
 fn parse_precision(s: &str) -> Result<Precision, String> {
     s.parse()
 }
@@ -116,6 +132,11 @@ fn main() -> ExitCode {
             algorithm,
             precision,
         }) => check(file.as_deref(), algorithm.resolve(), precision),
+        Some(Command::Crossings {
+            file,
+            algorithm,
+            precision,
+        }) => crossings(file.as_deref(), algorithm, precision),
         Some(Command::Gen {
             family,
             n,
@@ -177,6 +198,16 @@ fn check(file: Option<&str>, algorithm: Algorithm, precision: Precision) -> io::
     out.flush()
 }
 
+fn crossings(file: Option<&str>, algorithm: CrossingAlgorithm, precision: Precision) -> io::Result<()> {
+    let mut input = open_input(file)?;
+    let mut out = BufWriter::new(io::stdout().lock());
+    for_each_line(&mut input, |line| {
+        let reply = jsonl::crossings_line(line, |p, q| algorithm.run(precision, p, q));
+        writeln!(out, "{reply}")
+    })?;
+    out.flush()
+}
+
 fn gen_pairs(
     family: Family,
     n: usize,
@@ -223,6 +254,12 @@ fn list() -> io::Result<()> {
         Algorithm::fastest_array(),
         names.join(", ")
     );
+    let names: Vec<&str> = CrossingAlgorithm::ALL.iter().map(|a| a.name()).collect();
+    println!(
+        "crossings:  {} (default {})",
+        names.join(", "),
+        CrossingAlgorithm::default()
+    );
     println!("precisions: fast, exact (default)");
     let fams: Vec<&str> = Family::ALL.iter().map(|f| f.name()).collect();
     println!("families:   {}", fams.join(", "));
@@ -240,6 +277,10 @@ fn overview() -> io::Result<()> {
     writeln!(
         out,
         "  polysect check [FILE]   answer JSON Lines pairs {{\"p\": [[x,y],...], \"q\": [...]}}"
+    )?;
+    writeln!(
+        out,
+        "  polysect crossings [FILE]  points where two simple polygons' boundaries meet"
     )?;
     writeln!(
         out,
