@@ -10,13 +10,22 @@
 //! |---|---|---|---|
 //! | [`Linear`] | arrays | O(n + m) | separating-edge search with rotating pointers; the reference |
 //! | [`brute_force`] | arrays | O(n·m) | every edge pair plus containment; the oracle for `Linear` |
+//! | [`Clm`] | linked | expected O(√n + √m) | Chazelle–Liu–Magen: samples, a 2D LP, chains ([`crate::lp`]) |
+//! | [`Convert`] | linked | O(n + m) + array test | walk the lists into arrays, then an array algorithm |
 //!
 //! Each algorithm is a unit struct implementing [`ArrayIntersection`] and is listed
-//! once in [`Algorithm`], which the CLI, tests and benches iterate over.
+//! once in [`Algorithm`], which the CLI, tests and benches iterate over. Tests on
+//! [`LinkedPolygon`](crate::LinkedPolygon)s implement [`LinkedIntersection`]; through
+//! [`Algorithm::run`] they take array polygons, which are linked in a shuffled arena
+//! order (as the thesis's experiments do) with an RNG seeded by [`LINKED_RUN_SEED`].
 
+mod clm;
 mod linear;
+mod linked;
 
+pub use clm::{Clm, ClmWithFactor, ClmWorkspace};
 pub use linear::{Linear, brute_force};
+pub use linked::{Convert, ConvertWorkspace, DEFAULT_QUERY_SEED, LinkedIntersection};
 
 use crate::kernel::{Exact, Fast, Kernel, Precision};
 use crate::polygon::ConvexPolygon;
@@ -75,15 +84,19 @@ pub trait ArrayIntersection {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Algorithm {
     Linear,
+    Clm,
+    Convert,
 }
 
 impl Algorithm {
     /// Every algorithm, in the order tables list them.
-    pub const ALL: &'static [Algorithm] = &[Algorithm::Linear];
+    pub const ALL: &'static [Algorithm] = &[Algorithm::Linear, Algorithm::Clm, Algorithm::Convert];
 
     pub fn name(self) -> &'static str {
         match self {
             Algorithm::Linear => Linear::NAME,
+            Algorithm::Clm => Clm::NAME,
+            Algorithm::Convert => <Convert>::NAME,
         }
     }
 
@@ -105,6 +118,8 @@ impl Algorithm {
         let mut it = Iterations::default();
         let answer = match self {
             Algorithm::Linear => Linear.intersects_probed(k, p, q, &mut it),
+            Algorithm::Clm => run_linked(&Clm, k, p, q, &mut it),
+            Algorithm::Convert => run_linked(&<Convert>::default(), k, p, q, &mut it),
         };
         (answer, it.0)
     }
@@ -113,6 +128,25 @@ impl Algorithm {
     pub fn intersects(self, precision: Precision, p: &ConvexPolygon, q: &ConvexPolygon) -> bool {
         self.run(precision, p, q).0
     }
+}
+
+/// The seed of the RNG with which [`Algorithm::run`] links array polygons in shuffled
+/// arena order and then runs a linked-polygon test: runs are reproducible.
+pub const LINKED_RUN_SEED: u64 = 0x5eed_c1a0;
+
+/// Links `p` and `q` in shuffled arena order and runs a linked-polygon test on them.
+fn run_linked<L: LinkedIntersection, K: Kernel, P: Probe>(
+    alg: &L,
+    k: K,
+    p: &ConvexPolygon,
+    q: &ConvexPolygon,
+    probe: &mut P,
+) -> bool {
+    use rand::SeedableRng;
+    let mut rng = rand::rngs::SmallRng::seed_from_u64(LINKED_RUN_SEED);
+    let lp = crate::polygon::LinkedPolygon::from_convex_shuffled(p, &mut rng);
+    let lq = crate::polygon::LinkedPolygon::from_convex_shuffled(q, &mut rng);
+    alg.intersects_in(k, &lp, &lq, &mut rng, &mut L::Workspace::default(), probe)
 }
 
 impl fmt::Display for Algorithm {

@@ -1,0 +1,275 @@
+//! [`Clm`]: the Chazelle–Liu–Magen expected-O(√n) test on linked polygons (thesis 3.3.2).
+//!
+//! # Algorithm
+//! 1. Sample r_P ≈ c·√n distinct vertices R_P of P and r_Q ≈ c·√m vertices R_Q of Q,
+//!    uniformly, in O(r) ([`LinkedPolygon::sample_positions`]). CH(R_P) ⊆ P, CH(R_Q) ⊆ Q.
+//! 2. Run the LP ([`separating_line`]) on R_P and R_Q. If the hulls intersect, so do P
+//!    and Q. Otherwise we get a line L with R_P on its closed right side, R_Q on its
+//!    closed left side, and tangent vertices p ∈ R_P, q ∈ R_Q on L.
+//! 3. Chains: C_P is the run of P's vertices strictly on Q's side of L, walked from p
+//!    along the direction in which p's neighbour lies strictly beyond L, **including the
+//!    first vertex back on the near side at both ends** (p itself at one end). Then
+//!    CH(C_P) ⊇ P ∩ H where H is Q's closed side of L: the boundary of P leaves H on
+//!    the two closing edges, which are edges of the chain. If neither neighbour of p is
+//!    strictly beyond L, P touches H at most along L near p and C_P = (prev p, p, next p).
+//!    C_Q likewise for Q on P's side. By convexity these runs are contiguous, so the walk
+//!    finds all of them; their expected length is O(n / r) (Chazelle–Liu–Magen,
+//!    Theorem 2.1).
+//! 4. A common point x of P and Q lies on one side of L: if on Q's closed side, x ∈
+//!    P ∩ H ⊆ CH(C_P) and x ∈ Q; otherwise x ∈ CH(C_Q) and x ∈ P. So P ∩ Q ≠ ∅ iff
+//!    P ∩ CH(C_Q) ≠ ∅ or Q ∩ CH(C_P) ≠ ∅ (the converse holds as CH(C_P) ⊆ P).
+//! 5. P against CH(C_Q): the LP on R_P and C_Q; intersecting hulls mean P ∩ Q ≠ ∅. Else
+//!    its line L′ gives the chain C′_P of P beyond L′ (step 3 again), and P ∩ CH(C_Q) ≠ ∅
+//!    iff CH(C′_P) ∩ CH(C_Q) ≠ ∅, one more LP. Q against CH(C_P) symmetrically.
+//!
+//! At most five LPs on O(r + n/r) points each, so the expected time is O(√n) for
+//! r = Θ(√n). The constant c = [`Clm::SAMPLE_FACTOR`] was chosen by measurement
+//! (docs/sublinear.md, `benches/clm.rs`).
+//!
+//! # Complexity
+//! Expected O((c + 1/c)·(√n + √m)) for polygons of n and m vertices, over the random
+//! samples and the LP's random orders, for **every** input (no assumption on the
+//! polygons). Polygons with at most r vertices are used whole: one LP decides.
+//! The worst case (an absurdly unlucky sample) is O(n + m) walks and quadratic LP time.
+//!
+//! # Degeneracies
+//! Closed sets throughout: the LP reports touching hulls as intersecting and only
+//! returns lines that separate with closed sides, and the chains include the closing
+//! vertices on the near side, so shared vertices, vertices on edges, shared or
+//! overlapping edges and containment are all intersections. The answer never depends
+//! on the random draw; tests/clm.rs runs many seeds per pair.
+//!
+//! # Precision
+//! Every decision is a predicate on input points (`orient` for sides and chain walks,
+//! the LP's `orient`/`cross`/`dot`): exact under [`Exact`](crate::Exact), so it equals
+//! [`Linear`](super::Linear) on every input. Under [`Fast`](crate::Fast) chain walks are
+//! capped at n steps, so the test always terminates.
+
+use super::Probe;
+use super::linked::LinkedIntersection;
+use crate::kernel::{Kernel, Orientation, Point};
+use crate::lp::{ArenaPoints, LpWorkspace, Separation, separating_line};
+use crate::polygon::{LinkedPolygon, SampleWorkspace};
+use rand::Rng;
+
+/// The Chazelle–Liu–Magen sublinear test with the default sample factor
+/// [`Clm::SAMPLE_FACTOR`]; see the module docs.
+///
+/// ```
+/// use polysect::{ConvexPolygon, LinkedPolygon};
+/// use polysect::generate::regular_polygon;
+/// use polysect::intersect::{Clm, ClmWorkspace, LinkedIntersection};
+/// use rand::{SeedableRng, rngs::SmallRng};
+/// let mut rng = SmallRng::seed_from_u64(7);
+/// let big = regular_polygon(4096, 1.0);
+/// let p = LinkedPolygon::from_convex_shuffled(&big, &mut rng);
+/// let far = big.map(|v| polysect::Point::new(v.x + 3.0, v.y))?;
+/// let q = LinkedPolygon::from_convex_shuffled(&far, &mut rng);
+/// let mut ws = ClmWorkspace::default();
+/// assert!(!Clm.intersects_with_workspace(polysect::Exact, &p, &q, &mut rng, &mut ws));
+/// // A triangle sharing the vertex (1, 0): touching is intersection.
+/// let q = LinkedPolygon::from_points([[1.0, 0.0], [2.0, -1.0], [2.0, 1.0]])?;
+/// assert!(Clm.intersects_with_workspace(polysect::Exact, &p, &q, &mut rng, &mut ws));
+/// # Ok::<(), polysect::PolygonError>(())
+/// ```
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Clm;
+
+impl Clm {
+    /// The sample size is ⌈c·√n⌉ vertices per polygon of n vertices, with this c.
+    pub const SAMPLE_FACTOR: f64 = 1.0;
+}
+
+/// The same test with an explicit sample factor c (samples of ⌈c·√n⌉ vertices), for
+/// experiments that tune c.
+#[derive(Clone, Copy, Debug)]
+pub struct ClmWithFactor(pub f64);
+
+/// Reusable scratch memory for [`Clm`]: sample marks and the sample, chain and LP buffers.
+#[derive(Clone, Debug, Default)]
+pub struct ClmWorkspace {
+    sample: SampleWorkspace,
+    rp: Vec<u32>,
+    rq: Vec<u32>,
+    cp: Vec<u32>,
+    cq: Vec<u32>,
+    chain: Vec<u32>,
+    lp: LpWorkspace,
+}
+
+impl ClmWorkspace {
+    /// The LP statistics accumulated by queries using this workspace: work counter and
+    /// recomputations after failed certification (see [`LpWorkspace`]).
+    pub fn lp_stats(&self) -> &LpWorkspace {
+        &self.lp
+    }
+}
+
+impl LinkedIntersection for Clm {
+    const NAME: &'static str = "clm";
+    type Workspace = ClmWorkspace;
+
+    #[inline]
+    fn intersects_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
+        &self,
+        kernel: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        rng: &mut R,
+        workspace: &mut ClmWorkspace,
+        probe: &mut P,
+    ) -> bool {
+        ClmWithFactor(Clm::SAMPLE_FACTOR).intersects_in(kernel, p, q, rng, workspace, probe)
+    }
+}
+
+impl LinkedIntersection for ClmWithFactor {
+    const NAME: &'static str = "clm";
+    type Workspace = ClmWorkspace;
+
+    fn intersects_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
+        &self,
+        k: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        rng: &mut R,
+        ws: &mut ClmWorkspace,
+        probe: &mut P,
+    ) -> bool {
+        let work_before = ws.lp.work;
+        let answer = clm(k, self.0, p, q, rng, ws);
+        for _ in work_before..ws.lp.work {
+            probe.iteration();
+        }
+        answer
+    }
+}
+
+/// ⌈c·√n⌉, at least 3.
+fn sample_size(c: f64, n: usize) -> usize {
+    let r = (c * (n as f64).sqrt()).ceil();
+    if r.is_finite() && r >= 3.0 { r as usize } else { 3 }
+}
+
+fn clm<K: Kernel, R: Rng + ?Sized>(
+    k: K,
+    c: f64,
+    p: &LinkedPolygon,
+    q: &LinkedPolygon,
+    rng: &mut R,
+    ws: &mut ClmWorkspace,
+) -> bool {
+    ws.rp.clear();
+    ws.rq.clear();
+    p.sample_positions(sample_size(c, p.len()), rng, &mut ws.sample, &mut ws.rp);
+    q.sample_positions(sample_size(c, q.len()), rng, &mut ws.sample, &mut ws.rq);
+    let rp = ArenaPoints {
+        polygon: p,
+        positions: &ws.rp,
+    };
+    let rq = ArenaPoints {
+        polygon: q,
+        positions: &ws.rq,
+    };
+    let t = match separating_line(k, &rp, &rq, rng, &mut ws.lp) {
+        Ok(Separation::Separated(t)) => t,
+        // Samples are never empty (polygons have ≥ 3 vertices), so only a real
+        // intersection of the sample hulls gets here.
+        _ => return true,
+    };
+    if ws.rp.len() == p.len() && ws.rq.len() == q.len() {
+        return false; // the LP saw both polygons whole
+    }
+    let (tp, tq) = (ws.rp[t.a] as usize, ws.rq[t.b] as usize);
+    // P lies on the right of the line, Q on the left: P's far side is the left.
+    far_chain(k, p, t.start, t.end, Orientation::Ccw, tp, &mut ws.cp);
+    far_chain(k, q, t.start, t.end, Orientation::Cw, tq, &mut ws.cq);
+    let ClmWorkspace {
+        rp,
+        rq,
+        cp,
+        cq,
+        chain,
+        lp,
+        ..
+    } = ws;
+    against_chain(k, p, rp, q, cq, chain, rng, lp) || against_chain(k, q, rq, p, cp, chain, rng, lp)
+}
+
+/// Whether polygon `x` (with sample `rx`) meets CH(`cy`), a chain of polygon `y`.
+#[allow(clippy::too_many_arguments)]
+fn against_chain<K: Kernel, R: Rng + ?Sized>(
+    k: K,
+    x: &LinkedPolygon,
+    rx: &[u32],
+    y: &LinkedPolygon,
+    cy: &[u32],
+    chain: &mut Vec<u32>,
+    rng: &mut R,
+    lp: &mut LpWorkspace,
+) -> bool {
+    let sample = ArenaPoints {
+        polygon: x,
+        positions: rx,
+    };
+    let far = ArenaPoints {
+        polygon: y,
+        positions: cy,
+    };
+    let t = match separating_line(k, &sample, &far, rng, lp) {
+        Ok(Separation::Separated(t)) => t,
+        _ => return true,
+    };
+    if rx.len() == x.len() {
+        return false; // the sample is all of x: the LP compared x itself with CH(cy)
+    }
+    far_chain(k, x, t.start, t.end, Orientation::Ccw, rx[t.a] as usize, chain);
+    let near = ArenaPoints {
+        polygon: x,
+        positions: chain,
+    };
+    !matches!(
+        separating_line(k, &near, &far, rng, lp),
+        Ok(Separation::Separated(_))
+    )
+}
+
+/// The positions of the run of `poly`'s vertices strictly on the `far` side of the
+/// directed line (s, e), walked from the tangent vertex at position `t` (on the line,
+/// not on the far side), including the first non-far vertex at both ends; or
+/// (prev t, t, next t) when neither neighbour of t is on the far side.
+fn far_chain<K: Kernel>(
+    k: K,
+    poly: &LinkedPolygon,
+    s: Point,
+    e: Point,
+    far: Orientation,
+    t: usize,
+    out: &mut Vec<u32>,
+) {
+    out.clear();
+    let n = poly.len();
+    let is_far = |pos: usize| k.orient(s, e, poly.point_at(pos)) == far;
+    let (next, prev) = (poly.next_at(t), poly.prev_at(t));
+    let step: fn(&LinkedPolygon, usize) -> usize = if is_far(next) {
+        LinkedPolygon::next_at
+    } else if is_far(prev) {
+        LinkedPolygon::prev_at
+    } else {
+        out.extend([prev as u32, t as u32, next as u32]);
+        return;
+    };
+    out.push(t as u32);
+    let mut v = step(poly, t);
+    // At most n − 1 further vertices; the cap also bounds walks under an inconsistent kernel.
+    for _ in 1..n {
+        out.push(v as u32);
+        if !is_far(v) {
+            break;
+        }
+        v = step(poly, v);
+        if v == t {
+            break;
+        }
+    }
+}
