@@ -57,7 +57,8 @@
 //! processed in a uniformly random order drawn from the caller's RNG (Seidel's
 //! backwards analysis: the i-th constraint changes the optimum with probability at
 //! most 2/i and then costs O(i)). Worst case (a very unlucky order) O((|A| + |B|)²).
-//! Memory: one `u32` per point in the reusable [`LpWorkspace`]; nothing is allocated
+//! Memory: 24 bytes per point (the points are copied once into the reusable
+//! [`LpWorkspace`], so the passes read contiguous memory); nothing is allocated
 //! once the workspace has grown to the largest input.
 //!
 //! # Degeneracies

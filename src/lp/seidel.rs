@@ -107,11 +107,12 @@ impl fmt::Display for LpError {
 
 impl std::error::Error for LpError {}
 
-/// Scratch memory for [`separating_line`]: the random constraint order. Reuse it across
+/// Scratch memory for [`separating_line`]: the points, copied once and shuffled in place
+/// (24 bytes per point). Reuse it across
 /// calls so the LP allocates nothing in the steady state.
 #[derive(Clone, Debug, Default)]
 pub struct LpWorkspace {
-    order: Vec<u32>,
+    items: Vec<Item>,
     /// Constraints examined (violation tests and one-dimensional steps) since creation:
     /// the LP's work, for experiments.
     pub work: u64,
@@ -188,22 +189,20 @@ where
     if a.len() >= B_BIT as usize || b.len() >= B_BIT as usize {
         return Err(LpError::TooLarge);
     }
-    let lp = Lp { k: kernel, a, b };
-    Ok(match lp.solve(rng, workspace) {
+    list_items(a.len(), b.len(), workspace);
+    let na = a.len();
+    let src = Source { a, b };
+    let LpWorkspace { items, work, redone } = workspace;
+    Ok(match solve(kernel, &src, items, na, rng, work) {
         Some(s) => s,
         // Only an inconsistent (fast) kernel gets here: redo it exactly.
         None => {
-            workspace.redone += 1;
-            let exact = Lp { k: Exact, a, b };
-            exact.solve(rng, workspace).unwrap_or(Separation::Intersecting)
+            *redone += 1;
+            // `solve` reordered the items: restore A-first order by origin.
+            items.sort_unstable_by_key(|it| it.enc);
+            solve(Exact, &src, items, na, rng, work).unwrap_or(Separation::Intersecting)
         }
     })
-}
-
-struct Lp<'s, K, A: ?Sized, B: ?Sized> {
-    k: K,
-    a: &'s A,
-    b: &'s B,
 }
 
 /// A directed line through two input points.
@@ -215,8 +214,8 @@ struct Line {
 
 /// The outcome of a one-dimensional step.
 enum Step {
-    /// The new optimum, tight on the violating point and on `partner` (an encoded index).
-    Line(Line, u32),
+    /// The new optimum, tight on the violating point and on `partner`.
+    Line(Line, Item),
     /// The constraints seen so far admit no separator: the hulls intersect.
     Infeasible,
     /// The kernel contradicted itself (fast kernel only).
@@ -225,285 +224,369 @@ enum Step {
 
 /// The outcome of the incremental loop.
 enum StepOut {
-    Line(Line, u32, u32),
+    Line {
+        line: Line,
+        ta: u32,
+        tb: u32,
+        on_line: OnLine,
+        last_change: usize,
+    },
     Infeasible,
     Inconsistent,
 }
 
-/// A bound on the slope from the line through the violating point and an earlier point:
-/// its direction (normalised to point into H) and whether the earlier point belongs to
-/// the other set.
-#[derive(Clone, Copy)]
-struct Bound {
-    from: Point,
-    to: Point,
-    q: u32,
-    opposite: bool,
+/// A point copied into the workspace with its origin: index in A, or index in B | `B_BIT`.
+#[derive(Clone, Copy, Debug, Default)]
+struct Item {
+    p: Point,
+    enc: u32,
+    /// Whether `p` has been read from the input yet.
+    loaded: bool,
 }
 
-impl<K: Kernel, A: PointSet + ?Sized, B: PointSet + ?Sized> Lp<'_, K, A, B> {
+/// Lists A and B in `ws.items` (A first) without reading their points yet: each point is
+/// copied into its item when the LP first reaches it, so the repeated passes read
+/// contiguous memory, and an LP that stops early (intersecting hulls are usually found
+/// within a few dozen points) never touches the rest of the input.
+fn list_items(na: usize, nb: usize, ws: &mut LpWorkspace) {
+    ws.items.clear();
+    ws.items.reserve(na + nb);
+    let blank = Point::new(0.0, 0.0);
+    ws.items.extend((0..na as u32).map(|i| Item {
+        p: blank,
+        enc: i,
+        loaded: false,
+    }));
+    ws.items.extend((0..nb as u32).map(|j| Item {
+        p: blank,
+        enc: j | B_BIT,
+        loaded: false,
+    }));
+}
+
+/// Reads items' points from the two input sets on first use.
+struct Source<'s, A: ?Sized, B: ?Sized> {
+    a: &'s A,
+    b: &'s B,
+}
+
+impl<A: PointSet + ?Sized, B: PointSet + ?Sized> Source<'_, A, B> {
     #[inline]
-    fn point(&self, enc: u32) -> Point {
-        if enc & B_BIT == 0 {
-            self.a.point(enc as usize)
-        } else {
-            self.b.point((enc & !B_BIT) as usize)
-        }
-    }
-
-    /// `None` when a final certification fails (inconsistent kernel).
-    fn solve<R: Rng + ?Sized>(&self, rng: &mut R, ws: &mut LpWorkspace) -> Option<Separation> {
-        let k = self.k;
-        let (a0, b0) = (self.a.point(0), self.b.point(0));
-        if a0 == b0 {
-            return Some(Separation::Intersecting);
-        }
-        // x′(q) − x′(p) > 0  ⟺  d₀ × (q − p) < 0.
-        let x_less = |p: Point, q: Point| k.cross(a0, b0, p, q) == Orientation::Cw;
-        let mut il = 0;
-        for i in 1..self.a.len() {
-            if x_less(self.a.point(i), self.a.point(il)) {
-                il = i;
-            }
-        }
-        let mut jr = 0;
-        for j in 1..self.b.len() {
-            if x_less(self.b.point(jr), self.b.point(j)) {
-                jr = j;
-            }
-        }
-        ws.work += (self.a.len() + self.b.len()) as u64;
-        let (al, br) = (self.a.point(il), self.b.point(jr));
-        let (line, ta, tb) = if !x_less(al, br) {
-            // No point of A is x′-left of a point of B: the line through a₀ and b₀
-            // (parallel to d₀) separates.
-            (Line { s: a0, e: b0 }, 0, 0)
-        } else {
-            match self.incremental(
-                Line { s: al, e: br },
-                il as u32,
-                jr as u32 | B_BIT,
-                a0,
-                b0,
-                rng,
-                ws,
-            ) {
-                StepOut::Line(l, ta, tb) => (l, ta as usize, tb as usize),
-                StepOut::Infeasible => return Some(Separation::Intersecting),
-                StepOut::Inconsistent => return None,
-            }
-        };
-        self.certify(line, ta, tb, ws)
-    }
-
-    /// Seidel's loop over a random order, starting from the optimum of the two bounding
-    /// constraints (A[il] and B[jr], encoded). Returns the final line and the indices of
-    /// its tangent points in A and in B.
-    #[allow(clippy::too_many_arguments)]
-    fn incremental<R: Rng + ?Sized>(
-        &self,
-        mut line: Line,
-        il: u32,
-        jr: u32,
-        a0: Point,
-        b0: Point,
-        rng: &mut R,
-        ws: &mut LpWorkspace,
-    ) -> StepOut {
-        let k = self.k;
-        let order = &mut ws.order;
-        order.clear();
-        order.push(il);
-        order.push(jr);
-        order.extend((0..self.a.len() as u32).filter(|&i| i != il));
-        order.extend((0..self.b.len() as u32).map(|j| j | B_BIT).filter(|&j| j != jr));
-        for i in (3..order.len()).rev() {
-            let j = rng.random_range(2..=i);
-            order.swap(i, j);
-        }
-        let (mut ta, mut tb) = (il, jr & !B_BIT);
-        let mut work = 0u64;
-        for t in 2..order.len() {
-            let enc = order[t];
-            let p = self.point(enc);
-            let in_b = enc & B_BIT != 0;
-            let o = k.orient(line.s, line.e, p);
-            work += 1;
-            let violated = if in_b {
-                o == Orientation::Cw
+    fn load(&self, it: &mut Item) -> Point {
+        if !it.loaded {
+            it.p = if it.enc & B_BIT == 0 {
+                self.a.point(it.enc as usize)
             } else {
-                o == Orientation::Ccw
+                self.b.point((it.enc & !B_BIT) as usize)
             };
-            if !violated {
-                continue;
-            }
-            work += t as u64;
-            match self.step(p, in_b, &order[..t], a0, b0) {
-                Step::Line(l, partner) => {
-                    line = l;
-                    if in_b {
-                        tb = enc & !B_BIT;
-                        if partner & B_BIT == 0 {
-                            ta = partner;
-                        }
-                    } else {
-                        ta = enc;
-                        if partner & B_BIT != 0 {
-                            tb = partner & !B_BIT;
-                        }
-                    }
-                }
-                Step::Infeasible => {
-                    ws.work += work;
-                    return StepOut::Infeasible;
-                }
-                Step::Inconsistent => {
-                    ws.work += work;
-                    return StepOut::Inconsistent;
-                }
-            }
+            it.loaded = true;
         }
-        ws.work += work;
-        StepOut::Line(line, ta, tb)
+        it.p
+    }
+}
+
+/// The LP on `items` (A's points first, `na` of them, then B's). Reorders `items`.
+/// `None` when the final certification fails (inconsistent kernel).
+fn solve<K: Kernel, R: Rng + ?Sized, A: PointSet + ?Sized, B: PointSet + ?Sized>(
+    k: K,
+    src: &Source<'_, A, B>,
+    items: &mut [Item],
+    na: usize,
+    rng: &mut R,
+    work: &mut u64,
+) -> Option<Separation> {
+    let (a0, b0) = (src.load(&mut items[0]), src.load(&mut items[na]));
+    if a0 == b0 {
+        return Some(Separation::Intersecting);
+    }
+    // x′(q) − x′(p) > 0  ⟺  d₀ × (q − p) < 0.
+    let x_less = |p: Point, q: Point| k.cross(a0, b0, p, q) == Orientation::Cw;
+    // Bounding constraints: any a ∈ A strictly x′-left of any b ∈ B bound the objective.
+    // Scan A and B interleaved, keeping A's x′-minimum and B's x′-maximum so far, and stop
+    // at the first such pair (usually within a few points). Only when none exists is the
+    // whole input scanned: then the line through a₀ and b₀ separates.
+    let nb = items.len() - na;
+    let (mut il, mut jr) = (0, na);
+    let mut bounded = false;
+    for i in 0..na.max(nb) {
+        if i < na && x_less(src.load(&mut items[i]), items[il].p) {
+            il = i;
+        }
+        if i < nb && x_less(items[jr].p, src.load(&mut items[na + i])) {
+            jr = na + i;
+        }
+        *work += 1;
+        if x_less(items[il].p, items[jr].p) {
+            bounded = true;
+            break;
+        }
+    }
+    let (al, br) = (items[il], items[jr]);
+    let (line, ta, tb, on_line, checked) = if !bounded {
+        // No point of A is x′-left of a point of B: the line through a₀ and b₀
+        // (parallel to d₀) separates.
+        let (pa, pb) = (items[0].p, items[na].p);
+        (
+            Line { s: a0, e: b0 },
+            items[0].enc,
+            items[na].enc,
+            OnLine::at(pa, pb),
+            items.len(),
+        )
+    } else {
+        // The bounding constraints first, then a uniformly random order of the rest.
+        items.swap(0, il);
+        items.swap(1, jr);
+        for i in (3..items.len()).rev() {
+            items.swap(i, rng.random_range(2..=i));
+        }
+        match incremental(k, src, Line { s: al.p, e: br.p }, al, br, a0, b0, items, work) {
+            StepOut::Line {
+                line,
+                ta,
+                tb,
+                on_line,
+                last_change,
+            } => (line, ta, tb, on_line, last_change + 1),
+            StepOut::Infeasible => return Some(Separation::Intersecting),
+            StepOut::Inconsistent => return None,
+        }
+    };
+    certify(k, line, ta, tb, on_line, &items[..checked], work)
+}
+
+/// The extreme points, along the current line, of each set's points found on it.
+#[derive(Clone, Copy, Debug)]
+struct OnLine {
+    a_min: Point,
+    a_max: Point,
+    b_min: Point,
+    b_max: Point,
+}
+
+impl OnLine {
+    fn at(pa: Point, pb: Point) -> Self {
+        OnLine {
+            a_min: pa,
+            a_max: pa,
+            b_min: pb,
+            b_max: pb,
+        }
     }
 
-    /// The one-dimensional LP: the most counter-clockwise direction in H of a line through
-    /// `p` that keeps every earlier point on its side.
-    fn step(&self, p: Point, p_in_b: bool, earlier: &[u32], a0: Point, b0: Point) -> Step {
-        let k = self.k;
-        let mut up: Option<Bound> = None;
-        let mut lo: Option<Bound> = None;
-        for &enc in earlier {
-            let q = self.point(enc);
-            let q_in_b = enc & B_BIT != 0;
-            let opposite = q_in_b != p_in_b;
-            if q == p {
-                if opposite {
-                    return Step::Infeasible; // a point of both sets
-                }
-                continue;
-            }
-            // Sign of x′(q − p).
-            let sx = match k.cross(a0, b0, p, q) {
-                Orientation::Cw => Sign::Positive,
-                Orientation::Ccw => Sign::Negative,
-                Orientation::Collinear => Sign::Zero,
-            };
-            // u × (q − p) must be ≥ 0 for q in B, ≤ 0 for q in A; with u = (1, s) that is
-            // y′(q − p) − s·x′(q − p).
-            let is_upper = match sx {
-                Sign::Zero => {
-                    let sy = k.dot(a0, b0, p, q);
-                    let ok = if q_in_b {
-                        sy != Sign::Negative
-                    } else {
-                        sy != Sign::Positive
-                    };
-                    if ok {
-                        continue;
-                    }
-                    return Step::Infeasible;
-                }
-                Sign::Positive => q_in_b,
-                Sign::Negative => !q_in_b,
-            };
-            let (from, to) = if sx == Sign::Positive { (p, q) } else { (q, p) };
-            let cand = Bound {
-                from,
-                to,
-                q: enc,
-                opposite,
-            };
-            if is_upper {
-                up = Some(match up {
-                    None => cand,
-                    Some(best) => match k.cross(best.from, best.to, from, to) {
-                        // cand's slope is smaller: a tighter upper bound.
-                        Orientation::Cw => cand,
-                        Orientation::Collinear if opposite && !best.opposite => cand,
-                        _ => best,
-                    },
-                });
-            } else {
-                lo = Some(match lo {
-                    None => cand,
-                    Some(best) => match k.cross(best.from, best.to, from, to) {
-                        Orientation::Ccw => cand,
-                        Orientation::Collinear if opposite && !best.opposite => cand,
-                        _ => best,
-                    },
-                });
-            }
-        }
-        let Some(up) = up else {
-            // The bounding constraints always give an upper bound; only an inconsistent
-            // kernel loses it.
-            return Step::Inconsistent;
-        };
-        let mut partner = up.q;
-        if let Some(lo) = lo {
-            match k.cross(lo.from, lo.to, up.from, up.to) {
-                Orientation::Cw => return Step::Infeasible,
-                Orientation::Collinear if !up.opposite && lo.opposite => partner = lo.q,
-                _ => {}
-            }
-        }
-        Step::Line(Line { s: up.from, e: up.to }, partner)
-    }
-
-    /// Checks every point against the line and compares the parts of the two sets on it.
-    fn certify(&self, line: Line, ta: usize, tb: usize, ws: &mut LpWorkspace) -> Option<Separation> {
-        let k = self.k;
-        let Line { s, e } = line;
-        // Extremes along the line (by u · (x − y)) of the points on it.
-        let (mut a_min, mut a_max) = (self.a.point(ta), self.a.point(ta));
-        for i in 0..self.a.len() {
-            let x = self.a.point(i);
-            match k.orient(s, e, x) {
-                Orientation::Ccw => return None,
-                Orientation::Cw => {}
-                Orientation::Collinear => {
-                    if k.dot(s, e, a_min, x) == Sign::Negative {
-                        a_min = x;
-                    } else if k.dot(s, e, a_max, x) == Sign::Positive {
-                        a_max = x;
-                    }
-                }
-            }
-        }
-        let (mut b_min, mut b_max) = (self.b.point(tb), self.b.point(tb));
-        for j in 0..self.b.len() {
-            let x = self.b.point(j);
-            match k.orient(s, e, x) {
-                Orientation::Cw => return None,
-                Orientation::Ccw => {}
-                Orientation::Collinear => {
-                    if k.dot(s, e, b_min, x) == Sign::Negative {
-                        b_min = x;
-                    } else if k.dot(s, e, b_max, x) == Sign::Positive {
-                        b_max = x;
-                    }
-                }
-            }
-        }
-        ws.work += (self.a.len() + self.b.len()) as u64;
-        // Tangent points must be on the line (fails only under an inconsistent kernel).
-        if k.orient(s, e, self.a.point(ta)) != Orientation::Collinear
-            || k.orient(s, e, self.b.point(tb)) != Orientation::Collinear
-        {
-            return None;
-        }
-        let overlap =
-            k.dot(s, e, a_min, b_max) != Sign::Negative && k.dot(s, e, b_min, a_max) != Sign::Negative;
-        Some(if overlap {
-            Separation::Intersecting
+    /// Adds `x`, a point on the directed line (s, e), to its set's extremes.
+    #[inline]
+    fn add<K: Kernel>(&mut self, k: K, s: Point, e: Point, x: Point, in_b: bool) {
+        let (min, max) = if in_b {
+            (&mut self.b_min, &mut self.b_max)
         } else {
-            Separation::Separated(Bitangent {
-                start: s,
-                end: e,
-                a: ta,
-                b: tb,
-            })
+            (&mut self.a_min, &mut self.a_max)
+        };
+        if k.dot(s, e, *min, x) == Sign::Negative {
+            *min = x;
+        } else if k.dot(s, e, *max, x) == Sign::Positive {
+            *max = x;
+        }
+    }
+}
+
+/// Seidel's loop: `items[0]` and `items[1]` are the bounding constraints (`al` ∈ A
+/// strictly x′-left of `br` ∈ B), whose optimum is `line`; the rest is in random order.
+/// Returns the final line, its encoded tangent points, the index of the last point that
+/// changed the line, and the on-line extremes of the points after it (each of which was
+/// tested against the final line).
+#[allow(clippy::too_many_arguments)]
+fn incremental<K: Kernel, A: PointSet + ?Sized, B: PointSet + ?Sized>(
+    k: K,
+    src: &Source<'_, A, B>,
+    mut line: Line,
+    al: Item,
+    br: Item,
+    a0: Point,
+    b0: Point,
+    items: &mut [Item],
+    work: &mut u64,
+) -> StepOut {
+    let (mut ta, mut tb) = ((al.enc, al.p), (br.enc, br.p));
+    let mut on_line = OnLine::at(al.p, br.p);
+    let mut last_change = 1;
+    let mut w = 0u64;
+    for t in 2..items.len() {
+        let p = src.load(&mut items[t]);
+        let enc = items[t].enc;
+        let in_b = enc & B_BIT != 0;
+        let o = k.orient(line.s, line.e, p);
+        w += 1;
+        let violated = if in_b {
+            o == Orientation::Cw
+        } else {
+            o == Orientation::Ccw
+        };
+        if !violated {
+            if o == Orientation::Collinear {
+                on_line.add(k, line.s, line.e, p, in_b);
+            }
+            continue;
+        }
+        w += t as u64;
+        match step(k, p, in_b, &items[..t], a0, b0) {
+            Step::Line(l, partner) => {
+                line = l;
+                let partner_in_b = partner.enc & B_BIT != 0;
+                if in_b {
+                    tb = (enc, p);
+                    if !partner_in_b {
+                        ta = (partner.enc, partner.p);
+                    }
+                } else {
+                    ta = (enc, p);
+                    if partner_in_b {
+                        tb = (partner.enc, partner.p);
+                    }
+                }
+                on_line = OnLine::at(ta.1, tb.1);
+                last_change = t;
+            }
+            Step::Infeasible => {
+                *work += w;
+                return StepOut::Infeasible;
+            }
+            Step::Inconsistent => {
+                *work += w;
+                return StepOut::Inconsistent;
+            }
+        }
+    }
+    *work += w;
+    StepOut::Line {
+        line,
+        ta: ta.0,
+        tb: tb.0,
+        on_line,
+        last_change,
+    }
+}
+
+/// The one-dimensional LP: the most counter-clockwise direction in H of a line through
+/// `p` that keeps every earlier point on its side.
+fn step<K: Kernel>(k: K, p: Point, p_in_b: bool, earlier: &[Item], a0: Point, b0: Point) -> Step {
+    // The tightest bounds so far, as (index into `earlier`, direction from → to); plain
+    // locals rather than an `Option<struct>` keep this hot loop free of memory traffic.
+    const NONE: usize = usize::MAX;
+    let (mut up, mut up_from, mut up_to, mut up_opp) = (NONE, p, p, false);
+    let (mut lo, mut lo_from, mut lo_to, mut lo_opp) = (NONE, p, p, false);
+    for (i, &Item { p: q, enc, .. }) in earlier.iter().enumerate() {
+        let q_in_b = enc & B_BIT != 0;
+        let opposite = q_in_b != p_in_b;
+        if q == p {
+            if opposite {
+                return Step::Infeasible; // a point of both sets
+            }
+            continue;
+        }
+        // Sign of x′(q − p).
+        let sx = k.cross(a0, b0, p, q);
+        // u × (q − p) must be ≥ 0 for q in B, ≤ 0 for q in A; with u = (1, s) that is
+        // y′(q − p) − s·x′(q − p).
+        let is_upper = match sx {
+            Orientation::Collinear => {
+                let sy = k.dot(a0, b0, p, q);
+                let ok = if q_in_b {
+                    sy != Sign::Negative
+                } else {
+                    sy != Sign::Positive
+                };
+                if ok {
+                    continue;
+                }
+                return Step::Infeasible;
+            }
+            // x′(q − p) > 0
+            Orientation::Cw => q_in_b,
+            Orientation::Ccw => !q_in_b,
+        };
+        let (from, to) = if sx == Orientation::Cw { (p, q) } else { (q, p) };
+        if is_upper {
+            let take = up == NONE
+                || match k.cross(up_from, up_to, from, to) {
+                    // A smaller slope: a tighter upper bound.
+                    Orientation::Cw => true,
+                    Orientation::Collinear => opposite && !up_opp,
+                    Orientation::Ccw => false,
+                };
+            if take {
+                (up, up_from, up_to, up_opp) = (i, from, to, opposite);
+            }
+        } else {
+            let take = lo == NONE
+                || match k.cross(lo_from, lo_to, from, to) {
+                    Orientation::Ccw => true,
+                    Orientation::Collinear => opposite && !lo_opp,
+                    Orientation::Cw => false,
+                };
+            if take {
+                (lo, lo_from, lo_to, lo_opp) = (i, from, to, opposite);
+            }
+        }
+    }
+    if up == NONE {
+        // The bounding constraints always give an upper bound; only an inconsistent
+        // kernel loses it.
+        return Step::Inconsistent;
+    }
+    let mut partner = earlier[up];
+    if lo != NONE {
+        match k.cross(lo_from, lo_to, up_from, up_to) {
+            Orientation::Cw => return Step::Infeasible,
+            Orientation::Collinear if !up_opp && lo_opp => partner = earlier[lo],
+            _ => {}
+        }
+    }
+    Step::Line(Line { s: up_from, e: up_to }, partner)
+}
+
+/// Checks `items` against the line (the points not yet tested against it), adds those
+/// on it to `on_line`, and compares the parts of the two sets on the line.
+fn certify<K: Kernel>(
+    k: K,
+    line: Line,
+    ta: u32,
+    tb: u32,
+    mut on_line: OnLine,
+    items: &[Item],
+    work: &mut u64,
+) -> Option<Separation> {
+    let Line { s, e } = line;
+    // The tangent points are on the line (this fails only under an inconsistent kernel).
+    if k.orient(s, e, on_line.a_min) != Orientation::Collinear
+        || k.orient(s, e, on_line.b_min) != Orientation::Collinear
+    {
+        return None;
+    }
+    for &Item { p: x, enc, .. } in items {
+        let in_b = enc & B_BIT != 0;
+        match (k.orient(s, e, x), in_b) {
+            (Orientation::Ccw, false) | (Orientation::Cw, true) => return None,
+            (Orientation::Collinear, _) => on_line.add(k, s, e, x, in_b),
+            _ => {}
+        }
+    }
+    *work += items.len() as u64;
+    let OnLine {
+        a_min,
+        a_max,
+        b_min,
+        b_max,
+    } = on_line;
+    let overlap = k.dot(s, e, a_min, b_max) != Sign::Negative && k.dot(s, e, b_min, a_max) != Sign::Negative;
+    Some(if overlap {
+        Separation::Intersecting
+    } else {
+        Separation::Separated(Bitangent {
+            start: s,
+            end: e,
+            a: ta as usize,
+            b: (tb & !B_BIT) as usize,
         })
-    }
+    })
 }
