@@ -23,6 +23,10 @@
 //! 5. P against CH(C_Q): the LP on R_P and C_Q; intersecting hulls mean P ∩ Q ≠ ∅. Else
 //!    its line L′ gives the chain C′_P of P beyond L′ (step 3 again), and P ∩ CH(C_Q) ≠ ∅
 //!    iff CH(C′_P) ∩ CH(C_Q) ≠ ∅, one more LP. Q against CH(C_P) symmetrically.
+//!    Order of work: both sample-against-chain LPs first (either can end the query),
+//!    then C′_P and C′_Q walked together, then the two chain-against-chain LPs. Chain
+//!    walks always run in pairs, interleaved, so that their cache misses (each step is
+//!    a dependent load at a random arena position) overlap.
 //!
 //! At most five LPs on O(r + n/r) points each, so the expected time is O(√n) for
 //! r = Θ(√n). The constant c = [`Clm::SAMPLE_FACTOR`] was chosen by measurement
@@ -96,6 +100,7 @@ pub struct ClmWorkspace {
     cp: Vec<u32>,
     cq: Vec<u32>,
     chain: Vec<u32>,
+    chain2: Vec<u32>,
     lp: LpWorkspace,
     walked: u64,
 }
@@ -211,9 +216,15 @@ fn clm<K: Kernel, R: Rng + ?Sized>(
         return false; // the LP saw both polygons whole
     }
     let (tp, tq) = (ws.rp[t.a] as usize, ws.rq[t.b] as usize);
-    // P lies on the right of the line, Q on the left: P's far side is the left.
-    far_chain(k, p, t.start, t.end, Orientation::Ccw, tp, &mut ws.cp);
-    far_chain(k, q, t.start, t.end, Orientation::Cw, tq, &mut ws.cq);
+    // P lies on the right of the line, Q on the left: P's far side is the left. The two
+    // walks are interleaved so that their cache misses overlap.
+    far_chains(
+        k,
+        Walk::new(p, t.start, t.end, Orientation::Ccw, tp),
+        &mut ws.cp,
+        Walk::new(q, t.start, t.end, Orientation::Cw, tq),
+        &mut ws.cq,
+    );
     ws.walked += (ws.cp.len() + ws.cq.len()) as u64;
     let ClmWorkspace {
         rp,
@@ -221,90 +232,192 @@ fn clm<K: Kernel, R: Rng + ?Sized>(
         cp,
         cq,
         chain,
+        chain2,
         lp,
         walked,
         ..
     } = ws;
-    against_chain(k, p, rp, q, cq, chain, rng, lp, walked)
-        || against_chain(k, q, rq, p, cp, chain, rng, lp, walked)
+    // P against CH(C_Q) and Q against CH(C_P): first each sample against the other's
+    // chain (an intersection there ends the query), then both second chains, walked
+    // together, against the first chains.
+    let lines = [(&*rp, p, &*cq, q), (&*rq, q, &*cp, p)].map(|(rx, x, cy, y)| {
+        let sample = ArenaPoints {
+            polygon: x,
+            positions: rx,
+        };
+        let far = ArenaPoints {
+            polygon: y,
+            positions: cy,
+        };
+        match separating_line(k, &sample, &far, rng, lp) {
+            Ok(Separation::Separated(t)) => Some(t),
+            _ => None,
+        }
+    });
+    let [Some(lp_line), Some(lq_line)] = lines else {
+        return true;
+    };
+    // A sample that is its whole polygon has decided its sub-test already.
+    let p_open = rp.len() < p.len();
+    let q_open = rq.len() < q.len();
+    far_chains(
+        k,
+        Walk::new(
+            p,
+            lp_line.start,
+            lp_line.end,
+            Orientation::Ccw,
+            rp[lp_line.a] as usize,
+        )
+        .only_if(p_open),
+        chain,
+        Walk::new(
+            q,
+            lq_line.start,
+            lq_line.end,
+            Orientation::Ccw,
+            rq[lq_line.a] as usize,
+        )
+        .only_if(q_open),
+        chain2,
+    );
+    *walked += (chain.len() + chain2.len()) as u64;
+    let meets = |near: &[u32],
+                 x: &LinkedPolygon,
+                 far: &[u32],
+                 y: &LinkedPolygon,
+                 rng: &mut R,
+                 lp: &mut LpWorkspace| {
+        let near = ArenaPoints {
+            polygon: x,
+            positions: near,
+        };
+        let far = ArenaPoints {
+            polygon: y,
+            positions: far,
+        };
+        !matches!(
+            separating_line(k, &near, &far, rng, lp),
+            Ok(Separation::Separated(_))
+        )
+    };
+    (p_open && meets(chain, p, cq, q, rng, lp)) || (q_open && meets(chain2, q, cp, p, rng, lp))
 }
 
-/// Whether polygon `x` (with sample `rx`) meets CH(`cy`), a chain of polygon `y`.
-#[allow(clippy::too_many_arguments)]
-fn against_chain<K: Kernel, R: Rng + ?Sized>(
-    k: K,
-    x: &LinkedPolygon,
-    rx: &[u32],
-    y: &LinkedPolygon,
-    cy: &[u32],
-    chain: &mut Vec<u32>,
-    rng: &mut R,
-    lp: &mut LpWorkspace,
-    walked: &mut u64,
-) -> bool {
-    let sample = ArenaPoints {
-        polygon: x,
-        positions: rx,
-    };
-    let far = ArenaPoints {
-        polygon: y,
-        positions: cy,
-    };
-    let t = match separating_line(k, &sample, &far, rng, lp) {
-        Ok(Separation::Separated(t)) => t,
-        _ => return true,
-    };
-    if rx.len() == x.len() {
-        return false; // the sample is all of x: the LP compared x itself with CH(cy)
-    }
-    far_chain(k, x, t.start, t.end, Orientation::Ccw, rx[t.a] as usize, chain);
-    *walked += chain.len() as u64;
-    let near = ArenaPoints {
-        polygon: x,
-        positions: chain,
-    };
-    !matches!(
-        separating_line(k, &near, &far, rng, lp),
-        Ok(Separation::Separated(_))
-    )
-}
-
-/// The positions of the run of `poly`'s vertices strictly on the `far` side of the
-/// directed line (s, e), walked from the tangent vertex at position `t` (on the line,
-/// not on the far side), including the first non-far vertex at both ends; or
-/// (prev t, t, next t) when neither neighbour of t is on the far side.
-fn far_chain<K: Kernel>(
-    k: K,
-    poly: &LinkedPolygon,
+/// One chain walk (see [`far_chains`]): from the tangent vertex at position `t` of
+/// `poly`, along the side where the neighbour lies strictly on the `far` side of the
+/// directed line (s, e).
+struct Walk<'a> {
+    poly: &'a LinkedPolygon,
     s: Point,
     e: Point,
     far: Orientation,
     t: usize,
-    out: &mut Vec<u32>,
-) {
-    out.clear();
-    let n = poly.len();
-    let is_far = |pos: usize| k.orient(s, e, poly.point_at(pos)) == far;
-    let (next, prev) = (poly.next_at(t), poly.prev_at(t));
-    let step: fn(&LinkedPolygon, usize) -> usize = if is_far(next) {
-        LinkedPolygon::next_at
-    } else if is_far(prev) {
-        LinkedPolygon::prev_at
-    } else {
-        out.extend([prev as u32, t as u32, next as u32]);
-        return;
-    };
-    out.push(t as u32);
-    let mut v = step(poly, t);
-    // At most n − 1 further vertices; the cap also bounds walks under an inconsistent kernel.
-    for _ in 1..n {
-        out.push(v as u32);
-        if !is_far(v) {
-            break;
+    enabled: bool,
+}
+
+impl<'a> Walk<'a> {
+    fn new(poly: &'a LinkedPolygon, s: Point, e: Point, far: Orientation, t: usize) -> Self {
+        Walk {
+            poly,
+            s,
+            e,
+            far,
+            t,
+            enabled: true,
         }
-        v = step(poly, v);
-        if v == t {
-            break;
+    }
+
+    fn only_if(mut self, enabled: bool) -> Self {
+        self.enabled = enabled;
+        self
+    }
+}
+
+/// The state of a walk in progress.
+struct Cursor {
+    v: usize,
+    forward: bool,
+    steps_left: usize,
+    done: bool,
+}
+
+impl Walk<'_> {
+    #[inline]
+    fn is_far<K: Kernel>(&self, k: K, pos: usize) -> bool {
+        k.orient(self.s, self.e, self.poly.point_at(pos)) == self.far
+    }
+
+    /// Starts the walk, writing its first vertices to `out`.
+    fn start<K: Kernel>(&self, k: K, out: &mut Vec<u32>) -> Cursor {
+        out.clear();
+        let done = Cursor {
+            v: 0,
+            forward: true,
+            steps_left: 0,
+            done: true,
+        };
+        if !self.enabled {
+            return done;
         }
+        let (poly, t) = (self.poly, self.t);
+        let (next, prev) = (poly.next_at(t), poly.prev_at(t));
+        let forward = if self.is_far(k, next) {
+            true
+        } else if self.is_far(k, prev) {
+            false
+        } else {
+            out.extend([prev as u32, t as u32, next as u32]);
+            return done;
+        };
+        out.push(t as u32);
+        Cursor {
+            v: if forward { next } else { prev },
+            forward,
+            // At most n − 1 further vertices; the cap also bounds walks under an
+            // inconsistent kernel.
+            steps_left: poly.len() - 1,
+            done: false,
+        }
+    }
+
+    /// One step: records the current vertex and moves on unless it closes the chain.
+    #[inline]
+    fn advance<K: Kernel>(&self, k: K, c: &mut Cursor, out: &mut Vec<u32>) {
+        out.push(c.v as u32);
+        c.steps_left -= 1;
+        if !self.is_far(k, c.v) || c.steps_left == 0 {
+            c.done = true;
+            return;
+        }
+        c.v = if c.forward {
+            self.poly.next_at(c.v)
+        } else {
+            self.poly.prev_at(c.v)
+        };
+        if c.v == self.t {
+            c.done = true;
+        }
+    }
+}
+
+/// Runs two chain walks in lockstep (their memory accesses overlap). Each writes to its
+/// `out` the positions of the run of `poly`'s vertices strictly on the `far` side of
+/// the directed line (s, e), walked from the tangent vertex at position `t` (on the
+/// line, not on the far side), including the first non-far vertex at both ends; or
+/// (prev t, t, next t) when neither neighbour of t is on the far side. A disabled walk
+/// leaves its `out` empty.
+fn far_chains<K: Kernel>(k: K, w1: Walk<'_>, out1: &mut Vec<u32>, w2: Walk<'_>, out2: &mut Vec<u32>) {
+    let mut c1 = w1.start(k, out1);
+    let mut c2 = w2.start(k, out2);
+    while !c1.done && !c2.done {
+        w1.advance(k, &mut c1, out1);
+        w2.advance(k, &mut c2, out2);
+    }
+    while !c1.done {
+        w1.advance(k, &mut c1, out1);
+    }
+    while !c2.done {
+        w2.advance(k, &mut c2, out2);
     }
 }

@@ -129,6 +129,9 @@ impl LpWorkspace {
 
 const B_BIT: u32 = 1 << 31;
 
+/// How far ahead of the incremental loop points are read from the input.
+const LOOKAHEAD: usize = 12;
+
 /// Decides whether CH(A) and CH(B) intersect and, if not, finds an inner common tangent.
 ///
 /// See the [module docs](crate::lp) for the formulation.
@@ -412,6 +415,10 @@ fn incremental<K: Kernel, A: PointSet + ?Sized, B: PointSet + ?Sized>(
     let mut last_change = 1;
     let mut w = 0u64;
     for t in 2..items.len() {
+        // Read a point a few items ahead: its cache miss overlaps with this iteration.
+        if let Some(ahead) = items.get_mut(t + LOOKAHEAD) {
+            src.load(ahead);
+        }
         let p = src.load(&mut items[t]);
         let enc = items[t].enc;
         let in_b = enc & B_BIT != 0;
