@@ -159,7 +159,7 @@ fn bench_factor(c: &mut Criterion) {
             } else {
                 "dis"
             };
-            for factor in [0.25, 0.5, 1.0, 2.0, 4.0] {
+            for factor in [0.5, 1.0, 1.5, 2.0, 3.0] {
                 let mut rng = SmallRng::seed_from_u64(SEED + 3);
                 let mut ws = ClmWorkspace::default();
                 let mut i = 0;

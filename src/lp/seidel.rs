@@ -215,6 +215,19 @@ struct Line {
     e: Point,
 }
 
+impl Line {
+    /// `orient(s, e, x)`, answering the points that define the line without the kernel:
+    /// exact zeros are the slowest case of an exact predicate, and each LP meets a few.
+    #[inline]
+    fn side<K: Kernel>(self, k: K, x: Point) -> Orientation {
+        if x == self.s || x == self.e {
+            Orientation::Collinear
+        } else {
+            k.orient(self.s, self.e, x)
+        }
+    }
+}
+
 /// The outcome of a one-dimensional step.
 enum Step {
     /// The new optimum, tight on the violating point and on `partner`.
@@ -311,7 +324,9 @@ fn solve<K: Kernel, R: Rng + ?Sized, A: PointSet + ?Sized, B: PointSet + ?Sized>
     let nb = items.len() - na;
     let (mut il, mut jr) = (0, na);
     let mut bounded = false;
-    for i in 0..na.max(nb) {
+    // i = 0 is (a₀, b₀) itself: equal x′, not bounding (and an exact zero, which is the
+    // slowest case of an exact predicate, so it is not evaluated).
+    for i in 1..na.max(nb) {
         if i < na && x_less(src.load(&mut items[i]), items[il].p) {
             il = i;
         }
@@ -385,6 +400,9 @@ impl OnLine {
         } else {
             (&mut self.a_min, &mut self.a_max)
         };
+        if x == *min || x == *max {
+            return; // known, and an exact zero would take the kernel's slow path
+        }
         if k.dot(s, e, *min, x) == Sign::Negative {
             *min = x;
         } else if k.dot(s, e, *max, x) == Sign::Positive {
@@ -422,7 +440,7 @@ fn incremental<K: Kernel, A: PointSet + ?Sized, B: PointSet + ?Sized>(
         let p = src.load(&mut items[t]);
         let enc = items[t].enc;
         let in_b = enc & B_BIT != 0;
-        let o = k.orient(line.s, line.e, p);
+        let o = line.side(k, p);
         w += 1;
         let violated = if in_b {
             o == Orientation::Cw
@@ -491,8 +509,12 @@ fn step<K: Kernel>(k: K, p: Point, p_in_b: bool, earlier: &[Item], a0: Point, b0
             }
             continue;
         }
-        // Sign of x′(q − p).
-        let sx = k.cross(a0, b0, p, q);
+        // Sign of x′(q − p); q − p = ±d₀ (p, q = a₀, b₀) is answered without the kernel.
+        let sx = if (p == a0 && q == b0) || (p == b0 && q == a0) {
+            Orientation::Collinear
+        } else {
+            k.cross(a0, b0, p, q)
+        };
         // u × (q − p) must be ≥ 0 for q in B, ≤ 0 for q in A; with u = (1, s) that is
         // y′(q − p) − s·x′(q − p).
         let is_upper = match sx {
