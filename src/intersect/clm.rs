@@ -83,7 +83,7 @@ pub struct Clm;
 
 impl Clm {
     /// The sample size is ⌈c·√n⌉ vertices per polygon of n vertices, with this c.
-    pub const SAMPLE_FACTOR: f64 = 2.0;
+    pub const SAMPLE_FACTOR: f64 = 1.0;
 }
 
 /// The same test with an explicit sample factor c (samples of ⌈c·√n⌉ vertices), for
