@@ -6,6 +6,7 @@ pub mod generate;
 pub mod intersect;
 pub mod jsonl;
 pub mod kernel;
+pub mod lp;
 pub mod polygon;
 
 pub use kernel::{Exact, Fast, Kernel, Orientation, Point, Precision, Sign};

@@ -13,19 +13,28 @@
 //! | [`Barba`] | arrays | O(log n + log m) | inner triangle of P against the edge hull of three edges of Q; halves one of them per step; uses one degree-4 predicate |
 //! | [`Dobkin`] | arrays | O(log n + log m) | top/bottom by binary search, then left chain against right chain twice by slope comparisons; orient/cross only |
 //! | [`ChazelleDobkin`] | arrays | O(log n + log m) | pivot, pencil of tangents, the two L chains halved by middle-edge slopes in a projective frame |
+//! | [`Clm`] | linked | expected O(√n + √m) | Chazelle–Liu–Magen: samples, a 2D LP, chains ([`crate::lp`]) |
+//! | [`Convert`] | linked | O(n + m) + array test | walk the lists into arrays, then an array algorithm |
 //!
 //! Each algorithm is a unit struct implementing [`ArrayIntersection`] and is listed
-//! once in [`Algorithm`], which the CLI, tests and benches iterate over.
+//! once in [`Algorithm`], which the CLI, tests and benches iterate over. Tests on
+//! [`LinkedPolygon`](crate::LinkedPolygon)s implement [`LinkedIntersection`]; through
+//! [`Algorithm::run`] they take array polygons, which are linked in a shuffled arena
+//! order (as the thesis's experiments do) with an RNG seeded by [`LINKED_RUN_SEED`].
 
 mod barba;
 mod chazelle_dobkin;
+mod clm;
 mod dobkin;
 mod linear;
+mod linked;
 
 pub use barba::Barba;
 pub use chazelle_dobkin::ChazelleDobkin;
+pub use clm::{Clm, ClmWithFactor, ClmWorkspace};
 pub use dobkin::Dobkin;
 pub use linear::{Linear, brute_force};
+pub use linked::{Convert, ConvertWorkspace, DEFAULT_QUERY_SEED, LinkedIntersection};
 
 use crate::kernel::{Exact, Fast, Kernel, Precision};
 use crate::polygon::ConvexPolygon;
@@ -87,15 +96,25 @@ pub enum Algorithm {
     Barba,
     Dobkin,
     ChazelleDobkin,
+    Clm,
+    Convert,
 }
 
 impl Algorithm {
     /// Every algorithm, in the order tables list them.
-    pub const ALL: &'static [Algorithm] = &[Algorithm::Linear, Algorithm::Barba, Algorithm::Dobkin, Algorithm::ChazelleDobkin];
+    pub const ALL: &'static [Algorithm] = &[
+        Algorithm::Linear,
+        Algorithm::Barba,
+        Algorithm::Dobkin,
+        Algorithm::ChazelleDobkin,
+        Algorithm::Clm,
+        Algorithm::Convert,
+    ];
 
     /// The O(log n) tests on sorted arrays (the thesis's experiment 2 checks that
     /// their iteration counts grow like log n).
-    pub const LOGARITHMIC: &'static [Algorithm] = &[Algorithm::Barba, Algorithm::Dobkin, Algorithm::ChazelleDobkin];
+    pub const LOGARITHMIC: &'static [Algorithm] =
+        &[Algorithm::Barba, Algorithm::Dobkin, Algorithm::ChazelleDobkin];
 
     pub fn name(self) -> &'static str {
         match self {
@@ -103,6 +122,8 @@ impl Algorithm {
             Algorithm::Barba => Barba::NAME,
             Algorithm::Dobkin => Dobkin::NAME,
             Algorithm::ChazelleDobkin => ChazelleDobkin::NAME,
+            Algorithm::Clm => Clm::NAME,
+            Algorithm::Convert => <Convert>::NAME,
         }
     }
 
@@ -127,6 +148,8 @@ impl Algorithm {
             Algorithm::Barba => Barba.intersects_probed(k, p, q, &mut it),
             Algorithm::Dobkin => Dobkin.intersects_probed(k, p, q, &mut it),
             Algorithm::ChazelleDobkin => ChazelleDobkin.intersects_probed(k, p, q, &mut it),
+            Algorithm::Clm => run_linked(&Clm, k, p, q, &mut it),
+            Algorithm::Convert => run_linked(&<Convert>::default(), k, p, q, &mut it),
         };
         (answer, it.0)
     }
@@ -135,6 +158,25 @@ impl Algorithm {
     pub fn intersects(self, precision: Precision, p: &ConvexPolygon, q: &ConvexPolygon) -> bool {
         self.run(precision, p, q).0
     }
+}
+
+/// The seed of the RNG with which [`Algorithm::run`] links array polygons in shuffled
+/// arena order and then runs a linked-polygon test: runs are reproducible.
+pub const LINKED_RUN_SEED: u64 = 0x5eed_c1a0;
+
+/// Links `p` and `q` in shuffled arena order and runs a linked-polygon test on them.
+fn run_linked<L: LinkedIntersection, K: Kernel, P: Probe>(
+    alg: &L,
+    k: K,
+    p: &ConvexPolygon,
+    q: &ConvexPolygon,
+    probe: &mut P,
+) -> bool {
+    use rand::SeedableRng;
+    let mut rng = rand::rngs::SmallRng::seed_from_u64(LINKED_RUN_SEED);
+    let lp = crate::polygon::LinkedPolygon::from_convex_shuffled(p, &mut rng);
+    let lq = crate::polygon::LinkedPolygon::from_convex_shuffled(q, &mut rng);
+    alg.intersects_in(k, &lp, &lq, &mut rng, &mut L::Workspace::default(), probe)
 }
 
 impl fmt::Display for Algorithm {

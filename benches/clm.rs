@@ -1,0 +1,326 @@
+//! The sublinear test on linked polygons (thesis 4.3, experiment 5, and Figure 4.8).
+//!
+//! Groups (filter by name as usual with criterion):
+//! * `clm/intersecting`, `clm/disjoint`: [`Clm`] for n = 2^4, 2^6, ... up to
+//!   2^`POLYSECT_BENCH_MAX_LOG2` (default 22) vertices per polygon, Rotated pairs linked
+//!   in shuffled arena order; the answer is asserted inside the loop.
+//! * `convert_vs_clm`: [`Convert`] against [`Clm`] on the same pairs, n up to 2^16
+//!   (Convert is linear: beyond that it only burns machine time).
+//! * `clm_factor`: the sample factor c of [`ClmWithFactor`] at n = 2^12 and 2^18.
+//!
+//! After the criterion groups a plain timing pass prints the summary the docs quote:
+//! time per query and time/√n per n (intersecting and disjoint), Convert's time, and
+//! the crossover n where CLM becomes faster than Convert. Set `POLYSECT_BENCH_SUMMARY=0`
+//! to skip it.
+//!
+//! Shared machines: `cargo bench --bench clm -- --warm-up-time 1 --measurement-time 2`.
+
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group};
+use polysect::generate::{Family, Relation, pair};
+use polysect::intersect::{
+    ArrayIntersection, Clm, ClmWithFactor, ClmWorkspace, Convert, ConvertWorkspace, Linear,
+    LinkedIntersection,
+};
+use polysect::{Exact, LinkedPolygon};
+use rand::SeedableRng;
+use rand::rngs::SmallRng;
+use std::hint::black_box;
+use std::time::Instant;
+
+const SEED: u64 = 0xbe4c_c1a0;
+const CONVERT_MAX_LOG2: u32 = 16;
+
+fn max_log2() -> u32 {
+    std::env::var("POLYSECT_BENCH_MAX_LOG2")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(22)
+        .clamp(4, 24)
+}
+
+/// Linked pairs with their exact answers: a few per size (fewer at large n, where
+/// each polygon costs hundreds of megabytes of generation time and memory).
+struct Pairs {
+    pairs: Vec<(LinkedPolygon, LinkedPolygon)>,
+    answer: bool,
+}
+
+fn make_pairs(log2: u32, relation: Relation) -> Pairs {
+    let n = 1usize << log2;
+    let count = if log2 <= 12 {
+        8
+    } else if log2 <= 18 {
+        4
+    } else {
+        1
+    };
+    let mut rng = SmallRng::seed_from_u64(SEED ^ (log2 as u64) << 8 ^ relation_tag(relation));
+    let answer = matches!(relation, Relation::Intersecting);
+    let pairs = (0..count)
+        .map(|_| {
+            let (p, q) = pair(Family::Rotated, n, relation, &mut rng);
+            assert_eq!(Linear.intersects(&p, &q), answer);
+            (
+                LinkedPolygon::from_convex_shuffled(&p, &mut rng),
+                LinkedPolygon::from_convex_shuffled(&q, &mut rng),
+            )
+        })
+        .collect();
+    Pairs { pairs, answer }
+}
+
+fn relation_tag(r: Relation) -> u64 {
+    match r {
+        Relation::Any => 0,
+        Relation::Intersecting => 1,
+        Relation::Disjoint => 2,
+    }
+}
+
+fn sizes() -> impl Iterator<Item = u32> {
+    (4..=max_log2()).step_by(2)
+}
+
+fn bench_clm(c: &mut Criterion) {
+    for relation in [Relation::Intersecting, Relation::Disjoint] {
+        let name = if relation == Relation::Intersecting {
+            "clm/intersecting"
+        } else {
+            "clm/disjoint"
+        };
+        let mut group = c.benchmark_group(name);
+        for log2 in sizes() {
+            let set = make_pairs(log2, relation);
+            let n = 1u64 << log2;
+            group.throughput(Throughput::Elements(n));
+            let mut rng = SmallRng::seed_from_u64(SEED + 1);
+            let mut ws = ClmWorkspace::default();
+            let mut i = 0;
+            group.bench_with_input(BenchmarkId::new("clm", n), &set, |b, set| {
+                b.iter(|| {
+                    let (p, q) = &set.pairs[i % set.pairs.len()];
+                    i += 1;
+                    let got =
+                        Clm.intersects_with_workspace(Exact, black_box(p), black_box(q), &mut rng, &mut ws);
+                    assert_eq!(got, set.answer);
+                })
+            });
+        }
+        group.finish();
+    }
+}
+
+fn bench_convert_vs_clm(c: &mut Criterion) {
+    let mut group = c.benchmark_group("convert_vs_clm");
+    for log2 in (4..=max_log2().min(CONVERT_MAX_LOG2)).step_by(2) {
+        let n = 1u64 << log2;
+        for relation in [Relation::Intersecting, Relation::Disjoint] {
+            let set = make_pairs(log2, relation);
+            let tag = if relation == Relation::Intersecting {
+                "int"
+            } else {
+                "dis"
+            };
+            let mut rng = SmallRng::seed_from_u64(SEED + 2);
+            let mut ws = ClmWorkspace::default();
+            let mut cws = ConvertWorkspace::default();
+            let mut i = 0;
+            group.bench_with_input(BenchmarkId::new(format!("clm-{tag}"), n), &set, |b, set| {
+                b.iter(|| {
+                    let (p, q) = &set.pairs[i % set.pairs.len()];
+                    i += 1;
+                    assert_eq!(
+                        Clm.intersects_with_workspace(Exact, p, q, &mut rng, &mut ws),
+                        set.answer
+                    );
+                })
+            });
+            group.bench_with_input(BenchmarkId::new(format!("convert-{tag}"), n), &set, |b, set| {
+                b.iter(|| {
+                    let (p, q) = &set.pairs[i % set.pairs.len()];
+                    i += 1;
+                    let got = <Convert>::default().intersects_with_workspace(Exact, p, q, &mut rng, &mut cws);
+                    assert_eq!(got, set.answer);
+                })
+            });
+        }
+    }
+    group.finish();
+}
+
+fn bench_factor(c: &mut Criterion) {
+    let mut group = c.benchmark_group("clm_factor");
+    for log2 in [12u32, 18].into_iter().filter(|&l| l <= max_log2()) {
+        let n = 1u64 << log2;
+        for relation in [Relation::Intersecting, Relation::Disjoint] {
+            let set = make_pairs(log2, relation);
+            let tag = if relation == Relation::Intersecting {
+                "int"
+            } else {
+                "dis"
+            };
+            for factor in [0.5, 1.0, 1.5, 2.0, 3.0] {
+                let mut rng = SmallRng::seed_from_u64(SEED + 3);
+                let mut ws = ClmWorkspace::default();
+                let mut i = 0;
+                group.bench_with_input(BenchmarkId::new(format!("c{factor}-{tag}"), n), &set, |b, set| {
+                    b.iter(|| {
+                        let (p, q) = &set.pairs[i % set.pairs.len()];
+                        i += 1;
+                        let got =
+                            ClmWithFactor(factor).intersects_with_workspace(Exact, p, q, &mut rng, &mut ws);
+                        assert_eq!(got, set.answer);
+                    })
+                });
+            }
+        }
+    }
+    group.finish();
+}
+
+/// Median over batches of the mean time per query, in microseconds.
+fn time_queries<L: LinkedIntersection>(alg: &L, set: &Pairs, budget_s: f64) -> f64 {
+    let mut rng = SmallRng::seed_from_u64(SEED + 4);
+    let mut ws = L::Workspace::default();
+    let mut run = |reps: usize| {
+        let start = Instant::now();
+        for r in 0..reps {
+            let (p, q) = &set.pairs[r % set.pairs.len()];
+            assert_eq!(
+                alg.intersects_with_workspace(Exact, p, q, &mut rng, &mut ws),
+                set.answer
+            );
+        }
+        start.elapsed().as_secs_f64()
+    };
+    // Calibrate: about budget_s / 7 per batch.
+    let mut reps = 1;
+    while run(reps) < budget_s / 70.0 && reps < 1 << 24 {
+        reps *= 2;
+    }
+    let per_batch = (budget_s / 7.0 / (run(reps) / reps as f64)).max(1.0) as usize;
+    let mut times: Vec<f64> = (0..7).map(|_| run(per_batch) / per_batch as f64 * 1e6).collect();
+    times.sort_by(f64::total_cmp);
+    times[3]
+}
+
+/// The walk Convert does before its array test, alone: a lower bound for Convert with an
+/// O(log n) array algorithm (which adds about a microsecond). Microseconds per query.
+fn time_walks(set: &Pairs, budget_s: f64) -> f64 {
+    let mut buf = Vec::new();
+    let mut walk = |poly: &LinkedPolygon| {
+        buf.clear();
+        let mut pos = 0;
+        for _ in 0..poly.len() {
+            buf.push(poly.point_at(pos));
+            pos = poly.next_at(pos);
+        }
+        black_box(&buf);
+    };
+    let mut run = |reps: usize| {
+        let start = Instant::now();
+        for r in 0..reps {
+            let (p, q) = &set.pairs[r % set.pairs.len()];
+            walk(p);
+            walk(q);
+        }
+        start.elapsed().as_secs_f64()
+    };
+    let mut reps = 1;
+    while run(reps) < budget_s / 70.0 && reps < 1 << 24 {
+        reps *= 2;
+    }
+    let per_batch = (budget_s / 7.0 / (run(reps) / reps as f64)).max(1.0) as usize;
+    let mut times: Vec<f64> = (0..7).map(|_| run(per_batch) / per_batch as f64 * 1e6).collect();
+    times.sort_by(f64::total_cmp);
+    times[3]
+}
+
+fn summary() {
+    if std::env::var("POLYSECT_BENCH_SUMMARY").is_ok_and(|v| v == "0") {
+        return;
+    }
+    println!("\nsummary (median of 7 batches, exact kernel, shuffled arenas):");
+    println!(
+        "{:>9} {:>11} {:>11} {:>10} {:>10} {:>11} {:>9} {:>9} {:>9}",
+        "n",
+        "clm int µs",
+        "clm dis µs",
+        "int ns/√n",
+        "dis ns/√n",
+        "convert µs",
+        "walk µs",
+        "clm/conv",
+        "clm/walk"
+    );
+    let mut crossover = None;
+    let mut crossover_walk = None;
+    for log2 in sizes() {
+        let n = 1usize << log2;
+        let int = make_pairs(log2, Relation::Intersecting);
+        let dis = make_pairs(log2, Relation::Disjoint);
+        let ti = time_queries(&Clm, &int, 0.3);
+        let td = time_queries(&Clm, &dis, 0.3);
+        let (conv, walk, ratio, ratio_walk) = if log2 <= CONVERT_MAX_LOG2 {
+            let c = (time_queries(&<Convert>::default(), &int, 0.15)
+                + time_queries(&<Convert>::default(), &dis, 0.15))
+                / 2.0;
+            let w = time_walks(&int, 0.15);
+            let ratio = (ti + td) / 2.0 / c;
+            let ratio_walk = (ti + td) / 2.0 / w;
+            if ratio < 1.0 && crossover.is_none() {
+                crossover = Some(n);
+            }
+            if ratio_walk < 1.0 && crossover_walk.is_none() {
+                crossover_walk = Some(n);
+            }
+            (
+                format!("{c:.2}"),
+                format!("{w:.2}"),
+                format!("{ratio:.2}"),
+                format!("{ratio_walk:.2}"),
+            )
+        } else {
+            ("-".into(), "-".into(), "-".into(), "-".into())
+        };
+        let s = (n as f64).sqrt();
+        println!(
+            "{:>9} {:>11.2} {:>11.2} {:>10.1} {:>10.1} {:>11} {:>9} {:>9} {:>9}",
+            n,
+            ti,
+            td,
+            ti * 1e3 / s,
+            td * 1e3 / s,
+            conv,
+            walk,
+            ratio,
+            ratio_walk
+        );
+    }
+    let show = |what: &str, c: Option<usize>| match c {
+        Some(n) => println!("crossover against {what}: CLM (mean of int and dis) is faster from n = {n}"),
+        None => println!(
+            "crossover against {what}: none up to n = 2^{}",
+            max_log2().min(CONVERT_MAX_LOG2)
+        ),
+    };
+    show("Convert<Linear>", crossover);
+    show("the walk alone", crossover_walk);
+}
+
+fn all(c: &mut Criterion) {
+    bench_clm(c);
+    bench_convert_vs_clm(c);
+    bench_factor(c);
+}
+
+criterion_group!(benches, all);
+
+fn main() {
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+    // Only when the whole bench runs (criterion's `--list`/filters pass args we ignore).
+    if !std::env::args().any(|a| a == "--list") {
+        summary();
+    }
+}

@@ -1,0 +1,423 @@
+//! [`Clm`]: the Chazelle–Liu–Magen expected-O(√n) test on linked polygons (thesis 3.3.2).
+//!
+//! # Algorithm
+//! 1. Sample r_P ≈ c·√n vertices R_P of P and r_Q ≈ c·√m vertices R_Q of Q uniformly,
+//!    in O(r): independent draws when r ≤ n/16 (no distinctness marks: one cache miss
+//!    less per draw), else distinct ([`LinkedPolygon::sample_positions`]), and the whole
+//!    polygon when r ≥ n. CH(R_P) ⊆ P, CH(R_Q) ⊆ Q.
+//! 2. Run the LP ([`separating_line`]) on R_P and R_Q. If the hulls intersect, so do P
+//!    and Q. Otherwise we get a line L with R_P on its closed right side, R_Q on its
+//!    closed left side, and tangent vertices p ∈ R_P, q ∈ R_Q on L.
+//! 3. Chains: C_P is the run of P's vertices strictly on Q's side of L, walked from p
+//!    along the direction in which p's neighbour lies strictly beyond L, **including the
+//!    first vertex back on the near side at both ends** (p itself at one end). Then
+//!    CH(C_P) ⊇ P ∩ H where H is Q's closed side of L: the boundary of P leaves H on
+//!    the two closing edges, which are edges of the chain. If neither neighbour of p is
+//!    strictly beyond L, P touches H at most along L near p and C_P = (prev p, p, next p).
+//!    C_Q likewise for Q on P's side. By convexity these runs are contiguous, so the walk
+//!    finds all of them; their expected length is O(n / r) (Chazelle–Liu–Magen,
+//!    Theorem 2.1).
+//! 4. A common point x of P and Q lies on one side of L: if on Q's closed side, x ∈
+//!    P ∩ H ⊆ CH(C_P) and x ∈ Q; otherwise x ∈ CH(C_Q) and x ∈ P. So P ∩ Q ≠ ∅ iff
+//!    P ∩ CH(C_Q) ≠ ∅ or Q ∩ CH(C_P) ≠ ∅ (the converse holds as CH(C_P) ⊆ P).
+//! 5. P against CH(C_Q): the LP on R_P and C_Q; intersecting hulls mean P ∩ Q ≠ ∅. Else
+//!    its line L′ gives the chain C′_P of P beyond L′ (step 3 again), and P ∩ CH(C_Q) ≠ ∅
+//!    iff CH(C′_P) ∩ CH(C_Q) ≠ ∅, one more LP. Q against CH(C_P) symmetrically.
+//!    Order of work: both sample-against-chain LPs first (either can end the query),
+//!    then C′_P and C′_Q walked together, then the two chain-against-chain LPs. Chain
+//!    walks always run in pairs, interleaved, so that their cache misses (each step is
+//!    a dependent load at a random arena position) overlap.
+//!
+//! At most five LPs on O(r + n/r) points each, so the expected time is O(√n) for
+//! r = Θ(√n). The constant c = [`Clm::SAMPLE_FACTOR`] was chosen by measurement
+//! (docs/sublinear.md, `benches/clm.rs`).
+//!
+//! # Complexity
+//! Expected O((c + 1/c)·(√n + √m)) for polygons of n and m vertices, over the random
+//! samples and the LP's random orders, for **every** input (no assumption on the
+//! polygons). Polygons with at most r vertices are used whole: one LP decides.
+//! The worst case (an absurdly unlucky sample) is O(n + m) walks and quadratic LP time.
+//!
+//! # Degeneracies
+//! Closed sets throughout: the LP reports touching hulls as intersecting and only
+//! returns lines that separate with closed sides, and the chains include the closing
+//! vertices on the near side, so shared vertices, vertices on edges, shared or
+//! overlapping edges and containment are all intersections. The answer never depends
+//! on the random draw; tests/clm.rs runs many seeds per pair.
+//!
+//! # Precision
+//! Every decision is a predicate on input points (`orient` for sides and chain walks,
+//! the LP's `orient`/`cross`/`dot`): exact under [`Exact`](crate::Exact), so it equals
+//! [`Linear`](super::Linear) on every input. Under [`Fast`](crate::Fast) chain walks are
+//! capped at n steps, so the test always terminates.
+
+use super::Probe;
+use super::linked::LinkedIntersection;
+use crate::kernel::{Kernel, Orientation, Point};
+use crate::lp::{ArenaPoints, LpWorkspace, Separation, separating_line};
+use crate::polygon::{LinkedPolygon, SampleWorkspace};
+use rand::Rng;
+
+/// The Chazelle–Liu–Magen sublinear test with the default sample factor
+/// [`Clm::SAMPLE_FACTOR`]; see the module docs.
+///
+/// ```
+/// use polysect::{ConvexPolygon, LinkedPolygon};
+/// use polysect::generate::regular_polygon;
+/// use polysect::intersect::{Clm, ClmWorkspace, LinkedIntersection};
+/// use rand::{SeedableRng, rngs::SmallRng};
+/// let mut rng = SmallRng::seed_from_u64(7);
+/// let big = regular_polygon(4096, 1.0);
+/// let p = LinkedPolygon::from_convex_shuffled(&big, &mut rng);
+/// let far = big.map(|v| polysect::Point::new(v.x + 3.0, v.y))?;
+/// let q = LinkedPolygon::from_convex_shuffled(&far, &mut rng);
+/// let mut ws = ClmWorkspace::default();
+/// assert!(!Clm.intersects_with_workspace(polysect::Exact, &p, &q, &mut rng, &mut ws));
+/// // A triangle sharing the vertex (1, 0): touching is intersection.
+/// let q = LinkedPolygon::from_points([[1.0, 0.0], [2.0, -1.0], [2.0, 1.0]])?;
+/// assert!(Clm.intersects_with_workspace(polysect::Exact, &p, &q, &mut rng, &mut ws));
+/// # Ok::<(), polysect::PolygonError>(())
+/// ```
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Clm;
+
+impl Clm {
+    /// The sample size is ⌈c·√n⌉ vertices per polygon of n vertices, with this c.
+    pub const SAMPLE_FACTOR: f64 = 1.0;
+}
+
+/// The same test with an explicit sample factor c (samples of ⌈c·√n⌉ vertices), for
+/// experiments that tune c.
+#[derive(Clone, Copy, Debug)]
+pub struct ClmWithFactor(pub f64);
+
+/// Reusable scratch memory for [`Clm`]: sample marks and the sample, chain and LP buffers.
+#[derive(Clone, Debug, Default)]
+pub struct ClmWorkspace {
+    sample: SampleWorkspace,
+    rp: Vec<u32>,
+    rq: Vec<u32>,
+    cp: Vec<u32>,
+    cq: Vec<u32>,
+    chain: Vec<u32>,
+    chain2: Vec<u32>,
+    lp: LpWorkspace,
+    walked: u64,
+}
+
+impl ClmWorkspace {
+    /// The LP statistics accumulated by queries using this workspace: work counter and
+    /// recomputations after failed certification (see [`LpWorkspace`]).
+    pub fn lp_stats(&self) -> &LpWorkspace {
+        &self.lp
+    }
+
+    /// Chain vertices collected by queries using this workspace (each one a step along
+    /// the linked list).
+    pub fn walked(&self) -> u64 {
+        self.walked
+    }
+}
+
+impl LinkedIntersection for Clm {
+    const NAME: &'static str = "clm";
+    type Workspace = ClmWorkspace;
+
+    #[inline]
+    fn intersects_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
+        &self,
+        kernel: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        rng: &mut R,
+        workspace: &mut ClmWorkspace,
+        probe: &mut P,
+    ) -> bool {
+        ClmWithFactor(Clm::SAMPLE_FACTOR).intersects_in(kernel, p, q, rng, workspace, probe)
+    }
+}
+
+impl LinkedIntersection for ClmWithFactor {
+    const NAME: &'static str = "clm";
+    type Workspace = ClmWorkspace;
+
+    fn intersects_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
+        &self,
+        k: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        rng: &mut R,
+        ws: &mut ClmWorkspace,
+        probe: &mut P,
+    ) -> bool {
+        let work_before = ws.lp.work + ws.walked;
+        let answer = clm(k, self.0, p, q, rng, ws);
+        for _ in work_before..ws.lp.work + ws.walked {
+            probe.iteration();
+        }
+        answer
+    }
+}
+
+/// Appends `r` random vertex positions of `poly` to `out`: all of them when r ≥ n; r
+/// independent uniform draws (with replacement) when r ≤ n/16, where repeats are rare
+/// and skipping the distinctness marks saves a cache miss per draw on large polygons;
+/// otherwise r distinct positions ([`LinkedPolygon::sample_positions`]). Repeats are
+/// harmless: the LP accepts duplicate points, and the chain bounds of the analysis hold
+/// for samples drawn with replacement.
+fn sample<R: Rng + ?Sized>(
+    poly: &LinkedPolygon,
+    r: usize,
+    rng: &mut R,
+    marks: &mut SampleWorkspace,
+    out: &mut Vec<u32>,
+) {
+    let n = poly.len();
+    if r.saturating_mul(16) <= n {
+        out.extend((0..r).map(|_| rng.random_range(0..n as u32)));
+    } else {
+        poly.sample_positions(r, rng, marks, out);
+    }
+}
+
+/// ⌈c·√n⌉, at least 3.
+fn sample_size(c: f64, n: usize) -> usize {
+    let r = (c * (n as f64).sqrt()).ceil();
+    if r.is_finite() && r >= 3.0 { r as usize } else { 3 }
+}
+
+fn clm<K: Kernel, R: Rng + ?Sized>(
+    k: K,
+    c: f64,
+    p: &LinkedPolygon,
+    q: &LinkedPolygon,
+    rng: &mut R,
+    ws: &mut ClmWorkspace,
+) -> bool {
+    ws.rp.clear();
+    ws.rq.clear();
+    sample(p, sample_size(c, p.len()), rng, &mut ws.sample, &mut ws.rp);
+    sample(q, sample_size(c, q.len()), rng, &mut ws.sample, &mut ws.rq);
+    let rp = ArenaPoints {
+        polygon: p,
+        positions: &ws.rp,
+    };
+    let rq = ArenaPoints {
+        polygon: q,
+        positions: &ws.rq,
+    };
+    let t = match separating_line(k, &rp, &rq, rng, &mut ws.lp) {
+        Ok(Separation::Separated(t)) => t,
+        // Samples are never empty (polygons have ≥ 3 vertices), so only a real
+        // intersection of the sample hulls gets here.
+        _ => return true,
+    };
+    if ws.rp.len() == p.len() && ws.rq.len() == q.len() {
+        return false; // the LP saw both polygons whole
+    }
+    let (tp, tq) = (ws.rp[t.a] as usize, ws.rq[t.b] as usize);
+    // P lies on the right of the line, Q on the left: P's far side is the left. The two
+    // walks are interleaved so that their cache misses overlap.
+    far_chains(
+        k,
+        Walk::new(p, t.start, t.end, Orientation::Ccw, tp),
+        &mut ws.cp,
+        Walk::new(q, t.start, t.end, Orientation::Cw, tq),
+        &mut ws.cq,
+    );
+    ws.walked += (ws.cp.len() + ws.cq.len()) as u64;
+    let ClmWorkspace {
+        rp,
+        rq,
+        cp,
+        cq,
+        chain,
+        chain2,
+        lp,
+        walked,
+        ..
+    } = ws;
+    // P against CH(C_Q) and Q against CH(C_P): first each sample against the other's
+    // chain (an intersection there ends the query), then both second chains, walked
+    // together, against the first chains.
+    let lines = [(&*rp, p, &*cq, q), (&*rq, q, &*cp, p)].map(|(rx, x, cy, y)| {
+        let sample = ArenaPoints {
+            polygon: x,
+            positions: rx,
+        };
+        let far = ArenaPoints {
+            polygon: y,
+            positions: cy,
+        };
+        match separating_line(k, &sample, &far, rng, lp) {
+            Ok(Separation::Separated(t)) => Some(t),
+            _ => None,
+        }
+    });
+    let [Some(lp_line), Some(lq_line)] = lines else {
+        return true;
+    };
+    // A sample that is its whole polygon has decided its sub-test already.
+    let p_open = rp.len() < p.len();
+    let q_open = rq.len() < q.len();
+    far_chains(
+        k,
+        Walk::new(
+            p,
+            lp_line.start,
+            lp_line.end,
+            Orientation::Ccw,
+            rp[lp_line.a] as usize,
+        )
+        .only_if(p_open),
+        chain,
+        Walk::new(
+            q,
+            lq_line.start,
+            lq_line.end,
+            Orientation::Ccw,
+            rq[lq_line.a] as usize,
+        )
+        .only_if(q_open),
+        chain2,
+    );
+    *walked += (chain.len() + chain2.len()) as u64;
+    let meets = |near: &[u32],
+                 x: &LinkedPolygon,
+                 far: &[u32],
+                 y: &LinkedPolygon,
+                 rng: &mut R,
+                 lp: &mut LpWorkspace| {
+        let near = ArenaPoints {
+            polygon: x,
+            positions: near,
+        };
+        let far = ArenaPoints {
+            polygon: y,
+            positions: far,
+        };
+        !matches!(
+            separating_line(k, &near, &far, rng, lp),
+            Ok(Separation::Separated(_))
+        )
+    };
+    (p_open && meets(chain, p, cq, q, rng, lp)) || (q_open && meets(chain2, q, cp, p, rng, lp))
+}
+
+/// One chain walk (see [`far_chains`]): from the tangent vertex at position `t` of
+/// `poly`, along the side where the neighbour lies strictly on the `far` side of the
+/// directed line (s, e).
+struct Walk<'a> {
+    poly: &'a LinkedPolygon,
+    s: Point,
+    e: Point,
+    far: Orientation,
+    t: usize,
+    enabled: bool,
+}
+
+impl<'a> Walk<'a> {
+    fn new(poly: &'a LinkedPolygon, s: Point, e: Point, far: Orientation, t: usize) -> Self {
+        Walk {
+            poly,
+            s,
+            e,
+            far,
+            t,
+            enabled: true,
+        }
+    }
+
+    fn only_if(mut self, enabled: bool) -> Self {
+        self.enabled = enabled;
+        self
+    }
+}
+
+/// The state of a walk in progress.
+struct Cursor {
+    v: usize,
+    forward: bool,
+    steps_left: usize,
+    done: bool,
+}
+
+impl Walk<'_> {
+    #[inline]
+    fn is_far<K: Kernel>(&self, k: K, pos: usize) -> bool {
+        k.orient(self.s, self.e, self.poly.point_at(pos)) == self.far
+    }
+
+    /// Starts the walk, writing its first vertices to `out`.
+    fn start<K: Kernel>(&self, k: K, out: &mut Vec<u32>) -> Cursor {
+        out.clear();
+        let done = Cursor {
+            v: 0,
+            forward: true,
+            steps_left: 0,
+            done: true,
+        };
+        if !self.enabled {
+            return done;
+        }
+        let (poly, t) = (self.poly, self.t);
+        let (next, prev) = (poly.next_at(t), poly.prev_at(t));
+        let forward = if self.is_far(k, next) {
+            true
+        } else if self.is_far(k, prev) {
+            false
+        } else {
+            out.extend([prev as u32, t as u32, next as u32]);
+            return done;
+        };
+        out.push(t as u32);
+        Cursor {
+            v: if forward { next } else { prev },
+            forward,
+            // At most n − 1 further vertices; the cap also bounds walks under an
+            // inconsistent kernel.
+            steps_left: poly.len() - 1,
+            done: false,
+        }
+    }
+
+    /// One step: records the current vertex and moves on unless it closes the chain.
+    #[inline]
+    fn advance<K: Kernel>(&self, k: K, c: &mut Cursor, out: &mut Vec<u32>) {
+        out.push(c.v as u32);
+        c.steps_left -= 1;
+        if !self.is_far(k, c.v) || c.steps_left == 0 {
+            c.done = true;
+            return;
+        }
+        c.v = if c.forward {
+            self.poly.next_at(c.v)
+        } else {
+            self.poly.prev_at(c.v)
+        };
+        if c.v == self.t {
+            c.done = true;
+        }
+    }
+}
+
+/// Runs two chain walks in lockstep (their memory accesses overlap). Each writes to its
+/// `out` the positions of the run of `poly`'s vertices strictly on the `far` side of
+/// the directed line (s, e), walked from the tangent vertex at position `t` (on the
+/// line, not on the far side), including the first non-far vertex at both ends; or
+/// (prev t, t, next t) when neither neighbour of t is on the far side. A disabled walk
+/// leaves its `out` empty.
+fn far_chains<K: Kernel>(k: K, w1: Walk<'_>, out1: &mut Vec<u32>, w2: Walk<'_>, out2: &mut Vec<u32>) {
+    let mut c1 = w1.start(k, out1);
+    let mut c2 = w2.start(k, out2);
+    while !c1.done && !c2.done {
+        w1.advance(k, &mut c1, out1);
+        w2.advance(k, &mut c2, out2);
+    }
+    while !c1.done {
+        w1.advance(k, &mut c1, out1);
+    }
+    while !c2.done {
+        w2.advance(k, &mut c2, out2);
+    }
+}

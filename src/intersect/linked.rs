@@ -1,0 +1,129 @@
+//! Intersection tests on [`LinkedPolygon`]s ([`LinkedIntersection`]) and [`Convert`],
+//! the naive path: walk both linked lists into sorted arrays, then run an array test.
+//!
+//! Convert is the baseline the sublinear test ([`Clm`](super::Clm)) is measured
+//! against (thesis 4.4, Figure 4.8): O(n) for the walk whatever the array algorithm
+//! costs, but with a small constant, so it wins on small polygons.
+
+use super::{ArrayIntersection, Barba, Probe};
+use crate::kernel::{Exact, Kernel, Point};
+use crate::polygon::{ConvexPolygon, LinkedPolygon};
+use rand::Rng;
+use rand::SeedableRng;
+use rand::rngs::SmallRng;
+
+/// The seed of the RNG that [`LinkedIntersection::intersects_with`] creates per call,
+/// so one-off queries are reproducible. Callers that care about independence between
+/// queries pass their own RNG to [`LinkedIntersection::intersects_in`].
+pub const DEFAULT_QUERY_SEED: u64 = 0x00c1_6a2e;
+
+/// An intersection test on two convex polygons stored as linked lists in arenas.
+///
+/// Randomized tests draw from the caller's RNG; their answer never depends on the draw
+/// (under [`Exact`]), only their running time does.
+pub trait LinkedIntersection {
+    /// The name used by the CLI's `--algorithm` and by benches.
+    const NAME: &'static str;
+    /// Scratch memory reused across queries (buffers, sampling marks).
+    type Workspace: Default;
+
+    /// Whether `p` and `q` intersect, with scratch memory from `workspace` (no allocation
+    /// once it has grown to the largest input) and random draws from `rng`, reporting
+    /// each unit of work to `probe`.
+    fn intersects_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
+        &self,
+        kernel: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        rng: &mut R,
+        workspace: &mut Self::Workspace,
+        probe: &mut P,
+    ) -> bool;
+
+    /// [`intersects_in`](Self::intersects_in) without a probe.
+    #[inline]
+    fn intersects_with_workspace<K: Kernel, R: Rng + ?Sized>(
+        &self,
+        kernel: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        rng: &mut R,
+        workspace: &mut Self::Workspace,
+    ) -> bool {
+        self.intersects_in(kernel, p, q, rng, workspace, &mut ())
+    }
+
+    /// A one-off query: a fresh workspace and an RNG seeded with [`DEFAULT_QUERY_SEED`].
+    fn intersects_with<K: Kernel>(&self, kernel: K, p: &LinkedPolygon, q: &LinkedPolygon) -> bool {
+        let mut rng = SmallRng::seed_from_u64(DEFAULT_QUERY_SEED);
+        self.intersects_in(kernel, p, q, &mut rng, &mut Self::Workspace::default(), &mut ())
+    }
+
+    /// A one-off query with the exact kernel.
+    fn intersects(&self, p: &LinkedPolygon, q: &LinkedPolygon) -> bool {
+        self.intersects_with(Exact, p, q)
+    }
+}
+
+/// Walks both linked lists into sorted arrays (O(n + m)) and runs the array test `A`.
+///
+/// # Complexity
+/// O(n + m) for the walks (each step a dependent load at a random arena position)
+/// plus the cost of `A`.
+///
+/// # Degeneracies and precision
+/// Those of `A`: the walk itself decides nothing.
+///
+/// ```
+/// use polysect::LinkedPolygon;
+/// use polysect::intersect::{Convert, LinkedIntersection};
+/// let p = LinkedPolygon::from_points([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+/// let q = LinkedPolygon::from_points([[2.0, 2.0], [3.0, 2.0], [3.0, 3.0]])?;
+/// assert!(<Convert>::default().intersects(&p, &q)); // a shared vertex
+/// # Ok::<(), polysect::PolygonError>(())
+/// ```
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Convert<A: ArrayIntersection = Barba>(pub A);
+
+/// Reusable arrays for [`Convert`].
+#[derive(Clone, Debug, Default)]
+pub struct ConvertWorkspace {
+    p: Vec<Point>,
+    q: Vec<Point>,
+}
+
+/// Appends the boundary of `poly` counter-clockwise, walking positions.
+fn walk_into(poly: &LinkedPolygon, out: &mut Vec<Point>) {
+    out.clear();
+    out.reserve(poly.len());
+    let mut pos = 0;
+    for _ in 0..poly.len() {
+        out.push(poly.point_at(pos));
+        pos = poly.next_at(pos);
+    }
+}
+
+impl<A: ArrayIntersection> LinkedIntersection for Convert<A> {
+    const NAME: &'static str = "convert";
+    type Workspace = ConvertWorkspace;
+
+    fn intersects_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
+        &self,
+        kernel: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        _rng: &mut R,
+        ws: &mut ConvertWorkspace,
+        probe: &mut P,
+    ) -> bool {
+        walk_into(p, &mut ws.p);
+        walk_into(q, &mut ws.q);
+        // The linked polygon is strictly convex and counter-clockwise by invariant.
+        let pa = ConvexPolygon::from_ccw_unchecked(std::mem::take(&mut ws.p));
+        let qa = ConvexPolygon::from_ccw_unchecked(std::mem::take(&mut ws.q));
+        let answer = self.0.intersects_probed(kernel, &pa, &qa, probe);
+        ws.p = pa.into_vertices();
+        ws.q = qa.into_vertices();
+        answer
+    }
+}

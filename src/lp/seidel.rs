@@ -1,0 +1,621 @@
+//! The incremental LP behind [`separating_line`]; the formulation is in the module docs
+//! of [`crate::lp`].
+
+use crate::kernel::{Exact, Kernel, Orientation, Point, Sign};
+use crate::polygon::LinkedPolygon;
+use rand::Rng;
+use std::fmt;
+
+/// A finite indexed set of points: a slice, or arena positions of a [`LinkedPolygon`].
+pub trait PointSet {
+    fn len(&self) -> usize;
+    fn point(&self, i: usize) -> Point;
+    fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+impl PointSet for [Point] {
+    #[inline]
+    fn len(&self) -> usize {
+        <[Point]>::len(self)
+    }
+    #[inline]
+    fn point(&self, i: usize) -> Point {
+        self[i]
+    }
+}
+
+impl PointSet for Vec<Point> {
+    #[inline]
+    fn len(&self) -> usize {
+        Vec::len(self)
+    }
+    #[inline]
+    fn point(&self, i: usize) -> Point {
+        self[i]
+    }
+}
+
+impl<T: PointSet + ?Sized> PointSet for &T {
+    #[inline]
+    fn len(&self) -> usize {
+        (**self).len()
+    }
+    #[inline]
+    fn point(&self, i: usize) -> Point {
+        (**self).point(i)
+    }
+}
+
+/// The vertices of `polygon` stored at `positions` (arena positions, `0..len`), read in
+/// place: point `i` of the set is `polygon.point_at(positions[i])`.
+#[derive(Clone, Copy, Debug)]
+pub struct ArenaPoints<'a> {
+    pub polygon: &'a LinkedPolygon,
+    pub positions: &'a [u32],
+}
+
+impl PointSet for ArenaPoints<'_> {
+    #[inline]
+    fn len(&self) -> usize {
+        self.positions.len()
+    }
+    #[inline]
+    fn point(&self, i: usize) -> Point {
+        self.polygon.point_at(self.positions[i] as usize)
+    }
+}
+
+/// A separating line through two input points, directed from `start` to `end`, with every
+/// point of A on its closed right side and every point of B on its closed left side.
+/// `a` and `b` index the tangent points: `A[a]` and `B[b]` lie on the line.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bitangent {
+    pub start: Point,
+    pub end: Point,
+    pub a: usize,
+    pub b: usize,
+}
+
+/// The answer of [`separating_line`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Separation {
+    /// CH(A) ∩ CH(B) ≠ ∅ (a shared point, touching boundaries, crossing, containment).
+    Intersecting,
+    /// The hulls are disjoint; the line is an inner common tangent.
+    Separated(Bitangent),
+}
+
+/// Invalid input to [`separating_line`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LpError {
+    /// A or B has no points (the hull of an empty set is empty: nothing to separate).
+    EmptySet,
+    /// A or B has 2^31 points or more (indices are packed into 31 bits).
+    TooLarge,
+}
+
+impl fmt::Display for LpError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            LpError::EmptySet => f.write_str("separating_line needs two non-empty point sets"),
+            LpError::TooLarge => f.write_str("separating_line accepts fewer than 2^31 points per set"),
+        }
+    }
+}
+
+impl std::error::Error for LpError {}
+
+/// Scratch memory for [`separating_line`]: the points, copied once and shuffled in place
+/// (24 bytes per point). Reuse it across
+/// calls so the LP allocates nothing in the steady state.
+#[derive(Clone, Debug, Default)]
+pub struct LpWorkspace {
+    items: Vec<Item>,
+    /// Constraints examined (violation tests and one-dimensional steps) since creation:
+    /// the LP's work, for experiments.
+    pub work: u64,
+    /// Calls whose result failed certification and was recomputed with [`Exact`]. Only an
+    /// inconsistent kernel causes this; under [`Exact`] it stays 0 (the tests check).
+    pub redone: u64,
+}
+
+impl LpWorkspace {
+    pub fn new() -> Self {
+        Self::default()
+    }
+}
+
+const B_BIT: u32 = 1 << 31;
+
+/// How far ahead of the incremental loop points are read from the input.
+const LOOKAHEAD: usize = 12;
+
+/// Decides whether CH(A) and CH(B) intersect and, if not, finds an inner common tangent.
+///
+/// See the [module docs](crate::lp) for the formulation.
+///
+/// # Complexity
+/// Expected O(|A| + |B|) predicate calls over the random order drawn from `rng`, for every
+/// input; worst case quadratic with vanishing probability. No allocation once `workspace`
+/// has held an input of this size.
+///
+/// # Degeneracies
+/// Touching hulls (a shared point, a point on the other's edge, overlapping collinear
+/// edges) are [`Separation::Intersecting`]. Duplicates, collinear sets and single points
+/// are valid input.
+///
+/// # Precision
+/// Every decision is an `orient`, `cross` or `dot` predicate on input points: exact under
+/// [`Exact`]. Under [`Fast`](crate::Fast) a result is certified with fast predicates and
+/// recomputed with [`Exact`] when that certification fails.
+///
+/// # Errors
+/// [`LpError::EmptySet`] when A or B is empty, [`LpError::TooLarge`] beyond 2^31 − 1 points.
+///
+/// ```
+/// use polysect::{Exact, Kernel, Point, lp::{separating_line, LpWorkspace, Separation}};
+/// use rand::{SeedableRng, rngs::SmallRng};
+/// let a = [Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(0.0, 1.0)];
+/// let b = [Point::new(2.0, 2.0), Point::new(3.0, 2.0), Point::new(2.0, 3.0)];
+/// let mut rng = SmallRng::seed_from_u64(1);
+/// let mut ws = LpWorkspace::new();
+/// match separating_line(Exact, &a[..], &b[..], &mut rng, &mut ws)? {
+///     Separation::Separated(t) => {
+///         // The tangent points lie on the line; A is on its right, B on its left.
+///         assert_eq!(Exact.orient(t.start, t.end, a[t.a]), polysect::Orientation::Collinear);
+///         assert_eq!(Exact.orient(t.start, t.end, b[t.b]), polysect::Orientation::Collinear);
+///     }
+///     Separation::Intersecting => unreachable!("the triangles are disjoint"),
+/// }
+/// let touching = [Point::new(1.0, 0.0), Point::new(5.0, 0.0), Point::new(5.0, 5.0)];
+/// assert_eq!(separating_line(Exact, &a[..], &touching[..], &mut rng, &mut ws)?, Separation::Intersecting);
+/// # Ok::<(), polysect::lp::LpError>(())
+/// ```
+pub fn separating_line<K, A, B, R>(
+    kernel: K,
+    a: &A,
+    b: &B,
+    rng: &mut R,
+    workspace: &mut LpWorkspace,
+) -> Result<Separation, LpError>
+where
+    K: Kernel,
+    A: PointSet + ?Sized,
+    B: PointSet + ?Sized,
+    R: Rng + ?Sized,
+{
+    if a.is_empty() || b.is_empty() {
+        return Err(LpError::EmptySet);
+    }
+    if a.len() >= B_BIT as usize || b.len() >= B_BIT as usize {
+        return Err(LpError::TooLarge);
+    }
+    list_items(a.len(), b.len(), workspace);
+    let na = a.len();
+    let src = Source { a, b };
+    let LpWorkspace { items, work, redone } = workspace;
+    Ok(match solve(kernel, &src, items, na, rng, work) {
+        Some(s) => s,
+        // Only an inconsistent (fast) kernel gets here: redo it exactly.
+        None => {
+            *redone += 1;
+            // `solve` reordered the items: restore A-first order by origin.
+            items.sort_unstable_by_key(|it| it.enc);
+            solve(Exact, &src, items, na, rng, work).unwrap_or(Separation::Intersecting)
+        }
+    })
+}
+
+/// A directed line through two input points.
+#[derive(Clone, Copy, Debug)]
+struct Line {
+    s: Point,
+    e: Point,
+}
+
+impl Line {
+    /// `orient(s, e, x)`, answering the points that define the line without the kernel:
+    /// exact zeros are the slowest case of an exact predicate, and each LP meets a few.
+    #[inline]
+    fn side<K: Kernel>(self, k: K, x: Point) -> Orientation {
+        if x == self.s || x == self.e {
+            Orientation::Collinear
+        } else {
+            k.orient(self.s, self.e, x)
+        }
+    }
+}
+
+/// The outcome of a one-dimensional step.
+enum Step {
+    /// The new optimum, tight on the violating point and on `partner`.
+    Line(Line, Item),
+    /// The constraints seen so far admit no separator: the hulls intersect.
+    Infeasible,
+    /// The kernel contradicted itself (fast kernel only).
+    Inconsistent,
+}
+
+/// The outcome of the incremental loop.
+enum StepOut {
+    Line {
+        line: Line,
+        ta: u32,
+        tb: u32,
+        on_line: OnLine,
+        last_change: usize,
+    },
+    Infeasible,
+    Inconsistent,
+}
+
+/// A point copied into the workspace with its origin: index in A, or index in B | `B_BIT`.
+#[derive(Clone, Copy, Debug, Default)]
+struct Item {
+    p: Point,
+    enc: u32,
+    /// Whether `p` has been read from the input yet.
+    loaded: bool,
+}
+
+/// Lists A and B in `ws.items` (A first) without reading their points yet: each point is
+/// copied into its item when the LP first reaches it, so the repeated passes read
+/// contiguous memory, and an LP that stops early (intersecting hulls are usually found
+/// within a few dozen points) never touches the rest of the input.
+fn list_items(na: usize, nb: usize, ws: &mut LpWorkspace) {
+    ws.items.clear();
+    ws.items.reserve(na + nb);
+    let blank = Point::new(0.0, 0.0);
+    ws.items.extend((0..na as u32).map(|i| Item {
+        p: blank,
+        enc: i,
+        loaded: false,
+    }));
+    ws.items.extend((0..nb as u32).map(|j| Item {
+        p: blank,
+        enc: j | B_BIT,
+        loaded: false,
+    }));
+}
+
+/// Reads items' points from the two input sets on first use.
+struct Source<'s, A: ?Sized, B: ?Sized> {
+    a: &'s A,
+    b: &'s B,
+}
+
+impl<A: PointSet + ?Sized, B: PointSet + ?Sized> Source<'_, A, B> {
+    #[inline]
+    fn load(&self, it: &mut Item) -> Point {
+        if !it.loaded {
+            it.p = if it.enc & B_BIT == 0 {
+                self.a.point(it.enc as usize)
+            } else {
+                self.b.point((it.enc & !B_BIT) as usize)
+            };
+            it.loaded = true;
+        }
+        it.p
+    }
+}
+
+/// The LP on `items` (A's points first, `na` of them, then B's). Reorders `items`.
+/// `None` when the final certification fails (inconsistent kernel).
+fn solve<K: Kernel, R: Rng + ?Sized, A: PointSet + ?Sized, B: PointSet + ?Sized>(
+    k: K,
+    src: &Source<'_, A, B>,
+    items: &mut [Item],
+    na: usize,
+    rng: &mut R,
+    work: &mut u64,
+) -> Option<Separation> {
+    let (a0, b0) = (src.load(&mut items[0]), src.load(&mut items[na]));
+    if a0 == b0 {
+        return Some(Separation::Intersecting);
+    }
+    // x′(q) − x′(p) > 0  ⟺  d₀ × (q − p) < 0.
+    let x_less = |p: Point, q: Point| k.cross(a0, b0, p, q) == Orientation::Cw;
+    // Bounding constraints: any a ∈ A strictly x′-left of any b ∈ B bound the objective.
+    // Scan A and B interleaved, keeping A's x′-minimum and B's x′-maximum so far, and stop
+    // at the first such pair (usually within a few points). Only when none exists is the
+    // whole input scanned: then the line through a₀ and b₀ separates.
+    let nb = items.len() - na;
+    let (mut il, mut jr) = (0, na);
+    let mut bounded = false;
+    // i = 0 is (a₀, b₀) itself: equal x′, not bounding (and an exact zero, which is the
+    // slowest case of an exact predicate, so it is not evaluated).
+    for i in 1..na.max(nb) {
+        if i < na && x_less(src.load(&mut items[i]), items[il].p) {
+            il = i;
+        }
+        if i < nb && x_less(items[jr].p, src.load(&mut items[na + i])) {
+            jr = na + i;
+        }
+        *work += 1;
+        if x_less(items[il].p, items[jr].p) {
+            bounded = true;
+            break;
+        }
+    }
+    let (al, br) = (items[il], items[jr]);
+    let (line, ta, tb, on_line, checked) = if !bounded {
+        // No point of A is x′-left of a point of B: the line through a₀ and b₀
+        // (parallel to d₀) separates.
+        let (pa, pb) = (items[0].p, items[na].p);
+        (
+            Line { s: a0, e: b0 },
+            items[0].enc,
+            items[na].enc,
+            OnLine::at(pa, pb),
+            items.len(),
+        )
+    } else {
+        // The bounding constraints first, then a uniformly random order of the rest.
+        items.swap(0, il);
+        items.swap(1, jr);
+        for i in (3..items.len()).rev() {
+            items.swap(i, rng.random_range(2..=i));
+        }
+        match incremental(k, src, Line { s: al.p, e: br.p }, al, br, a0, b0, items, work) {
+            StepOut::Line {
+                line,
+                ta,
+                tb,
+                on_line,
+                last_change,
+            } => (line, ta, tb, on_line, last_change + 1),
+            StepOut::Infeasible => return Some(Separation::Intersecting),
+            StepOut::Inconsistent => return None,
+        }
+    };
+    certify(k, line, ta, tb, on_line, &items[..checked], work)
+}
+
+/// The extreme points, along the current line, of each set's points found on it.
+#[derive(Clone, Copy, Debug)]
+struct OnLine {
+    a_min: Point,
+    a_max: Point,
+    b_min: Point,
+    b_max: Point,
+}
+
+impl OnLine {
+    fn at(pa: Point, pb: Point) -> Self {
+        OnLine {
+            a_min: pa,
+            a_max: pa,
+            b_min: pb,
+            b_max: pb,
+        }
+    }
+
+    /// Adds `x`, a point on the directed line (s, e), to its set's extremes.
+    #[inline]
+    fn add<K: Kernel>(&mut self, k: K, s: Point, e: Point, x: Point, in_b: bool) {
+        let (min, max) = if in_b {
+            (&mut self.b_min, &mut self.b_max)
+        } else {
+            (&mut self.a_min, &mut self.a_max)
+        };
+        if x == *min || x == *max {
+            return; // known, and an exact zero would take the kernel's slow path
+        }
+        if k.dot(s, e, *min, x) == Sign::Negative {
+            *min = x;
+        } else if k.dot(s, e, *max, x) == Sign::Positive {
+            *max = x;
+        }
+    }
+}
+
+/// Seidel's loop: `items[0]` and `items[1]` are the bounding constraints (`al` ∈ A
+/// strictly x′-left of `br` ∈ B), whose optimum is `line`; the rest is in random order.
+/// Returns the final line, its encoded tangent points, the index of the last point that
+/// changed the line, and the on-line extremes of the points after it (each of which was
+/// tested against the final line).
+#[allow(clippy::too_many_arguments)]
+fn incremental<K: Kernel, A: PointSet + ?Sized, B: PointSet + ?Sized>(
+    k: K,
+    src: &Source<'_, A, B>,
+    mut line: Line,
+    al: Item,
+    br: Item,
+    a0: Point,
+    b0: Point,
+    items: &mut [Item],
+    work: &mut u64,
+) -> StepOut {
+    let (mut ta, mut tb) = ((al.enc, al.p), (br.enc, br.p));
+    let mut on_line = OnLine::at(al.p, br.p);
+    let mut last_change = 1;
+    let mut w = 0u64;
+    for t in 2..items.len() {
+        // Read a point a few items ahead: its cache miss overlaps with this iteration.
+        if let Some(ahead) = items.get_mut(t + LOOKAHEAD) {
+            src.load(ahead);
+        }
+        let p = src.load(&mut items[t]);
+        let enc = items[t].enc;
+        let in_b = enc & B_BIT != 0;
+        let o = line.side(k, p);
+        w += 1;
+        let violated = if in_b {
+            o == Orientation::Cw
+        } else {
+            o == Orientation::Ccw
+        };
+        if !violated {
+            if o == Orientation::Collinear {
+                on_line.add(k, line.s, line.e, p, in_b);
+            }
+            continue;
+        }
+        w += t as u64;
+        match step(k, p, in_b, &items[..t], a0, b0) {
+            Step::Line(l, partner) => {
+                line = l;
+                let partner_in_b = partner.enc & B_BIT != 0;
+                if in_b {
+                    tb = (enc, p);
+                    if !partner_in_b {
+                        ta = (partner.enc, partner.p);
+                    }
+                } else {
+                    ta = (enc, p);
+                    if partner_in_b {
+                        tb = (partner.enc, partner.p);
+                    }
+                }
+                on_line = OnLine::at(ta.1, tb.1);
+                last_change = t;
+            }
+            Step::Infeasible => {
+                *work += w;
+                return StepOut::Infeasible;
+            }
+            Step::Inconsistent => {
+                *work += w;
+                return StepOut::Inconsistent;
+            }
+        }
+    }
+    *work += w;
+    StepOut::Line {
+        line,
+        ta: ta.0,
+        tb: tb.0,
+        on_line,
+        last_change,
+    }
+}
+
+/// The one-dimensional LP: the most counter-clockwise direction in H of a line through
+/// `p` that keeps every earlier point on its side.
+fn step<K: Kernel>(k: K, p: Point, p_in_b: bool, earlier: &[Item], a0: Point, b0: Point) -> Step {
+    // The tightest bounds so far, as (index into `earlier`, direction from → to); plain
+    // locals rather than an `Option<struct>` keep this hot loop free of memory traffic.
+    const NONE: usize = usize::MAX;
+    let (mut up, mut up_from, mut up_to, mut up_opp) = (NONE, p, p, false);
+    let (mut lo, mut lo_from, mut lo_to, mut lo_opp) = (NONE, p, p, false);
+    for (i, &Item { p: q, enc, .. }) in earlier.iter().enumerate() {
+        let q_in_b = enc & B_BIT != 0;
+        let opposite = q_in_b != p_in_b;
+        if q == p {
+            if opposite {
+                return Step::Infeasible; // a point of both sets
+            }
+            continue;
+        }
+        // Sign of x′(q − p); q − p = ±d₀ (p, q = a₀, b₀) is answered without the kernel.
+        let sx = if (p == a0 && q == b0) || (p == b0 && q == a0) {
+            Orientation::Collinear
+        } else {
+            k.cross(a0, b0, p, q)
+        };
+        // u × (q − p) must be ≥ 0 for q in B, ≤ 0 for q in A; with u = (1, s) that is
+        // y′(q − p) − s·x′(q − p).
+        let is_upper = match sx {
+            Orientation::Collinear => {
+                let sy = k.dot(a0, b0, p, q);
+                let ok = if q_in_b {
+                    sy != Sign::Negative
+                } else {
+                    sy != Sign::Positive
+                };
+                if ok {
+                    continue;
+                }
+                return Step::Infeasible;
+            }
+            // x′(q − p) > 0
+            Orientation::Cw => q_in_b,
+            Orientation::Ccw => !q_in_b,
+        };
+        let (from, to) = if sx == Orientation::Cw { (p, q) } else { (q, p) };
+        if is_upper {
+            let take = up == NONE
+                || match k.cross(up_from, up_to, from, to) {
+                    // A smaller slope: a tighter upper bound.
+                    Orientation::Cw => true,
+                    Orientation::Collinear => opposite && !up_opp,
+                    Orientation::Ccw => false,
+                };
+            if take {
+                (up, up_from, up_to, up_opp) = (i, from, to, opposite);
+            }
+        } else {
+            let take = lo == NONE
+                || match k.cross(lo_from, lo_to, from, to) {
+                    Orientation::Ccw => true,
+                    Orientation::Collinear => opposite && !lo_opp,
+                    Orientation::Cw => false,
+                };
+            if take {
+                (lo, lo_from, lo_to, lo_opp) = (i, from, to, opposite);
+            }
+        }
+    }
+    if up == NONE {
+        // The bounding constraints always give an upper bound; only an inconsistent
+        // kernel loses it.
+        return Step::Inconsistent;
+    }
+    let mut partner = earlier[up];
+    if lo != NONE {
+        match k.cross(lo_from, lo_to, up_from, up_to) {
+            Orientation::Cw => return Step::Infeasible,
+            Orientation::Collinear if !up_opp && lo_opp => partner = earlier[lo],
+            _ => {}
+        }
+    }
+    Step::Line(Line { s: up_from, e: up_to }, partner)
+}
+
+/// Checks `items` against the line (the points not yet tested against it), adds those
+/// on it to `on_line`, and compares the parts of the two sets on the line.
+fn certify<K: Kernel>(
+    k: K,
+    line: Line,
+    ta: u32,
+    tb: u32,
+    mut on_line: OnLine,
+    items: &[Item],
+    work: &mut u64,
+) -> Option<Separation> {
+    let Line { s, e } = line;
+    // The tangent points are on the line (this fails only under an inconsistent kernel).
+    if k.orient(s, e, on_line.a_min) != Orientation::Collinear
+        || k.orient(s, e, on_line.b_min) != Orientation::Collinear
+    {
+        return None;
+    }
+    for &Item { p: x, enc, .. } in items {
+        let in_b = enc & B_BIT != 0;
+        match (k.orient(s, e, x), in_b) {
+            (Orientation::Ccw, false) | (Orientation::Cw, true) => return None,
+            (Orientation::Collinear, _) => on_line.add(k, s, e, x, in_b),
+            _ => {}
+        }
+    }
+    *work += items.len() as u64;
+    let OnLine {
+        a_min,
+        a_max,
+        b_min,
+        b_max,
+    } = on_line;
+    let overlap = k.dot(s, e, a_min, b_max) != Sign::Negative && k.dot(s, e, b_min, a_max) != Sign::Negative;
+    Some(if overlap {
+        Separation::Intersecting
+    } else {
+        Separation::Separated(Bitangent {
+            start: s,
+            end: e,
+            a: ta as usize,
+            b: (tb & !B_BIT) as usize,
+        })
+    })
+}
