@@ -6,6 +6,8 @@ pub mod intersect;
 pub mod jsonl;
 pub mod kernel;
 pub mod polygon;
+pub mod render;
+pub mod store;
 
 pub use kernel::{Exact, Fast, Kernel, Orientation, Point, Precision, Sign};
 

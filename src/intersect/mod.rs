@@ -101,12 +101,19 @@ impl Algorithm {
         }
     }
 
-    fn run_with<K: Kernel>(self, k: K, p: &ConvexPolygon, q: &ConvexPolygon) -> (bool, u64) {
+    /// Runs the algorithm with a kernel chosen at compile time, returning the answer and
+    /// the number of pruning iterations.
+    pub fn run_with<K: Kernel>(self, k: K, p: &ConvexPolygon, q: &ConvexPolygon) -> (bool, u64) {
         let mut it = Iterations::default();
         let answer = match self {
             Algorithm::Linear => Linear.intersects_probed(k, p, q, &mut it),
         };
         (answer, it.0)
+    }
+
+    /// The answer alone, with a kernel chosen at compile time.
+    pub fn intersects_with<K: Kernel>(self, k: K, p: &ConvexPolygon, q: &ConvexPolygon) -> bool {
+        self.run_with(k, p, q).0
     }
 
     /// The answer alone.
