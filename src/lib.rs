@@ -8,6 +8,8 @@ pub mod jsonl;
 pub mod kernel;
 pub mod lp;
 pub mod polygon;
+pub mod render;
+pub mod store;
 
 pub use kernel::{Exact, Fast, Kernel, Orientation, Point, Precision, Sign};
 

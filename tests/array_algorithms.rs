@@ -1,4 +1,4 @@
-//! Every algorithm in `Algorithm::ALL`, under both kernels, against the exact
+//! Every array algorithm in `Algorithm::ARRAY`, under both kernels, against the exact
 //! reference (`Linear`, and `brute_force` on small pairs) on random, touching and
 //! extreme families. The exact kernel must never disagree; the fast kernel's
 //! disagreements are counted per family and printed (a measurement, not a failure).
@@ -49,7 +49,7 @@ fn check_refs(p: &ConvexPolygon, q: &ConvexPolygon, family: &str, what: &str, fa
         );
     }
     // Linear is the reference itself (checked against the oracle in tests/reference.rs).
-    for &alg in Algorithm::ALL.iter().filter(|&&a| a != Algorithm::Linear) {
+    for &alg in Algorithm::ARRAY.iter().filter(|&&a| a != Algorithm::Linear) {
         for (a, b) in [(p, q), (q, p)] {
             let got = alg.intersects(Precision::Exact, a, b);
             assert_eq!(got, truth, "{alg}/exact wrong on {what}\np = {a:?}\nq = {b:?}");

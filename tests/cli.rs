@@ -142,9 +142,48 @@ fn gen_output_feeds_check_and_expected_matches() {
 }
 
 #[test]
-fn no_arguments_explains_and_runs_a_check() {
-    let (code, out, _) = run(&[], b"");
-    assert_eq!(code, 0);
-    assert!(out.contains("polysect check"));
-    assert!(out.contains("one-ulp-gap"));
+fn demo_checks_every_answer_and_draws_the_scene() {
+    let svg = std::env::temp_dir().join(format!("polysect-demo-test-{}.svg", std::process::id()));
+    let svg_arg = svg.to_str().unwrap();
+    let (code, out, err) = run(
+        &[
+            "demo",
+            "--polygons",
+            "12",
+            "--max-log2",
+            "9",
+            "--steps",
+            "150",
+            "--svg",
+            svg_arg,
+        ],
+        b"",
+    );
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("polysect check"), "the demo says what else there is");
+    let rows: Vec<&str> = out
+        .lines()
+        .filter(|l| l.contains("heavy") || l.starts_with("balanced"))
+        .collect();
+    assert!(rows.len() >= 12, "{out}");
+    for row in rows.iter().filter(|r| r.contains('/')) {
+        let agree = row.split_whitespace().last().unwrap();
+        let (ok, all) = agree.split_once('/').unwrap();
+        assert_eq!(ok, all, "{row}");
+    }
+    let picture = std::fs::read_to_string(&svg).unwrap();
+    assert!(picture.matches("<polygon").count() >= 12);
+    let _ = std::fs::remove_file(svg);
+}
+
+#[test]
+fn render_draws_pairs_and_error_panels() {
+    let out_file = std::env::temp_dir().join(format!("polysect-render-test-{}.svg", std::process::id()));
+    let input = format!("{}not json\n", CASES);
+    let (code, _, err) = run(&["render", "--out", out_file.to_str().unwrap()], input.as_bytes());
+    assert_eq!(code, 0, "{err}");
+    let picture = std::fs::read_to_string(&out_file).unwrap();
+    assert_eq!(picture.matches("<polygon").count(), 2 * EXPECTED.len());
+    assert!(picture.contains("error"));
+    let _ = std::fs::remove_file(out_file);
 }

@@ -10,7 +10,8 @@ use rand::SeedableRng;
 use rand::rngs::SmallRng;
 use std::io::{self, BufRead, BufWriter, Write};
 use std::process::ExitCode;
-use std::time::Instant;
+
+mod demo;
 
 #[derive(Parser)]
 #[command(
@@ -71,6 +72,37 @@ enum Command {
     },
     /// List the algorithms, precisions and generator families.
     List,
+    /// Run a scene of editable polygons through mixed edit/query workloads under every
+    /// strategy, check every answer, and draw a small scene as SVG (the default command).
+    Demo {
+        /// Polygons in the scene.
+        #[arg(long, default_value_t = 48)]
+        polygons: usize,
+        /// Largest polygon size, as a power of two (sizes are log-uniform from 2^3).
+        #[arg(long, default_value_t = 18)]
+        max_log2: u32,
+        /// Operations per workload.
+        #[arg(long, default_value_t = 2000)]
+        steps: usize,
+        #[arg(long, default_value_t = 7)]
+        seed: u64,
+        /// Where to write the SVG picture of a small scene.
+        #[arg(long, default_value = "polysect-demo.svg")]
+        svg: String,
+    },
+    /// Draw JSON Lines pairs (the `check` input format) as SVG panels with their answers.
+    Render {
+        /// Input file (JSON Lines); standard input when absent.
+        file: Option<String>,
+        /// Output SVG file.
+        #[arg(long, default_value = "polysect-pairs.svg")]
+        out: String,
+        /// At most this many pairs are drawn.
+        #[arg(long, default_value_t = 24)]
+        limit: usize,
+    },
+    /// Measure the planner's cost model (conversion vs sampling crossover) on this machine.
+    Calibrate,
 }
 
 #[derive(Clone, Copy)]
@@ -126,7 +158,7 @@ enum OrderArg {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        None => overview(),
+        None => demo::run(48, 18, 2000, 7, "polysect-demo.svg"),
         Some(Command::Check {
             file,
             algorithm,
@@ -146,6 +178,15 @@ fn main() -> ExitCode {
             seed,
         }) => gen_pairs(family, n, count, relation, order, seed),
         Some(Command::List) => list(),
+        Some(Command::Demo {
+            polygons,
+            max_log2,
+            steps,
+            seed,
+            svg,
+        }) => demo::run(polygons, max_log2, steps, seed, &svg),
+        Some(Command::Render { file, out, limit }) => render(file.as_deref(), &out, limit),
+        Some(Command::Calibrate) => calibrate(),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -266,78 +307,55 @@ fn list() -> io::Result<()> {
     Ok(())
 }
 
-/// What `polysect` with no arguments does: say what the tool is, then run a small
-/// generated check of every algorithm against the exact reference.
-fn overview() -> io::Result<()> {
-    let mut out = BufWriter::new(io::stdout().lock());
-    writeln!(
-        out,
-        "polysect: dynamic convex polygons with sublinear intersection queries.\n"
-    )?;
-    writeln!(
-        out,
-        "  polysect check [FILE]   answer JSON Lines pairs {{\"p\": [[x,y],...], \"q\": [...]}}"
-    )?;
-    writeln!(
-        out,
-        "  polysect crossings [FILE]  points where two simple polygons' boundaries meet"
-    )?;
-    writeln!(
-        out,
-        "  polysect gen            write generated pairs in that format"
-    )?;
-    writeln!(
-        out,
-        "  polysect list           algorithms, precisions, generator families"
-    )?;
-    writeln!(out, "  polysect --help         everything else\n")?;
-    writeln!(
-        out,
-        "A small generated check: every algorithm and precision against the exact"
-    )?;
-    writeln!(
-        out,
-        "O(n+m) reference on 200 seeded pairs per family (n = 64 vertices each).\n"
-    )?;
-    writeln!(
-        out,
-        "{:<18} {:<10} {:<6} {:>9} {:>10} {:>12}",
-        "family", "algorithm", "kernel", "pairs", "wrong", "µs/query"
-    )?;
-    let mut rng = SmallRng::seed_from_u64(2026);
-    for &family in Family::ALL {
-        let pairs: Vec<(ConvexPolygon, ConvexPolygon)> = (0..200)
-            .map(|_| generate::pair(family, 64, Relation::Any, &mut rng))
-            .collect();
-        let truth: Vec<bool> = pairs
-            .iter()
-            .map(|(p, q)| polysect::intersect::brute_force(polysect::Exact, p, q))
-            .collect();
-        for &algorithm in Algorithm::ALL {
-            for precision in Precision::ALL {
-                let start = Instant::now();
-                let answers: Vec<bool> = pairs
-                    .iter()
-                    .map(|(p, q)| algorithm.intersects(precision, p, q))
-                    .collect();
-                let micros = start.elapsed().as_secs_f64() * 1e6 / pairs.len() as f64;
-                let wrong = answers.iter().zip(&truth).filter(|(a, t)| a != t).count();
-                writeln!(
-                    out,
-                    "{:<18} {:<10} {:<6} {:>9} {:>10} {:>12.2}",
-                    family.name(),
-                    algorithm.name(),
-                    precision.name(),
-                    pairs.len(),
-                    wrong,
-                    micros
-                )?;
-            }
+fn render(file: Option<&str>, out_path: &str, limit: usize) -> io::Result<()> {
+    use polysect::render::{Panel, Style, svg};
+    let mut input = open_input(file)?;
+    let mut panels = Vec::new();
+    let mut line_no = 0;
+    for_each_line(&mut input, |line| {
+        line_no += 1;
+        if panels.len() >= limit {
+            return Ok(());
         }
-    }
+        let panel = match jsonl::parse_pair(line).and_then(|pair| jsonl::convex_pair(&pair)) {
+            Ok((p, q)) => {
+                let hit = Algorithm::Linear.intersects(Precision::Exact, &p, &q);
+                let style = if hit { Style::Highlight } else { Style::Other };
+                Panel {
+                    polygons: vec![(p.into_vertices(), Style::Plain), (q.into_vertices(), style)],
+                    caption: format!("line {line_no}: {}", if hit { "intersect" } else { "disjoint" }),
+                }
+            }
+            Err(e) => Panel {
+                polygons: vec![],
+                caption: format!(
+                    "line {line_no}: error: {}",
+                    e.message.chars().take(40).collect::<String>()
+                ),
+            },
+        };
+        panels.push(panel);
+        Ok(())
+    })?;
+    std::fs::write(out_path, svg(&panels, 4))
+        .map_err(|e| io::Error::new(e.kind(), format!("cannot write {out_path}: {e}")))?;
+    eprintln!("wrote {} panel(s) to {out_path}", panels.len());
+    Ok(())
+}
+
+fn calibrate() -> io::Result<()> {
+    eprintln!("measuring conversion and sampled-query costs (a few seconds)...");
+    let costs = polysect::store::CostModel::calibrate(polysect::Exact);
+    let mut out = io::stdout().lock();
     writeln!(
         out,
-        "\n\"wrong\" counts answers that differ from the O(n·m) exact oracle."
+        "{}",
+        serde_json::to_string_pretty(&costs).expect("serialisable")
     )?;
-    out.flush()
+    writeln!(
+        out,
+        "Polygons of at most {} vertices are converted at once; larger ones after their sampled\n\
+         queries since the last edit cost as much as converting them ({:.1} ns/vertex vs {:.1} ns·√n per query).",
+        costs.crossover, costs.convert_ns_per_vertex, costs.sampled_ns_per_sqrt_n
+    )
 }

@@ -111,6 +111,18 @@ impl Algorithm {
         Algorithm::Convert,
     ];
 
+    /// The tests on sorted arrays: the reference and the O(log n) algorithms.
+    pub const ARRAY: &'static [Algorithm] = &[
+        Algorithm::Linear,
+        Algorithm::Barba,
+        Algorithm::Dobkin,
+        Algorithm::ChazelleDobkin,
+    ];
+
+    /// The tests on linked polygons (through [`Algorithm::run`] they link array inputs in
+    /// a shuffled arena order first, which costs O(n) per call).
+    pub const LINKED: &'static [Algorithm] = &[Algorithm::Clm, Algorithm::Convert];
+
     /// The O(log n) tests on sorted arrays (the thesis's experiment 2 checks that
     /// their iteration counts grow like log n).
     pub const LOGARITHMIC: &'static [Algorithm] =
@@ -141,7 +153,9 @@ impl Algorithm {
         }
     }
 
-    fn run_with<K: Kernel>(self, k: K, p: &ConvexPolygon, q: &ConvexPolygon) -> (bool, u64) {
+    /// Runs the algorithm with a kernel chosen at compile time, returning the answer and
+    /// the number of pruning iterations.
+    pub fn run_with<K: Kernel>(self, k: K, p: &ConvexPolygon, q: &ConvexPolygon) -> (bool, u64) {
         let mut it = Iterations::default();
         let answer = match self {
             Algorithm::Linear => Linear.intersects_probed(k, p, q, &mut it),
@@ -152,6 +166,11 @@ impl Algorithm {
             Algorithm::Convert => run_linked(&<Convert>::default(), k, p, q, &mut it),
         };
         (answer, it.0)
+    }
+
+    /// The answer alone, with a kernel chosen at compile time.
+    pub fn intersects_with<K: Kernel>(self, k: K, p: &ConvexPolygon, q: &ConvexPolygon) -> bool {
+        self.run_with(k, p, q).0
     }
 
     /// The answer alone.

@@ -13,7 +13,8 @@ use crate::kernel::{Exact, Kernel, Orientation, Point};
 /// # Complexity
 /// Construction is O(n) for n input vertices (error reporting for a vertex list in
 /// convex position but out of order costs O(n log n)).
-#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(try_from = "Vec<Point>", into = "Vec<Point>")]
 pub struct ConvexPolygon {
     vertices: Vec<Point>,
 }
@@ -123,6 +124,12 @@ impl ConvexPolygon {
             1 => Ok(()),
             w => Err(format!("winds {w} times")),
         }
+    }
+}
+
+impl From<ConvexPolygon> for Vec<Point> {
+    fn from(p: ConvexPolygon) -> Self {
+        p.vertices
     }
 }
 

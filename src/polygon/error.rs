@@ -22,6 +22,8 @@ pub enum PolygonError {
     /// Every turn goes the same way but the boundary winds around more than once
     /// (a star polygon such as the pentagram).
     WindsMoreThanOnce { times: usize },
+    /// A polygon with interior rings (holes) given where a convex polygon is expected.
+    HasHoles { count: usize },
 }
 
 impl fmt::Display for PolygonError {
@@ -54,6 +56,12 @@ impl fmt::Display for PolygonError {
                 f,
                 "the boundary winds around {times} times; a convex polygon winds once"
             ),
+            PolygonError::HasHoles { count } => {
+                write!(
+                    f,
+                    "the polygon has {count} interior ring(s); a convex polygon has no holes"
+                )
+            }
         }
     }
 }

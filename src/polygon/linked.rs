@@ -449,6 +449,20 @@ impl LinkedPolygon {
     }
 }
 
+/// Serialised as its vertex list, counter-clockwise from [`LinkedPolygon::first`];
+/// deserialised through the same validation as [`LinkedPolygon::from_points`].
+impl serde::Serialize for LinkedPolygon {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        self.to_convex().serialize(s)
+    }
+}
+
+impl<'de> serde::Deserialize<'de> for LinkedPolygon {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        ConvexPolygon::deserialize(d).map(|p| LinkedPolygon::from_convex(&p))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -527,6 +541,23 @@ mod tests {
         }
         assert_eq!(p.move_vertex(b, Point::new(5., -1.)), Ok(Point::new(4., 0.)));
         p.debug_validate().unwrap();
+    }
+
+    #[test]
+    fn serde_round_trip_validates() {
+        let p = square();
+        let text = serde_json::to_string(&p).unwrap();
+        assert_eq!(
+            text,
+            r#"[{"x":0.0,"y":0.0},{"x":4.0,"y":0.0},{"x":4.0,"y":4.0},{"x":0.0,"y":4.0}]"#
+        );
+        let back: LinkedPolygon = serde_json::from_str(&text).unwrap();
+        assert_eq!(back.to_convex(), p.to_convex());
+        let bad = r#"[{"x":0,"y":0},{"x":4,"y":0},{"x":4,"y":4},{"x":2,"y":1},{"x":0,"y":4}]"#;
+        let err = serde_json::from_str::<LinkedPolygon>(bad)
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("vertex 3 is reflex"), "{err}");
     }
 
     #[test]

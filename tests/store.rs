@@ -1,0 +1,275 @@
+//! The scene: operations and stale handles, planned answers against the exact reference
+//! under random edit/query streams for every strategy, broad phase against brute force,
+//! parallel batches against sequential queries.
+
+use polysect::generate::{self, Family, Relation};
+use polysect::intersect::{ArrayIntersection, Linear};
+use polysect::store::{Scene, SceneError, Strategy};
+use polysect::{ConvexPolygon, EditError, LinkedPolygon, Point, VertexId};
+use rand::rngs::SmallRng;
+use rand::{Rng, SeedableRng};
+
+const SEEDS: [u64; 3] = [0x5ce1, 0x5ce2, 0x5ce3];
+
+fn truth(scene: &Scene, a: polysect::store::PolygonId, b: polysect::store::PolygonId) -> bool {
+    let p = scene.polygon(a).unwrap().to_convex();
+    let q = scene.polygon(b).unwrap().to_convex();
+    Linear.intersects(&p, &q)
+}
+
+/// A scene of `count` polygons of mixed sizes scattered so that some overlap.
+fn scattered_scene(rng: &mut SmallRng, count: usize, max_log2: u32) -> Scene {
+    let mut scene = Scene::new();
+    for _ in 0..count {
+        let n = 1usize << rng.random_range(2..=max_log2);
+        let (p, _) = generate::pair(Family::NonUniform, n, Relation::Any, rng);
+        let (dx, dy) = (rng.random_range(-4.0..4.0), rng.random_range(-4.0..4.0));
+        let moved = p.map(|v| Point::new(v.x + dx, v.y + dy)).unwrap_or(p);
+        scene.insert(LinkedPolygon::from_convex_shuffled(&moved, rng));
+    }
+    scene
+}
+
+/// A random edit that is usually valid: a vertex nudged along its position vector, a
+/// point pushed out of an edge, or a removal.
+fn random_edit(
+    scene: &mut Scene,
+    id: polysect::store::PolygonId,
+    rng: &mut SmallRng,
+) -> Result<(), SceneError> {
+    let poly = scene.polygon(id)?;
+    let v: VertexId = poly.random_vertex(rng);
+    let a = poly.point(v)?;
+    let b = poly.point(poly.next(v)?)?;
+    let c = poly.to_convex();
+    let (cx, cy) = centroid(&c);
+    match rng.random_range(0..3) {
+        0 => {
+            let f = 1.0 + rng.random_range(-0.05..0.05);
+            scene
+                .move_vertex(id, v, Point::new(cx + (a.x - cx) * f, cy + (a.y - cy) * f))
+                .map(|_| ())
+        }
+        1 => {
+            let f = 1.0 + rng.random_range(0.0..0.02);
+            let (mx, my) = ((a.x + b.x) / 2.0, (a.y + b.y) / 2.0);
+            scene
+                .insert_vertex(id, v, Point::new(cx + (mx - cx) * f, cy + (my - cy) * f))
+                .map(|_| ())
+        }
+        _ => scene.remove_vertex(id, v).map(|_| ()),
+    }
+}
+
+fn centroid(c: &ConvexPolygon) -> (f64, f64) {
+    let n = c.len() as f64;
+    let (sx, sy) = c
+        .vertices()
+        .iter()
+        .fold((0.0, 0.0), |(x, y), p| (x + p.x, y + p.y));
+    (sx / n, sy / n)
+}
+
+#[test]
+fn handles_go_stale_and_failed_operations_change_nothing() {
+    let mut scene = Scene::new();
+    let a = scene.insert_points([[0., 0.], [1., 0.], [0., 1.]]).unwrap();
+    let b = scene.insert_points([[5., 5.], [6., 5.], [5., 6.]]).unwrap();
+    assert!(matches!(
+        scene.insert_points([[0., 0.], [1., 1.]]),
+        Err(SceneError::Polygon(_))
+    ));
+    assert_eq!(scene.len(), 2);
+    scene.remove(a).unwrap();
+    assert_eq!(scene.remove(a).unwrap_err(), SceneError::StalePolygon);
+    assert_eq!(scene.intersects(a, b), Err(SceneError::StalePolygon));
+    // The freed slot is reused; the old handle still refuses.
+    let c = scene.insert_points([[0., 0.], [1., 0.], [0., 1.]]).unwrap();
+    assert_ne!(a, c);
+    assert_eq!(scene.polygon(a).unwrap_err(), SceneError::StalePolygon);
+    let first = scene.polygon(c).unwrap().first();
+    let before = scene.polygon(c).unwrap().to_convex();
+    let err = scene.move_vertex(c, first, Point::new(0.5, 0.5)).unwrap_err();
+    assert!(matches!(
+        err,
+        SceneError::Edit(EditError::WouldBreakConvexity { .. })
+    ));
+    assert_eq!(
+        scene.remove_vertex(c, first).unwrap_err(),
+        SceneError::Edit(EditError::TooFewVertices)
+    );
+    assert_eq!(scene.polygon(c).unwrap().to_convex(), before);
+    assert_eq!(scene.version(c), Ok(0));
+    assert!(!scene.intersects(b, c).unwrap());
+    assert!(scene.intersects(c, c).unwrap());
+    scene.debug_validate().unwrap();
+}
+
+#[test]
+fn an_edit_after_a_snapshot_never_yields_a_stale_answer() {
+    for strategy in Strategy::ALL {
+        let mut scene = Scene::new();
+        scene.set_strategy(strategy);
+        let a = scene
+            .insert_points([[0., 0.], [2., 0.], [2., 2.], [0., 2.]])
+            .unwrap();
+        let b = scene.insert_points([[3., 0.], [4., 0.], [4., 2.]]).unwrap();
+        for _ in 0..3 {
+            assert!(!scene.intersects(a, b).unwrap());
+        }
+        let corner = scene
+            .polygon(a)
+            .unwrap()
+            .next(scene.polygon(a).unwrap().first())
+            .unwrap();
+        scene.move_vertex(a, corner, Point::new(3.0, 0.0)).unwrap();
+        assert!(
+            !scene.has_snapshot(a).unwrap(),
+            "{strategy:?}: the edit drops the snapshot"
+        );
+        assert!(scene.intersects(a, b).unwrap(), "{strategy:?}");
+        scene.move_vertex(a, corner, Point::new(2.5, 0.0)).unwrap();
+        assert!(!scene.intersects(a, b).unwrap(), "{strategy:?}");
+        scene.debug_validate().unwrap();
+    }
+}
+
+#[test]
+fn planned_answers_equal_the_reference_under_edit_query_streams() {
+    for seed in SEEDS {
+        for strategy in Strategy::ALL {
+            let mut rng = SmallRng::seed_from_u64(seed);
+            let mut scene = scattered_scene(&mut rng, 24, 12);
+            scene.set_strategy(strategy);
+            let ids: Vec<_> = scene.ids().collect();
+            let mut queries = 0;
+            for step in 0..3_000 {
+                let a = ids[rng.random_range(0..ids.len())];
+                if rng.random_bool(0.3) {
+                    let _ = random_edit(&mut scene, a, &mut rng);
+                } else {
+                    let b = ids[rng.random_range(0..ids.len())];
+                    let want = truth(&scene, a, b);
+                    assert_eq!(
+                        scene.intersects(a, b).unwrap(),
+                        want,
+                        "seed {seed} {strategy:?} step {step}"
+                    );
+                    queries += 1;
+                }
+                if step % 500 == 0 {
+                    scene.debug_validate().unwrap();
+                }
+            }
+            assert!(queries > 1_500);
+            let s = scene.stats();
+            match strategy {
+                Strategy::Sampled => assert_eq!(s.conversions, 0),
+                Strategy::Convert => assert!(s.throwaway_conversions > 0 && s.conversions == 0),
+                Strategy::Cached => assert!(s.conversions > 0 && s.sampled_tests == 0),
+                Strategy::Planner => assert!(s.conversions > 0),
+            }
+        }
+    }
+}
+
+#[test]
+fn broad_phase_and_scene_queries_equal_brute_force() {
+    for seed in SEEDS {
+        let mut rng = SmallRng::seed_from_u64(seed ^ 0xb0);
+        let mut scene = scattered_scene(&mut rng, 60, 9);
+        // Touching boxes and polygons: integer squares sharing edges and corners.
+        for i in 0..6 {
+            let x = i as f64;
+            scene
+                .insert_points([[x, 10.], [x + 1., 10.], [x + 1., 11.], [x, 11.]])
+                .unwrap();
+        }
+        for round in 0..4 {
+            let ids: Vec<_> = scene.ids().collect();
+            for _ in 0..50 {
+                let id = ids[rng.random_range(0..ids.len())];
+                let _ = random_edit(&mut scene, id, &mut rng);
+            }
+            if round == 2 {
+                scene.remove(ids[3]).unwrap();
+            }
+            let ids: Vec<_> = scene.ids().collect();
+            let mut want_candidates = Vec::new();
+            let mut want_pairs = Vec::new();
+            for (i, &a) in ids.iter().enumerate() {
+                for &b in &ids[i + 1..] {
+                    if scene
+                        .bounding_box(a)
+                        .unwrap()
+                        .overlaps(&scene.bounding_box(b).unwrap())
+                    {
+                        want_candidates.push((a, b));
+                    }
+                    if truth(&scene, a, b) {
+                        want_pairs.push((a, b));
+                    }
+                }
+            }
+            assert_eq!(
+                scene.candidate_pairs(),
+                want_candidates,
+                "seed {seed} round {round}"
+            );
+            assert_eq!(
+                scene.intersecting_pairs(),
+                want_pairs,
+                "seed {seed} round {round}"
+            );
+            let a = ids[round];
+            let want: Vec<_> = ids
+                .iter()
+                .copied()
+                .filter(|&b| b != a && truth(&scene, a, b))
+                .collect();
+            assert_eq!(scene.intersecting(a).unwrap(), want);
+            scene.debug_validate().unwrap();
+        }
+    }
+}
+
+#[test]
+fn parallel_batches_equal_sequential_queries_for_any_thread_count() {
+    let mut rng = SmallRng::seed_from_u64(0xba7c);
+    let build = |rng: &mut SmallRng| scattered_scene(rng, 40, 11);
+    let ids: Vec<_> = build(&mut SmallRng::seed_from_u64(1)).ids().collect();
+    let mut pairs: Vec<_> = (0..400)
+        .map(|_| {
+            (
+                ids[rng.random_range(0..ids.len())],
+                ids[rng.random_range(0..ids.len())],
+            )
+        })
+        .collect();
+    let mut sequential_scene = build(&mut SmallRng::seed_from_u64(1));
+    let stale = sequential_scene
+        .insert_points([[0., 0.], [1., 0.], [0., 1.]])
+        .unwrap();
+    sequential_scene.remove(stale).unwrap();
+    pairs.push((stale, ids[0]));
+    let sequential: Vec<_> = pairs
+        .iter()
+        .map(|&(a, b)| sequential_scene.intersects(a, b))
+        .collect();
+    for threads in [1, 2, 3] {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        let mut scene = build(&mut SmallRng::seed_from_u64(1));
+        let s = scene.insert_points([[0., 0.], [1., 0.], [0., 1.]]).unwrap();
+        scene.remove(s).unwrap();
+        let batch = pool.install(|| scene.intersects_batch(&pairs));
+        assert_eq!(batch, sequential, "{threads} threads");
+        assert_eq!(
+            scene.stats(),
+            sequential_scene.stats(),
+            "{threads} threads: same plan"
+        );
+    }
+}
