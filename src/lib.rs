@@ -1,6 +1,8 @@
 //! polysect: dynamic convex polygons with sublinear intersection queries.
 #![forbid(unsafe_code)]
 
+#[doc(hidden)]
+pub mod fuzzing;
 pub mod generate;
 pub mod intersect;
 pub mod jsonl;
