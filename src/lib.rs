@@ -1,7 +1,42 @@
 //! polysect: dynamic convex polygons with sublinear intersection queries.
+//!
+//! Convex polygons live either as validated sorted arrays ([`ConvexPolygon`]) or as
+//! arena-backed doubly linked lists ([`LinkedPolygon`]) with O(1) validated edits and
+//! O(1) uniform vertex sampling. "Do P and Q intersect?" is answered in O(log n) on
+//! arrays ([`intersect::Barba`], [`intersect::Dobkin`], [`intersect::ChazelleDobkin`]),
+//! in expected O(√n) straight on linked lists ([`intersect::Clm`], built on the 2D LP in
+//! [`lp`]), or by the O(n + m) reference [`intersect::Linear`]. A [`store::Scene`] keeps
+//! many editable polygons and plans each query. [`crossings`] finds the points where
+//! two simple polygons' boundaries meet.
+//!
+//! Polygons are closed sets: touching is intersecting. Every algorithm is generic over
+//! a [`Kernel`]: [`Exact`] (the default) decides every predicate exactly for every
+//! finite `f64` input; [`Fast`] uses plain floating point.
+//!
+//! ```
+//! use polysect::intersect::{ArrayIntersection, Barba, Clm, LinkedIntersection};
+//! use polysect::{ConvexPolygon, Fast, LinkedPolygon, Point};
+//!
+//! // Either orientation, any start vertex; repeats and collinear vertices are cleaned.
+//! let p = ConvexPolygon::new([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+//! let q = ConvexPolygon::new([[2.0, 2.0], [3.0, 2.0], [3.0, 3.0]])?;
+//! assert!(Barba.intersects(&p, &q)); // a shared vertex counts
+//! assert!(Barba.intersects_with(Fast, &p, &q));
+//!
+//! // Linked polygons: edits keep convexity or are refused without changing anything.
+//! let mut lp = LinkedPolygon::from_convex(&p);
+//! let lq = LinkedPolygon::from_convex(&q);
+//! let a = lp.first();
+//! lp.insert_after(a, Point::new(1.0, -0.5))?;
+//! assert!(lp.insert_after(a, Point::new(1.0, 0.5)).is_err());
+//! assert!(Clm.intersects(&lp, &lq));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 #![forbid(unsafe_code)]
 
 pub mod crossings;
+#[doc(hidden)]
+pub mod fuzzing;
 pub mod generate;
 pub mod intersect;
 pub mod jsonl;

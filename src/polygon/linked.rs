@@ -322,6 +322,19 @@ impl LinkedPolygon {
         g
     }
 
+    /// Vertices the arena can hold without reallocating (nodes and handle slots, the
+    /// smaller of the two): with dense storage it tracks the largest size the polygon
+    /// has had, never the number of edits.
+    pub fn capacity(&self) -> usize {
+        self.nodes.capacity().min(self.slots.capacity())
+    }
+
+    /// Memory held by the arena in bytes (nodes plus handle slots), for churn tests.
+    pub fn arena_bytes(&self) -> usize {
+        self.nodes.capacity() * std::mem::size_of::<Node>()
+            + self.slots.capacity() * std::mem::size_of::<Slot>() * 2
+    }
+
     /// A uniformly random vertex. O(1).
     pub fn random_vertex<R: Rng + ?Sized>(&self, rng: &mut R) -> VertexId {
         self.id_at(rng.random_range(0..self.len()))

@@ -1,0 +1,242 @@
+//! Fuzz harnesses: each takes arbitrary bytes, turns them into an input, runs the
+//! library on it and panics only when an invariant is broken. The same functions back
+//! the seeded random-input driver in `tests/fuzz.rs` (run by CI) and the `cargo fuzz`
+//! targets in `fuzz/`.
+//!
+//! Inputs print as Rust source (`FuzzPoint`'s `Debug`), so a failing case pastes straight
+//! into a regression test.
+
+use crate::intersect::{Algorithm, ArrayIntersection, Linear, brute_force};
+use crate::jsonl;
+use crate::kernel::{Exact, Point, Precision};
+use crate::polygon::{ConvexPolygon, EditError, LinkedPolygon, PolygonError, convex_hull};
+use std::fmt;
+
+/// A point whose `Debug` is the Rust expression that builds it.
+#[derive(Clone, Copy, PartialEq)]
+pub struct FuzzPoint(pub Point);
+
+fn rust_f64(x: f64) -> String {
+    if x.is_nan() {
+        "f64::NAN".into()
+    } else if x == f64::INFINITY {
+        "f64::INFINITY".into()
+    } else if x == f64::NEG_INFINITY {
+        "f64::NEG_INFINITY".into()
+    } else {
+        format!("{x:?}")
+    }
+}
+
+impl fmt::Debug for FuzzPoint {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "Point::new({}, {})", rust_f64(self.0.x), rust_f64(self.0.y))
+    }
+}
+
+/// Values that stress the predicates: zeros, ulps, subnormals, the extremes of the
+/// exponent range, large offsets.
+const SPECIAL: [f64; 16] = [
+    0.0,
+    -0.0,
+    1.0,
+    -1.0,
+    5e-324,
+    -5e-324,
+    f64::MIN_POSITIVE,
+    f64::MAX,
+    f64::MIN,
+    1.0000000000000002,
+    0.9999999999999999,
+    1125899906842624.0, // 2^50
+    4503599627370496.0, // 2^52
+    1e-300,
+    1e300,
+    f64::NAN,
+];
+
+/// Reads bytes as a stream of coordinates: one selector byte, then either a special
+/// value, a small integer (exact touchings), a raw bit pattern (anything, NaN included)
+/// or a value near 2^50.
+pub struct Decoder<'a> {
+    bytes: &'a [u8],
+}
+
+impl<'a> Decoder<'a> {
+    pub fn new(bytes: &'a [u8]) -> Self {
+        Decoder { bytes }
+    }
+
+    pub fn byte(&mut self) -> Option<u8> {
+        let (&b, rest) = self.bytes.split_first()?;
+        self.bytes = rest;
+        Some(b)
+    }
+
+    pub fn f64(&mut self) -> Option<f64> {
+        let sel = self.byte()?;
+        Some(match sel % 4 {
+            0 => SPECIAL[(sel / 4) as usize % SPECIAL.len()],
+            1 => (self.byte()? as i8) as f64,
+            2 => {
+                let mut raw = [0u8; 8];
+                for b in &mut raw {
+                    *b = self.byte()?;
+                }
+                f64::from_le_bytes(raw)
+            }
+            _ => 1125899906842624.0 + (self.byte()? as i8) as f64 * 0.25,
+        })
+    }
+
+    pub fn point(&mut self) -> Option<Point> {
+        Some(Point::new(self.f64()?, self.f64()?))
+    }
+
+    /// Up to `max` points (the first byte says how many).
+    pub fn points(&mut self, max: usize) -> Vec<Point> {
+        let n = self.byte().map_or(0, |b| b as usize % (max + 1));
+        (0..n).map_while(|_| self.point()).collect()
+    }
+}
+
+/// Construction from arbitrary coordinates: never panics; a polygon that is built is
+/// valid and made of input vertices; an error names an input index in range; the
+/// clockwise list gives the same result. Returns whether a polygon was built.
+pub fn polygon_construction(bytes: &[u8]) -> bool {
+    let pts = Decoder::new(bytes).points(12);
+    let result = ConvexPolygon::new(pts.iter().copied());
+    match &result {
+        Ok(p) => {
+            p.debug_validate()
+                .unwrap_or_else(|e| panic!("{e}: {:?}", debug_points(&pts)));
+            assert!(p.vertices().iter().all(|v| pts.contains(v)));
+        }
+        Err(PolygonError::NonFinite { index, .. }) => assert!(!pts[*index].is_finite()),
+        Err(
+            PolygonError::Reflex { index }
+            | PolygonError::OutOfOrder { index }
+            | PolygonError::DoublesBack { index },
+        ) => {
+            assert!(*index < pts.len())
+        }
+        Err(_) => {}
+    }
+    let mut reversed = pts.clone();
+    reversed.reverse();
+    let back = ConvexPolygon::new(reversed);
+    assert_eq!(
+        result.is_ok(),
+        back.is_ok(),
+        "orientation changed validity: {:?}",
+        debug_points(&pts)
+    );
+    if let Ok(h) = convex_hull(&pts) {
+        h.debug_validate().unwrap();
+    }
+    result.is_ok()
+}
+
+fn debug_points(pts: &[Point]) -> Vec<FuzzPoint> {
+    pts.iter().map(|&p| FuzzPoint(p)).collect()
+}
+
+/// A sequence of edits on a linked polygon: each accepted edit keeps every invariant,
+/// each refused edit changes nothing, stale handles are always refused. Returns whether
+/// some edit was accepted.
+pub fn edit_sequence(bytes: &[u8]) -> bool {
+    let mut d = Decoder::new(bytes);
+    let start = d.points(8);
+    let Ok(hull) = convex_hull(&start) else {
+        return false;
+    };
+    let mut poly = LinkedPolygon::from_convex(&hull);
+    let mut accepted = false;
+    let mut removed = Vec::new();
+    while let Some(op) = d.byte() {
+        let handles: Vec<_> = poly.iter().map(|(id, _)| id).collect();
+        let v = handles[op as usize / 4 % handles.len()];
+        let before = poly.to_convex();
+        let result = match op % 4 {
+            0 => d.point().map(|p| poly.insert_after(v, p).map(|_| ())),
+            1 => Some(poly.remove(v).map(|_| removed.push(v))),
+            2 => d.point().map(|p| poly.move_vertex(v, p).map(|_| ())),
+            _ => removed.last().map(|&gone| {
+                assert_eq!(poly.point(gone), Err(EditError::StaleHandle));
+                Ok(())
+            }),
+        };
+        match result {
+            None => break,
+            Some(Ok(())) => {
+                accepted |= op % 4 != 3;
+                poly.debug_validate()
+                    .unwrap_or_else(|e| panic!("after op {op}: {e}"))
+            }
+            Some(Err(_)) => assert_eq!(poly.to_convex(), before, "a refused edit changed the polygon"),
+        }
+    }
+    accepted
+}
+
+/// One `check` line from arbitrary bytes: the reply is one JSON object with either
+/// `intersects` or `error`, for every algorithm and precision. Returns whether the line
+/// was answered (not an error).
+pub fn json_line(bytes: &[u8]) -> bool {
+    let mut answered = false;
+    for &algorithm in Algorithm::ALL {
+        for precision in Precision::ALL {
+            let reply = jsonl::check_line(bytes, |p, q| algorithm.intersects(precision, p, q));
+            let v: serde_json::Value = serde_json::from_str(&reply).expect("the reply is JSON");
+            assert!(
+                v.get("intersects").is_some() != v.get("error").is_some(),
+                "{reply}"
+            );
+            answered |= v.get("intersects").is_some();
+        }
+    }
+    answered
+}
+
+/// Two polygons from arbitrary coordinates (their hulls): every algorithm agrees with
+/// [`Linear`] and the O(n·m) oracle under the exact kernel, and none panics under the
+/// fast kernel. Returns whether both hulls existed (the pair was tested).
+pub fn algorithms_agree(bytes: &[u8]) -> bool {
+    let mut d = Decoder::new(bytes);
+    let (a, b) = (d.points(16), d.points(16));
+    let (Ok(p), Ok(q)) = (convex_hull(&a), convex_hull(&b)) else {
+        return false;
+    };
+    let truth = brute_force(Exact, &p, &q);
+    assert_eq!(
+        Linear.intersects(&p, &q),
+        truth,
+        "linear: {:?} {:?}",
+        debug_points(&a),
+        debug_points(&b)
+    );
+    for &algorithm in Algorithm::ALL {
+        assert_eq!(
+            algorithm.intersects(Precision::Exact, &p, &q),
+            truth,
+            "{algorithm}: {:?} {:?}",
+            debug_points(p.vertices()),
+            debug_points(q.vertices())
+        );
+        let _ = algorithm.intersects(Precision::Fast, &p, &q);
+    }
+    true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn debug_prints_rust_source() {
+        let p = FuzzPoint(Point::new(f64::NAN, -0.0));
+        assert_eq!(format!("{p:?}"), "Point::new(f64::NAN, -0.0)");
+        let q = FuzzPoint(Point::new(5e-324, f64::NEG_INFINITY));
+        assert_eq!(format!("{q:?}"), "Point::new(5e-324, f64::NEG_INFINITY)");
+    }
+}

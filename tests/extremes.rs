@@ -1,0 +1,158 @@
+//! Every algorithm × both kernels at the extremes of f64: coordinates near f64::MAX and
+//! f64::MIN_POSITIVE, subnormals, unit-size polygons offset by 2^52, 2^22-vertex polygons
+//! and triangles against them. Under the exact kernel every algorithm must equal the
+//! reference; under the fast kernel nothing may panic (wrong answers are counted).
+
+use polysect::generate::{self, Family, Relation, map_pair};
+use polysect::intersect::{Algorithm, ArrayIntersection, Linear, brute_force};
+use polysect::{ConvexPolygon, Exact, Point, Precision};
+use rand::rngs::SmallRng;
+use rand::{Rng, SeedableRng};
+
+type Pair = (ConvexPolygon, ConvexPolygon);
+
+fn check_all(pair: &Pair, what: &str, fast_wrong: &mut usize, total: &mut usize) {
+    let (p, q) = pair;
+    let truth = Linear.intersects(p, q);
+    for &algorithm in Algorithm::ALL {
+        assert_eq!(
+            algorithm.intersects(Precision::Exact, p, q),
+            truth,
+            "{algorithm} exact: {what}"
+        );
+        assert_eq!(
+            algorithm.intersects(Precision::Exact, q, p),
+            truth,
+            "{algorithm} exact swapped: {what}"
+        );
+        *total += 1;
+        if algorithm.intersects(Precision::Fast, p, q) != truth {
+            *fast_wrong += 1;
+        }
+    }
+}
+
+/// Touching and one-step-apart pairs on integer coordinates (below 2^36), which the maps
+/// below carry into extreme ranges exactly.
+fn lattice_pairs(rng: &mut SmallRng, count: usize) -> Vec<Pair> {
+    const LATTICE: [Family; 4] = [
+        Family::SharedVertex,
+        Family::VertexOnEdge,
+        Family::SharedEdge,
+        Family::OverlappingEdges,
+    ];
+    (0..count)
+        .map(|i| {
+            let family = LATTICE[i % LATTICE.len()];
+            let relation = if i % 2 == 0 {
+                Relation::Intersecting
+            } else {
+                Relation::Disjoint
+            };
+            generate::pair(family, 3 + i % 40, relation, rng)
+        })
+        .collect()
+}
+
+#[test]
+fn near_max_min_positive_and_subnormal() {
+    let mut rng = SmallRng::seed_from_u64(0xe7);
+    let (mut wrong, mut total) = (0, 0);
+    for base in lattice_pairs(&mut rng, 200) {
+        let truth = brute_force(Exact, &base.0, &base.1);
+        // The largest power of two that keeps every coordinate finite: up near f64::MAX.
+        let largest = base
+            .0
+            .vertices()
+            .iter()
+            .chain(base.1.vertices())
+            .map(|v| v.x.abs().max(v.y.abs()))
+            .fold(0.0, f64::max);
+        let up = 2f64.powi(1022 - largest.log2().ceil() as i32);
+        let scales = [
+            ("near f64::MAX", up),
+            ("2^-1022", 2f64.powi(-1022)),
+            ("subnormal 2^-1074", 2f64.powi(-1074)),
+        ];
+        for (name, s) in scales {
+            let Some(pair) = map_pair(&base, |p| Point::new(p.x * s, p.y * s)) else {
+                continue;
+            };
+            if s == up {
+                assert!(largest * s > 2f64.powi(1021), "reaches near f64::MAX");
+            }
+            check_all(&pair, name, &mut wrong, &mut total);
+            assert_eq!(
+                Linear.intersects(&pair.0, &pair.1),
+                truth,
+                "scaling by {name} changed the answer"
+            );
+        }
+    }
+    println!("fast kernel wrong at the extremes of the exponent range: {wrong}/{total}");
+}
+
+#[test]
+fn unit_polygons_offset_by_2_pow_52() {
+    let mut rng = SmallRng::seed_from_u64(0x52);
+    let (mut wrong, mut total) = (0, 0);
+    let o = 2f64.powi(52);
+    for base in lattice_pairs(&mut rng, 200) {
+        let truth = brute_force(Exact, &base.0, &base.1);
+        // Integer coordinates below 2^51 stay exact next to 2^52 (spacing 1 or ½ there).
+        if let Some(pair) = map_pair(&base, |p| Point::new(p.x + o, p.y - o)) {
+            check_all(&pair, "offset 2^52", &mut wrong, &mut total);
+            assert_eq!(Linear.intersects(&pair.0, &pair.1), truth);
+        }
+    }
+    // Random unit-size polygons at 2^52: rounding makes them lattice polygons of spacing 1.
+    for _ in 0..100 {
+        let (p, q) = generate::pair(Family::Rotated, 12, Relation::Any, &mut rng);
+        let big = |c: &ConvexPolygon| c.map(|v| Point::new(o + (v.x * 8.0).round(), o + (v.y * 8.0).round()));
+        if let (Ok(p), Ok(q)) = (big(&p), big(&q)) {
+            let pair = (p, q);
+            assert_eq!(
+                Linear.intersects(&pair.0, &pair.1),
+                brute_force(Exact, &pair.0, &pair.1)
+            );
+            check_all(&pair, "random at 2^52", &mut wrong, &mut total);
+        }
+    }
+    println!("fast kernel wrong at offset 2^52: {wrong}/{total}");
+}
+
+#[test]
+fn polygons_of_2_pow_22_vertices_and_triangles_against_them() {
+    let big = generate::regular_polygon(1 << 22, 1.0);
+    let mut rng = SmallRng::seed_from_u64(0x22);
+    let other = generate::regular_polygon(1 << 22, 1.0)
+        .map(|v| Point::new(v.x + 1.9, v.y))
+        .unwrap();
+    let far = generate::regular_polygon(1 << 22, 1.0)
+        .map(|v| Point::new(v.x + 2.1, v.y))
+        .unwrap();
+    let (mut wrong, mut total) = (0, 0);
+    check_all(
+        &(big.clone(), other),
+        "two 2^22-gons overlapping",
+        &mut wrong,
+        &mut total,
+    );
+    check_all(&(big.clone(), far), "two 2^22-gons apart", &mut wrong, &mut total);
+    for i in 0..40 {
+        let t: f64 = rng.random_range(0.0..std::f64::consts::TAU);
+        // Triangles hugging the circle from outside, across it, and just inside.
+        let r = [1.0 + 1e-9, 1.0, 1.0 - 1e-12, 1.001][i % 4];
+        let (x, y) = (r * t.cos(), r * t.sin());
+        let (dx, dy) = (t.cos() * 1e-6, t.sin() * 1e-6);
+        let tri =
+            ConvexPolygon::new([[x, y], [x + dx - dy, y + dy + dx], [x + dx + dy, y + dy - dx]]).unwrap();
+        check_all(
+            &(big.clone(), tri),
+            "triangle against a 2^22-gon",
+            &mut wrong,
+            &mut total,
+        );
+    }
+    println!("fast kernel wrong on 2^22-vertex polygons: {wrong}/{total}");
+}
