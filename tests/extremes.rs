@@ -1,11 +1,14 @@
-//! Every algorithm × both kernels at the extremes of f64: coordinates near f64::MAX and
+//! Every algorithm (array and linked) × both kernels at the extremes of f64: coordinates near f64::MAX and
 //! f64::MIN_POSITIVE, subnormals, unit-size polygons offset by 2^52, 2^22-vertex polygons
 //! and triangles against them. Under the exact kernel every algorithm must equal the
 //! reference; under the fast kernel nothing may panic (wrong answers are counted).
 
 use polysect::generate::{self, Family, Relation, map_pair};
-use polysect::intersect::{Algorithm, ArrayIntersection, Linear, brute_force};
-use polysect::{ConvexPolygon, Exact, Point, Precision};
+use polysect::intersect::{
+    Algorithm, ArrayIntersection, Clm, ClmWorkspace, Convert, ConvertWorkspace, Linear, LinkedIntersection,
+    brute_force,
+};
+use polysect::{ConvexPolygon, Exact, Fast, LinkedPolygon, Point, Precision};
 use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};
 
@@ -14,7 +17,7 @@ type Pair = (ConvexPolygon, ConvexPolygon);
 fn check_all(pair: &Pair, what: &str, fast_wrong: &mut usize, total: &mut usize) {
     let (p, q) = pair;
     let truth = Linear.intersects(p, q);
-    for &algorithm in Algorithm::ALL {
+    for &algorithm in Algorithm::ARRAY {
         assert_eq!(
             algorithm.intersects(Precision::Exact, p, q),
             truth,
@@ -29,6 +32,40 @@ fn check_all(pair: &Pair, what: &str, fast_wrong: &mut usize, total: &mut usize)
         if algorithm.intersects(Precision::Fast, p, q) != truth {
             *fast_wrong += 1;
         }
+    }
+    // The linked algorithms, on polygons linked once in a shuffled arena order (linking
+    // is O(n); `Algorithm::run` would redo it on every call).
+    let mut rng = SmallRng::seed_from_u64(p.len() as u64 ^ (q.len() as u64) << 32);
+    let (lp, lq) = (
+        LinkedPolygon::from_convex_shuffled(p, &mut rng),
+        LinkedPolygon::from_convex_shuffled(q, &mut rng),
+    );
+    let (mut clm_ws, mut convert_ws) = (ClmWorkspace::default(), ConvertWorkspace::default());
+    for _ in 0..3 {
+        assert_eq!(
+            Clm.intersects_with_workspace(Exact, &lp, &lq, &mut rng, &mut clm_ws),
+            truth,
+            "clm exact: {what}"
+        );
+        assert_eq!(
+            Clm.intersects_with_workspace(Exact, &lq, &lp, &mut rng, &mut clm_ws),
+            truth,
+            "clm exact swapped: {what}"
+        );
+        *total += 1;
+        if Clm.intersects_with_workspace(Fast, &lp, &lq, &mut rng, &mut clm_ws) != truth {
+            *fast_wrong += 1;
+        }
+    }
+    let convert = <Convert>::default();
+    assert_eq!(
+        convert.intersects_with_workspace(Exact, &lp, &lq, &mut rng, &mut convert_ws),
+        truth,
+        "convert: {what}"
+    );
+    *total += 1;
+    if convert.intersects_with_workspace(Fast, &lp, &lq, &mut rng, &mut convert_ws) != truth {
+        *fast_wrong += 1;
     }
 }
 

@@ -2,7 +2,7 @@
 //! under random edit/query streams for every strategy, broad phase against brute force,
 //! parallel batches against sequential queries.
 
-use polysect::generate::{self, Family, Relation};
+use polysect::generate::{self, Family, Relation, regular_polygon};
 use polysect::intersect::{ArrayIntersection, Linear};
 use polysect::store::{Scene, SceneError, Strategy};
 use polysect::{ConvexPolygon, EditError, LinkedPolygon, Point, VertexId};
@@ -271,5 +271,58 @@ fn parallel_batches_equal_sequential_queries_for_any_thread_count() {
             sequential_scene.stats(),
             "{threads} threads: same plan"
         );
+    }
+}
+
+#[test]
+fn scene_churn_with_queries() {
+    let mut rng = SmallRng::seed_from_u64(0x5c);
+    let mut scene = Scene::new();
+    let ids: Vec<_> = (0..8)
+        .map(|i| {
+            let base = regular_polygon(256, 1.0)
+                .map(|v| Point::new(v.x + 1.5 * (i % 4) as f64, v.y + 1.5 * (i / 4) as f64));
+            scene.insert(LinkedPolygon::from_convex_shuffled(&base.unwrap(), &mut rng))
+        })
+        .collect();
+    for (round, strategy) in Strategy::ALL.into_iter().cycle().take(8).enumerate() {
+        scene.set_strategy(strategy);
+        for step in 0..50_000 {
+            let id = ids[rng.random_range(0..ids.len())];
+            let v = scene.polygon(id).unwrap().random_vertex(&mut rng);
+            let a = scene.polygon(id).unwrap().point(v).unwrap();
+            let centre = scene.polygon(id).unwrap().to_convex().centre();
+            let f = 1.0 + rng.random_range(-0.01..0.01);
+            let _ = scene.move_vertex(
+                id,
+                v,
+                Point::new(centre.x + (a.x - centre.x) * f, centre.y + (a.y - centre.y) * f),
+            );
+            if step % 500 == 0 {
+                let (x, y) = (ids[rng.random_range(0..8)], ids[rng.random_range(0..8)]);
+                let truth = Linear.intersects(
+                    &scene.polygon(x).unwrap().to_convex(),
+                    &scene.polygon(y).unwrap().to_convex(),
+                );
+                assert_eq!(
+                    scene.intersects(x, y).unwrap(),
+                    truth,
+                    "round {round} step {step}"
+                );
+            }
+        }
+        scene.debug_validate().unwrap();
+    }
+}
+
+trait Centre {
+    fn centre(&self) -> Point;
+}
+
+impl Centre for ConvexPolygon {
+    /// The mean of the vertices (inside a convex polygon). O(n): test helper only.
+    fn centre(&self) -> Point {
+        let (x, y) = centroid(self);
+        Point::new(x, y)
     }
 }
