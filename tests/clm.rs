@@ -14,6 +14,7 @@ use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};
 
 const SEED: u64 = 0xc1a0_2026;
+const PAIRS_PER_FAMILY: usize = 70;
 
 #[derive(Default)]
 struct Tally {
@@ -122,7 +123,7 @@ fn every_family_random_sizes() {
     let mut pairs = 0;
     for &family in Family::ALL {
         for relation in [Relation::Any, Relation::Intersecting, Relation::Disjoint] {
-            for _ in 0..40 {
+            for _ in 0..PAIRS_PER_FAMILY {
                 let n = random_size(&mut h.rng);
                 let (p, q) = pair(family, n, relation, &mut h.rng);
                 let seeds = if n <= 300 { 12 } else { 3 };
@@ -132,7 +133,7 @@ fn every_family_random_sizes() {
         }
     }
     h.report("families");
-    assert_eq!(pairs, Family::ALL.len() * 3 * 40);
+    assert_eq!(pairs, Family::ALL.len() * 3 * PAIRS_PER_FAMILY);
 }
 
 #[test]
@@ -156,7 +157,7 @@ fn touching_families_many_draws() {
     let mut h = Harness::new(SEED + 2);
     for &family in Family::TOUCHING {
         for relation in [Relation::Intersecting, Relation::Disjoint] {
-            for _ in 0..25 {
+            for _ in 0..40 {
                 let n = random_size(&mut h.rng).min(2000);
                 let (p, q) = pair(family, n, relation, &mut h.rng);
                 h.check(&p, &q, 2, 20, family.name());

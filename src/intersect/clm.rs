@@ -37,6 +37,9 @@
 //! samples and the LP's random orders, for **every** input (no assumption on the
 //! polygons). Polygons with at most r vertices are used whole: one LP decides.
 //! The worst case (an absurdly unlucky sample) is O(n + m) walks and quadratic LP time.
+//! A [`Probe`] receives one iteration per unit of work: each point an LP examines
+//! (bounding scan, incremental loop, one-dimensional steps, certification) and each
+//! chain vertex walked.
 //!
 //! # Degeneracies
 //! Closed sets throughout: the LP reports touching hulls as intersecting and only

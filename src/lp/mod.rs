@@ -12,7 +12,7 @@
 //! # Formulation: no privileged direction
 //! The thesis (3.3.4) searches for y = ax + b with A above B, minimising the slope a,
 //! and relabels A and B (or runs twice) when the separator is vertical or B is above.
-//! Here the frame comes from the data. Let a₀ = A[0], b₀ = B[0] and d₀ = b₀ − a₀
+//! Here the frame comes from the data. Let a₀ = A\[0\], b₀ = B\[0\] and d₀ = b₀ − a₀
 //! (if a₀ = b₀ the hulls share a point). Every *strict* separator with A on the right
 //! and B on the left has its direction u in the open half circle H = {u : d₀ × u < 0}
 //! (the directions that point "rightwards" when d₀ points "up"), because b₀ − a₀ must
@@ -39,7 +39,7 @@
 //!   by `cross` of their directions (both normalised to point into H).
 //!
 //! Every decision is the sign of a polynomial in input coordinates, so under
-//! [`Exact`] the whole computation — verdict, line and tangent points — is exact:
+//! [`Exact`](crate::Exact) the whole computation — verdict, line and tangent points — is exact:
 //! no constructed value is ever compared. (The thesis's implementation constructs
 //! slopes and intercepts in floating point and needs majority votes for sidedness.)
 //!
@@ -50,7 +50,7 @@
 //! on it: since the line supports both hulls, CH(A) ∩ CH(B) = CH(A ∩ L) ∩ CH(B ∩ L), two
 //! intervals on L compared with `dot`. Under [`Fast`](crate::Fast) the predicates may
 //! be inconsistent; if the certification fails the whole computation is repeated with
-//! [`Exact`], so a fast answer is either certified by fast predicates or exact.
+//! [`Exact`](crate::Exact), so a fast answer is either certified by fast predicates or exact.
 //!
 //! # Complexity
 //! Expected O(|A| + |B|) predicate evaluations for every input: constraints are
