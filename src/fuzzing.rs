@@ -228,6 +228,48 @@ pub fn algorithms_agree(bytes: &[u8]) -> bool {
     true
 }
 
+/// Two simple polygons from arbitrary coordinates (vertex lists, or the same points in
+/// star order around their mean, which is simple far more often): validation
+/// never panics, and the sweep reports exactly the brute force's points under the exact
+/// kernel. Returns whether both polygons were valid (the pair was compared).
+pub fn crossings_agree(bytes: &[u8]) -> bool {
+    use crate::crossings::CrossingAlgorithm;
+    use crate::generate::simple::star_order;
+    use crate::polygon::SimplePolygon;
+    let mut d = Decoder::new(bytes);
+    let star = d.byte().is_some_and(|b| b % 2 == 0);
+    let (a, b) = (d.points(24), d.points(24));
+    let make = |pts: Vec<Point>| {
+        let n = pts.len() as f64;
+        let mean = Point::new(
+            pts.iter().map(|p| p.x / n).sum(),
+            pts.iter().map(|p| p.y / n).sum(),
+        );
+        let pts = if star && mean.is_finite() {
+            star_order(&pts, mean)
+        } else {
+            pts
+        };
+        SimplePolygon::new(pts)
+    };
+    let (Ok(p), Ok(q)) = (make(a), make(b)) else {
+        return false;
+    };
+    p.debug_validate().unwrap();
+    q.debug_validate().unwrap();
+    let sweep = CrossingAlgorithm::Sweep.run(Precision::Exact, &p, &q);
+    let brute = CrossingAlgorithm::Brute.run(Precision::Exact, &p, &q);
+    assert_eq!(
+        sweep,
+        brute,
+        "{:?} {:?}",
+        debug_points(p.vertices()),
+        debug_points(q.vertices())
+    );
+    let _ = CrossingAlgorithm::Sweep.run(Precision::Fast, &p, &q);
+    true
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -15,9 +15,34 @@ use rand::{Rng, SeedableRng};
 type Pair = (ConvexPolygon, ConvexPolygon);
 
 fn check_all(pair: &Pair, what: &str, fast_wrong: &mut usize, total: &mut usize) {
+    let mut rng = SmallRng::seed_from_u64(pair.0.len() as u64 ^ (pair.1.len() as u64) << 32);
+    let linked = (
+        LinkedPolygon::from_convex_shuffled(&pair.0, &mut rng),
+        LinkedPolygon::from_convex_shuffled(&pair.1, &mut rng),
+    );
+    check_all_linked(
+        (&pair.0, &pair.1),
+        (&linked.0, &linked.1),
+        what,
+        fast_wrong,
+        total,
+    );
+}
+
+/// Every array algorithm on `pair`, and the linked algorithms on `linked` (the same
+/// polygons linked in a shuffled arena order, built once by the caller: linking is O(n)).
+fn check_all_linked(
+    pair: (&ConvexPolygon, &ConvexPolygon),
+    linked: (&LinkedPolygon, &LinkedPolygon),
+    what: &str,
+    fast_wrong: &mut usize,
+    total: &mut usize,
+) {
     let (p, q) = pair;
+    let (lp, lq) = linked;
+    // The reference itself (its fast kernel is measured in tests/reference.rs).
     let truth = Linear.intersects(p, q);
-    for &algorithm in Algorithm::ARRAY {
+    for &algorithm in Algorithm::LOGARITHMIC {
         assert_eq!(
             algorithm.intersects(Precision::Exact, p, q),
             truth,
@@ -33,38 +58,37 @@ fn check_all(pair: &Pair, what: &str, fast_wrong: &mut usize, total: &mut usize)
             *fast_wrong += 1;
         }
     }
-    // The linked algorithms, on polygons linked once in a shuffled arena order (linking
-    // is O(n); `Algorithm::run` would redo it on every call).
-    let mut rng = SmallRng::seed_from_u64(p.len() as u64 ^ (q.len() as u64) << 32);
-    let (lp, lq) = (
-        LinkedPolygon::from_convex_shuffled(p, &mut rng),
-        LinkedPolygon::from_convex_shuffled(q, &mut rng),
-    );
+    let mut rng = SmallRng::seed_from_u64(0x11c);
     let (mut clm_ws, mut convert_ws) = (ClmWorkspace::default(), ConvertWorkspace::default());
     for _ in 0..3 {
         assert_eq!(
-            Clm.intersects_with_workspace(Exact, &lp, &lq, &mut rng, &mut clm_ws),
+            Clm.intersects_with_workspace(Exact, lp, lq, &mut rng, &mut clm_ws),
             truth,
             "clm exact: {what}"
         );
         assert_eq!(
-            Clm.intersects_with_workspace(Exact, &lq, &lp, &mut rng, &mut clm_ws),
+            Clm.intersects_with_workspace(Exact, lq, lp, &mut rng, &mut clm_ws),
             truth,
             "clm exact swapped: {what}"
         );
         *total += 1;
-        if Clm.intersects_with_workspace(Fast, &lp, &lq, &mut rng, &mut clm_ws) != truth {
+        if Clm.intersects_with_workspace(Fast, lp, lq, &mut rng, &mut clm_ws) != truth {
             *fast_wrong += 1;
         }
     }
+    // Convert walks both lists (seconds at 2^22 in a shuffled arena): big inputs run it
+    // once per test, in the pairs of two big polygons.
+    if lp.len().min(lq.len()) < 1 << 20 && lp.len().max(lq.len()) >= 1 << 20 {
+        return;
+    }
     let convert = <Convert>::default();
     assert_eq!(
-        convert.intersects_with_workspace(Exact, &lp, &lq, &mut rng, &mut convert_ws),
+        convert.intersects_with_workspace(Exact, lp, lq, &mut rng, &mut convert_ws),
         truth,
         "convert: {what}"
     );
     *total += 1;
-    if convert.intersects_with_workspace(Fast, &lp, &lq, &mut rng, &mut convert_ws) != truth {
+    if convert.intersects_with_workspace(Fast, lp, lq, &mut rng, &mut convert_ws) != truth {
         *fast_wrong += 1;
     }
 }
@@ -162,21 +186,20 @@ fn unit_polygons_offset_by_2_pow_52() {
 fn polygons_of_2_pow_22_vertices_and_triangles_against_them() {
     let big = generate::regular_polygon(1 << 22, 1.0);
     let mut rng = SmallRng::seed_from_u64(0x22);
-    let other = generate::regular_polygon(1 << 22, 1.0)
-        .map(|v| Point::new(v.x + 1.9, v.y))
-        .unwrap();
-    let far = generate::regular_polygon(1 << 22, 1.0)
-        .map(|v| Point::new(v.x + 2.1, v.y))
-        .unwrap();
+    let big_linked = LinkedPolygon::from_convex_shuffled(&big, &mut rng);
     let (mut wrong, mut total) = (0, 0);
-    check_all(
-        &(big.clone(), other),
-        "two 2^22-gons overlapping",
-        &mut wrong,
-        &mut total,
-    );
-    check_all(&(big.clone(), far), "two 2^22-gons apart", &mut wrong, &mut total);
-    for i in 0..40 {
+    for (dx, what) in [(1.9, "two 2^22-gons overlapping"), (2.1, "two 2^22-gons apart")] {
+        let other = big.map(|v| Point::new(v.x + dx, v.y)).unwrap();
+        let other_linked = LinkedPolygon::from_convex_shuffled(&other, &mut rng);
+        check_all_linked(
+            (&big, &other),
+            (&big_linked, &other_linked),
+            what,
+            &mut wrong,
+            &mut total,
+        );
+    }
+    for i in 0..16 {
         let t: f64 = rng.random_range(0.0..std::f64::consts::TAU);
         // Triangles hugging the circle from outside, across it, and just inside.
         let r = [1.0 + 1e-9, 1.0, 1.0 - 1e-12, 1.001][i % 4];
@@ -184,8 +207,10 @@ fn polygons_of_2_pow_22_vertices_and_triangles_against_them() {
         let (dx, dy) = (t.cos() * 1e-6, t.sin() * 1e-6);
         let tri =
             ConvexPolygon::new([[x, y], [x + dx - dy, y + dy + dx], [x + dx + dy, y + dy - dx]]).unwrap();
-        check_all(
-            &(big.clone(), tri),
+        let tri_linked = LinkedPolygon::from_convex(&tri);
+        check_all_linked(
+            (&big, &tri),
+            (&big_linked, &tri_linked),
             "triangle against a 2^22-gon",
             &mut wrong,
             &mut total,

@@ -72,3 +72,8 @@ fn fuzz_json_lines() {
 fn fuzz_algorithms_agree() {
     drive("algorithms_agree", 600, 0.05, fuzzing::algorithms_agree);
 }
+
+#[test]
+fn fuzz_crossings() {
+    drive("crossings_agree", 500, 0.02, fuzzing::crossings_agree);
+}

@@ -2,5 +2,5 @@
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
-    polysect::fuzzing::algorithms_agree(data);
+    let _ = polysect::fuzzing::algorithms_agree(data);
 });

@@ -2,5 +2,5 @@
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
-    polysect::fuzzing::json_line(data);
+    let _ = polysect::fuzzing::json_line(data);
 });

@@ -2,5 +2,5 @@
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
-    polysect::fuzzing::polygon_construction(data);
+    let _ = polysect::fuzzing::polygon_construction(data);
 });
