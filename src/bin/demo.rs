@@ -38,7 +38,7 @@ pub fn run(polygons: usize, max_log2: u32, steps: usize, seed: u64, svg_path: &s
     for spec in &specs {
         for strategy in Strategy::ALL {
             bar.set_message(format!("{} / {}", spec.name, strategy.name()));
-            let mut scene = workload::scattered_scene(Exact, polygons, max_log2, 6.0, seed);
+            let mut scene = workload::scattered_scene(Exact, polygons, max_log2, 3.0, seed);
             scene.set_strategy(strategy);
             let report = workload::run(&mut scene, spec, true, || bar.inc(1));
             rows.push((spec.name, strategy, report, scene.stats(), scene.snapshot_count()));

@@ -82,7 +82,7 @@ enum Command {
         #[arg(long, default_value_t = 18)]
         max_log2: u32,
         /// Operations per workload.
-        #[arg(long, default_value_t = 2000)]
+        #[arg(long, default_value_t = 1000)]
         steps: usize,
         #[arg(long, default_value_t = 7)]
         seed: u64,
@@ -158,7 +158,7 @@ enum OrderArg {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        None => demo::run(48, 18, 2000, 7, "polysect-demo.svg"),
+        None => demo::run(48, 18, 1000, 7, "polysect-demo.svg"),
         Some(Command::Check {
             file,
             algorithm,

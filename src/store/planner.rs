@@ -49,19 +49,20 @@ pub struct CostModel {
     pub convert_ns_per_vertex: f64,
     /// One sampled query, per √n of the larger polygon.
     pub sampled_ns_per_sqrt_n: f64,
-    /// Polygons with at most this many vertices are converted at once: below it,
-    /// converting plus an array test beats one sampled query.
+    /// The size below which converting both polygons plus an array test beats one
+    /// sampled query (measured on disjoint pairs). Reported for users choosing a fixed
+    /// strategy; the planner's rule needs only the two cost constants, which imply it.
     pub crossover: usize,
 }
 
 impl Default for CostModel {
     /// Measured with `polysect calibrate` on the project's 2-core reference machine
-    /// (docs/store.md).
+    /// (two runs: 126–137 ns per vertex, 694–702 ns·√n, crossover 4096; docs/store.md).
     fn default() -> Self {
         CostModel {
-            convert_ns_per_vertex: 6.0,
-            sampled_ns_per_sqrt_n: 60.0,
-            crossover: 1024,
+            convert_ns_per_vertex: 130.0,
+            sampled_ns_per_sqrt_n: 700.0,
+            crossover: 4096,
         }
     }
 }
@@ -77,13 +78,15 @@ impl CostModel {
         self.sampled_ns_per_sqrt_n * (n as f64).sqrt()
     }
 
-    /// Measures the model on this machine: conversion time per vertex and sampled time per
-    /// √n on generated polygons, and the crossover as the smallest size at which one
-    /// sampled query is cheaper than converting both polygons plus an array test. Takes
-    /// about a second.
+    /// Measures the model on this machine on generated polygons in shuffled arenas:
+    /// conversion time per vertex at the largest size (2^18, where the walk misses the
+    /// caches, as it does for the large polygons the rule is about), sampled time per √n
+    /// (median over 2^4..2^18), and the crossover as the smallest size at which one sampled
+    /// query is cheaper than converting both polygons plus an array test. Takes a few
+    /// seconds.
     pub fn calibrate<K: Kernel>(kernel: K) -> CostModel {
         let mut rng = SmallRng::seed_from_u64(0xca1b);
-        let sizes: Vec<usize> = (4..=16).step_by(2).map(|e| 1usize << e).collect();
+        let sizes: Vec<usize> = (4..=18).step_by(2).map(|e| 1usize << e).collect();
         let mut convert_per_vertex = Vec::new();
         let mut sampled_per_sqrt = Vec::new();
         let mut crossover = None;
@@ -98,7 +101,7 @@ impl CostModel {
                     )
                 })
                 .collect();
-            let reps = (1 << 18) / n.max(64);
+            let reps = ((1 << 18) / n.max(64)).max(2);
             let t_convert = time_per(reps, || {
                 for (p, q) in &pairs {
                     let (a, b) = (p.to_convex(), q.to_convex());
@@ -117,7 +120,7 @@ impl CostModel {
             }
         }
         CostModel {
-            convert_ns_per_vertex: median(&mut convert_per_vertex),
+            convert_ns_per_vertex: *convert_per_vertex.last().expect("sizes are measured"),
             sampled_ns_per_sqrt_n: median(&mut sampled_per_sqrt),
             crossover: crossover.unwrap_or(usize::MAX),
         }

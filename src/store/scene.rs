@@ -369,7 +369,7 @@ impl<K: Kernel> Scene<K> {
     fn should_convert(&self, key: usize) -> bool {
         let e = &self.entries[key];
         let n = e.polygon.len();
-        n <= self.costs.crossover || e.rent_ns >= self.costs.convert_cost(n)
+        e.rent_ns >= self.costs.convert_cost(n)
     }
 
     /// Plans one query between live keys: bounding boxes, then the strategy. Keys chosen
