@@ -46,6 +46,11 @@ pub mod polygon;
 pub mod render;
 pub mod store;
 
+/// The README's examples, compiled and run as doctests.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;
+
 pub use kernel::{Exact, Fast, Kernel, Orientation, Point, Precision, Sign};
 
 pub use polygon::{ConvexPolygon, EditError, LinkedPolygon, PolygonError, VertexId};
