@@ -69,12 +69,26 @@ struct Entry {
     /// Estimated cost of the sampled queries this polygon took part in since its last
     /// edit (the planner's ski-rental account), in nanoseconds.
     rent_ns: f64,
+    /// The estimated cost of the last sampled query it took part in.
+    last_rent_ns: f64,
+    /// Queries (past the bounding boxes) since the last edit.
+    queries_since_edit: u32,
+    /// Moving average of the number of queries between two edits (infinite until the
+    /// first edit: no history, plain ski rental).
+    queries_per_edit: f64,
 }
 
 impl Entry {
     fn edited(&mut self, stats: &mut PlannerStats) {
         self.version += 1;
         self.rent_ns = 0.0;
+        let q = self.queries_since_edit as f64;
+        self.queries_per_edit = if self.queries_per_edit.is_finite() {
+            0.5 * self.queries_per_edit + 0.5 * q
+        } else {
+            q
+        };
+        self.queries_since_edit = 0;
         if self.snapshot.take().is_some() {
             stats.invalidations += 1;
         }
@@ -239,6 +253,9 @@ impl<K: Kernel> Scene<K> {
             version: 0,
             snapshot: None,
             rent_ns: 0.0,
+            last_rent_ns: 0.0,
+            queries_since_edit: 0,
+            queries_per_edit: f64::INFINITY,
         });
         self.broad.mark(key);
         PolygonId {
@@ -366,10 +383,19 @@ impl<K: Kernel> Scene<K> {
         self.stats.conversions += 1;
     }
 
+    /// Ski rental, refined by the polygon's history: convert once the rent paid since the
+    /// last edit covers the conversion, unless the queries expected before the next edit
+    /// (the average between edits so far, less those already seen; at least as many as
+    /// already seen once past the average) would not pay for it.
     fn should_convert(&self, key: usize) -> bool {
         let e = &self.entries[key];
-        let n = e.polygon.len();
-        e.rent_ns >= self.costs.convert_cost(n)
+        let cost = self.costs.convert_cost(e.polygon.len());
+        if e.rent_ns < cost {
+            return false;
+        }
+        let seen = e.queries_since_edit as f64;
+        let expected_more = if e.queries_per_edit > seen { e.queries_per_edit - seen } else { seen };
+        expected_more * e.last_rent_ns >= cost
     }
 
     /// Plans one query between live keys: bounding boxes, then the strategy. Keys chosen
@@ -382,6 +408,9 @@ impl<K: Kernel> Scene<K> {
         if !self.entries[a].bbox.overlaps(&self.entries[b].bbox) {
             self.stats.box_rejects += 1;
             return Route::Known(false);
+        }
+        for k in [a, b] {
+            self.entries[k].queries_since_edit = self.entries[k].queries_since_edit.saturating_add(1);
         }
         let has = |s: &Self, k: usize, pending: &Vec<usize>| {
             s.entries[k].snapshot.is_some() || pending.contains(&k)
@@ -419,6 +448,7 @@ impl<K: Kernel> Scene<K> {
         for k in [a, b] {
             if !has(self, k, pending) {
                 self.entries[k].rent_ns += rent;
+                self.entries[k].last_rent_ns = rent;
             }
         }
         self.stats.sampled_tests += 1;
