@@ -1,7 +1,7 @@
 //! [`ConvexPolygon`]: a validated convex polygon stored as a counter-clockwise array.
 
-use super::PolygonError;
 use super::hull::convex_hull;
+use super::{PolygonError, Prefilter, distinct_vertices};
 use crate::kernel::{Exact, Kernel, Orientation, Point};
 
 /// A convex polygon with at least three vertices, stored counter-clockwise with
@@ -165,29 +165,16 @@ fn winding_number(v: &[Point]) -> usize {
 /// Validates and cleans a vertex list; see [`ConvexPolygon::new`]. Returns the
 /// strictly convex counter-clockwise vertices, starting at the first surviving input vertex.
 pub(crate) fn clean(points: &[Point]) -> Result<Vec<Point>, PolygonError> {
-    if let Some(index) = points.iter().position(|p| !p.is_finite()) {
-        return Err(PolygonError::NonFinite {
+    // 1. Non-finite values, repeats, too few or collinear vertices (shared checks).
+    let v = distinct_vertices(points).map_err(|e| match e {
+        Prefilter::NonFinite { index } => PolygonError::NonFinite {
             index,
             point: points[index],
-        });
-    }
-    // 1. Consecutive duplicates and the repeated closing vertex; keep input indices.
-    let mut v: Vec<(Point, usize)> = Vec::with_capacity(points.len());
-    for (i, &p) in points.iter().enumerate() {
-        if v.last().is_none_or(|&(q, _)| q != p) {
-            v.push((p, i));
-        }
-    }
-    while v.len() > 1 && v[v.len() - 1].0 == v[0].0 {
-        v.pop();
-    }
-    if v.len() < 3 {
-        return Err(PolygonError::TooFewVertices { distinct: v.len() });
-    }
+        },
+        Prefilter::TooFew { distinct } => PolygonError::TooFewVertices { distinct },
+        Prefilter::AllCollinear => PolygonError::AllCollinear,
+    })?;
     let n = v.len();
-    if (2..n).all(|i| Exact.orient(v[0].0, v[1].0, v[i].0) == Orientation::Collinear) {
-        return Err(PolygonError::AllCollinear);
-    }
     // 2. Turns on the deduplicated list. Dropping a collinear vertex that lies between
     //    its neighbours leaves the other turns' signs unchanged (the neighbour lies on the
     //    same ray), so one pass decides everything.

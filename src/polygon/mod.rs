@@ -25,3 +25,38 @@ pub use error::{EditError, PolygonError};
 pub use hull::convex_hull;
 pub use linked::{LinkedPolygon, SampleWorkspace, VertexId};
 pub use simple::{SimplePolygon, SimplePolygonError};
+
+use crate::kernel::{Exact, Kernel, Orientation, Point};
+
+/// Why a vertex list fails the checks shared by every polygon type.
+pub(crate) enum Prefilter {
+    NonFinite { index: usize },
+    TooFew { distinct: usize },
+    AllCollinear,
+}
+
+/// The first steps of validating a vertex list, shared by [`ConvexPolygon`] and
+/// [`SimplePolygon`]: non-finite coordinates are refused; consecutive duplicates and a
+/// repeated closing vertex are dropped (each kept vertex keeps its input index); fewer
+/// than three distinct vertices, or all of them on one line (exact kernel), are refused.
+pub(crate) fn distinct_vertices(points: &[Point]) -> Result<Vec<(Point, usize)>, Prefilter> {
+    if let Some(index) = points.iter().position(|p| !p.is_finite()) {
+        return Err(Prefilter::NonFinite { index });
+    }
+    let mut v: Vec<(Point, usize)> = Vec::with_capacity(points.len());
+    for (i, &p) in points.iter().enumerate() {
+        if v.last().is_none_or(|&(q, _)| q != p) {
+            v.push((p, i));
+        }
+    }
+    while v.len() > 1 && v[v.len() - 1].0 == v[0].0 {
+        v.pop();
+    }
+    if v.len() < 3 {
+        return Err(Prefilter::TooFew { distinct: v.len() });
+    }
+    if (2..v.len()).all(|i| Exact.orient(v[0].0, v[1].0, v[i].0) == Orientation::Collinear) {
+        return Err(Prefilter::AllCollinear);
+    }
+    Ok(v)
+}

@@ -3,6 +3,7 @@
 //!
 //! See [`SimplePolygon`] for the validation rules, complexity and precision.
 
+use super::{Prefilter, distinct_vertices};
 use crate::kernel::{Exact, Kernel, Orientation, Point, SegmentContact, Sign, segment_contact};
 use std::cmp::Ordering;
 use std::fmt;
@@ -241,28 +242,15 @@ impl TryFrom<Vec<Point>> for SimplePolygon {
 
 /// Steps 1–3 of the validation: the cleaned vertices with their input indices.
 fn clean(points: &[Point]) -> Result<Vec<(Point, usize)>, SimplePolygonError> {
-    if let Some(index) = points.iter().position(|p| !p.is_finite()) {
-        return Err(SimplePolygonError::NonFinite {
+    let v = distinct_vertices(points).map_err(|e| match e {
+        Prefilter::NonFinite { index } => SimplePolygonError::NonFinite {
             index,
             point: points[index],
-        });
-    }
-    let mut v: Vec<(Point, usize)> = Vec::with_capacity(points.len());
-    for (i, &p) in points.iter().enumerate() {
-        if v.last().is_none_or(|&(q, _)| q != p) {
-            v.push((p, i));
-        }
-    }
-    while v.len() > 1 && v[v.len() - 1].0 == v[0].0 {
-        v.pop();
-    }
-    if v.len() < 3 {
-        return Err(SimplePolygonError::TooFewVertices { distinct: v.len() });
-    }
+        },
+        Prefilter::TooFew { distinct } => SimplePolygonError::TooFewVertices { distinct },
+        Prefilter::AllCollinear => SimplePolygonError::ZeroArea,
+    })?;
     let n = v.len();
-    if (2..n).all(|i| Exact.orient(v[0].0, v[1].0, v[i].0) == Orientation::Collinear) {
-        return Err(SimplePolygonError::ZeroArea);
-    }
     let mut keep = Vec::with_capacity(n);
     for i in 0..n {
         let (prev, cur, next) = (v[(i + n - 1) % n].0, v[i].0, v[(i + 1) % n].0);

@@ -394,7 +394,11 @@ impl<K: Kernel> Scene<K> {
             return false;
         }
         let seen = e.queries_since_edit as f64;
-        let expected_more = if e.queries_per_edit > seen { e.queries_per_edit - seen } else { seen };
+        let expected_more = if e.queries_per_edit > seen {
+            e.queries_per_edit - seen
+        } else {
+            seen
+        };
         expected_more * e.last_rent_ns >= cost
     }
 
