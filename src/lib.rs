@@ -2,6 +2,7 @@
 #![forbid(unsafe_code)]
 
 pub mod crossings;
+pub mod experiments;
 pub mod generate;
 pub mod intersect;
 pub mod jsonl;
