@@ -35,6 +35,7 @@
 #![forbid(unsafe_code)]
 
 pub mod crossings;
+pub mod experiments;
 #[doc(hidden)]
 pub mod fuzzing;
 pub mod generate;

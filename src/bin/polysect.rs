@@ -2,6 +2,7 @@
 
 use clap::{Parser, Subcommand, ValueEnum};
 use polysect::crossings::CrossingAlgorithm;
+use polysect::experiments::{self, Config, Experiment};
 use polysect::generate::{self, Family, Relation};
 use polysect::intersect::Algorithm;
 use polysect::jsonl;
@@ -9,7 +10,9 @@ use polysect::{ConvexPolygon, Precision};
 use rand::SeedableRng;
 use rand::rngs::SmallRng;
 use std::io::{self, BufRead, BufWriter, Write};
+use std::path::PathBuf;
 use std::process::ExitCode;
+use std::time::Instant;
 
 mod demo;
 
@@ -69,6 +72,26 @@ enum Command {
         order: OrderArg,
         #[arg(long, default_value_t = 1)]
         seed: u64,
+    },
+    /// Measure the experiments (thesis ch. 4, the speed–accuracy trade) and write CSV
+    /// files and SVG plots.
+    Bench {
+        /// Experiments to run (default: all): scaling, densities, sqrt, crossover,
+        /// trade, clm-factor.
+        #[arg(value_parser = parse_experiment)]
+        experiments: Vec<Experiment>,
+        /// Fewer sizes and shorter loops (under a minute).
+        #[arg(long)]
+        quick: bool,
+        /// Output directory.
+        #[arg(long, default_value = "bench-out")]
+        out: PathBuf,
+        /// Seed of the generated inputs.
+        #[arg(long)]
+        seed: Option<u64>,
+        /// No progress bar.
+        #[arg(long)]
+        no_progress: bool,
     },
     /// List the algorithms, precisions and generator families.
     List,
@@ -137,6 +160,10 @@ fn parse_precision(s: &str) -> Result<Precision, String> {
     s.parse()
 }
 
+fn parse_experiment(s: &str) -> Result<Experiment, String> {
+    s.parse()
+}
+
 fn parse_family(s: &str) -> Result<Family, String> {
     s.parse()
 }
@@ -177,6 +204,13 @@ fn main() -> ExitCode {
             order,
             seed,
         }) => gen_pairs(family, n, count, relation, order, seed),
+        Some(Command::Bench {
+            experiments,
+            quick,
+            out,
+            seed,
+            no_progress,
+        }) => bench(&experiments, quick, out, seed, !no_progress),
         Some(Command::List) => list(),
         Some(Command::Demo {
             polygons,
@@ -358,4 +392,37 @@ fn calibrate() -> io::Result<()> {
          queries since the last edit cost as much as converting them ({:.1} ns/vertex vs {:.1} ns·√n per query).",
         costs.crossover, costs.convert_ns_per_vertex, costs.sampled_ns_per_sqrt_n
     )
+}
+
+fn bench(
+    experiments: &[Experiment],
+    quick: bool,
+    out: PathBuf,
+    seed: Option<u64>,
+    progress: bool,
+) -> io::Result<()> {
+    let mut config = if quick {
+        Config::quick(out)
+    } else {
+        Config::full(out)
+    };
+    if let Some(seed) = seed {
+        config.seed = seed;
+    }
+    config.progress = progress;
+    let experiments = if experiments.is_empty() {
+        Experiment::ALL
+    } else {
+        experiments
+    };
+    let start = Instant::now();
+    let report = experiments::run(experiments, &config)?;
+    println!("{}", report.summary);
+    println!(
+        "wrote {} files to {} in {:.1} s",
+        report.files.len(),
+        config.out.display(),
+        start.elapsed().as_secs_f64()
+    );
+    Ok(())
 }

@@ -447,6 +447,7 @@ mod tests {
             }
         }
         // The fast kernel is measurably wrong on this family; the exact one never is.
+        println!("fast kernel wrong on near-collinear triples: {fast_wrong} of 20000");
         assert!(
             fast_wrong > 100,
             "expected the fast kernel to fail often, got {fast_wrong}"

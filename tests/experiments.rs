@@ -1,0 +1,151 @@
+//! The `polysect bench` code path in a tiny configuration: every experiment writes
+//! parseable CSV with the expected columns and SVG files. No assertion on timings.
+
+use polysect::experiments::{self, Config, Experiment};
+use std::fs;
+use std::path::Path;
+use std::time::Duration;
+
+fn tiny(out: &Path) -> Config {
+    Config {
+        log2_sizes: vec![4, 6],
+        crossover_log2_sizes: vec![5.0, 5.5, 6.0],
+        pairs: 2,
+        large_pairs: 1,
+        min_time: Duration::from_micros(200),
+        trade_n: 16,
+        trade_pairs: 4,
+        trade_circle_log2: 8,
+        factor_log2_sizes: vec![6],
+        factors: vec![0.5, 1.0],
+        progress: false,
+        ..Config::quick(out)
+    }
+}
+
+/// Parses a CSV file: the header and the rows, each with as many fields as the header.
+fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
+    let text = fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let mut lines = text.lines();
+    let header: Vec<String> = lines
+        .next()
+        .expect("a header")
+        .split(',')
+        .map(String::from)
+        .collect();
+    let rows: Vec<Vec<String>> = lines.map(|l| l.split(',').map(String::from).collect()).collect();
+    for row in &rows {
+        assert_eq!(row.len(), header.len(), "{}: {row:?}", path.display());
+    }
+    (header, rows)
+}
+
+fn column<'a>(header: &[String], rows: &'a [Vec<String>], name: &str) -> Vec<&'a str> {
+    let i = header
+        .iter()
+        .position(|h| h == name)
+        .unwrap_or_else(|| panic!("no column {name} in {header:?}"));
+    rows.iter().map(|r| r[i].as_str()).collect()
+}
+
+#[test]
+fn every_experiment_writes_csv_and_svg() {
+    let dir = std::env::temp_dir().join(format!("polysect-bench-test-{}", std::process::id()));
+    let _ = fs::remove_dir_all(&dir);
+    let config = tiny(&dir);
+    let report = experiments::run(Experiment::ALL, &config).expect("the run writes its files");
+
+    for file in &report.files {
+        assert!(dir.join(file).is_file(), "{file} listed but missing");
+    }
+    let svgs: Vec<&String> = report.files.iter().filter(|f| f.ends_with(".svg")).collect();
+    assert!(svgs.len() >= Experiment::ALL.len(), "{svgs:?}");
+    for svg in svgs {
+        let text = fs::read_to_string(dir.join(svg)).unwrap();
+        assert!(
+            text.starts_with("<svg") && text.trim_end().ends_with("</svg>"),
+            "{svg}"
+        );
+        assert!(
+            text.contains("<polyline") || text.contains("<circle"),
+            "{svg} draws no data"
+        );
+    }
+
+    // The curve experiments: one row per (family, relation, algorithm, n), times positive.
+    for name in ["scaling.csv", "densities.csv", "clm_sqrt.csv", "crossover.csv"] {
+        let (header, rows) = read_csv(&dir.join(name));
+        for col in [
+            "family",
+            "relation",
+            "algorithm",
+            "kernel",
+            "n",
+            "median_ns",
+            "ns_per_log2_total",
+            "ns_per_sqrt_total",
+            "median_iterations",
+            "wrong",
+        ] {
+            column(&header, &rows, col);
+        }
+        assert!(!rows.is_empty(), "{name}");
+        for t in column(&header, &rows, "median_ns") {
+            let t: f64 = t.parse().unwrap();
+            assert!(t > 0.0 && t.is_finite(), "{name}: {t}");
+        }
+        // Under the exact kernel every algorithm agrees with the reference.
+        assert!(
+            column(&header, &rows, "wrong").iter().all(|w| *w == "0"),
+            "{name}"
+        );
+    }
+    let (header, rows) = read_csv(&dir.join("scaling.csv"));
+    let algs = column(&header, &rows, "algorithm");
+    for alg in polysect::intersect::Algorithm::ALL {
+        assert!(algs.contains(&alg.name()), "{alg} missing from scaling.csv");
+    }
+    let ns: Vec<&str> = column(&header, &rows, "n");
+    assert!(ns.contains(&"16") && ns.contains(&"64"));
+
+    // The trade table: every algorithm × kernel × case, exact rows without wrong answers.
+    let (header, rows) = read_csv(&dir.join("trade.csv"));
+    let cases: std::collections::BTreeSet<&str> = column(&header, &rows, "case").into_iter().collect();
+    assert_eq!(cases.len(), 8, "{cases:?}");
+    assert_eq!(rows.len(), 8 * polysect::intersect::Algorithm::ALL.len() * 2);
+    let kernels = column(&header, &rows, "kernel");
+    let wrong = column(&header, &rows, "wrong");
+    for (k, w) in kernels.iter().zip(&wrong) {
+        let w: usize = w.parse().unwrap();
+        if *k == "exact" {
+            assert_eq!(w, 0);
+        }
+    }
+    let md = fs::read_to_string(dir.join("trade.md")).unwrap();
+    assert!(
+        md.lines().filter(|l| l.starts_with("| ")).count() > 2 * polysect::intersect::Algorithm::ALL.len()
+    );
+
+    let (header, rows) = read_csv(&dir.join("clm_factor.csv"));
+    assert_eq!(column(&header, &rows, "factor"), ["0.5", "1"]);
+    let _ = fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn experiment_names_round_trip() {
+    for &e in Experiment::ALL {
+        assert_eq!(e.name().parse::<Experiment>(), Ok(e));
+    }
+    assert!("nope".parse::<Experiment>().unwrap_err().contains("scaling"));
+}
+
+#[test]
+fn cli_refuses_an_unknown_experiment_naming_the_valid_ones() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_polysect"))
+        .args(["bench", "nope", "--out", "/nonexistent-dir-never-created"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("crossover") && err.contains("trade"), "{err}");
+}
