@@ -187,3 +187,42 @@ fn render_draws_pairs_and_error_panels() {
     assert!(picture.contains("error"));
     let _ = std::fs::remove_file(out_file);
 }
+
+#[test]
+fn hostile_input_gets_an_error_line_each_and_never_a_crash() {
+    let nested = format!("{}{}", "[".repeat(100_000), "]".repeat(100_000));
+    let garbage = "x".repeat(2_000_000);
+    let big_polygon: Vec<[f64; 2]> = (0..200_000)
+        .map(|i| {
+            let t = std::f64::consts::TAU * i as f64 / 200_000.0;
+            [t.cos(), t.sin()]
+        })
+        .collect();
+    let huge_valid =
+        serde_json::json!({ "p": big_polygon, "q": [[0.5, 0.5], [2.0, 0.5], [2.0, 2.0]] }).to_string();
+    let lines = [
+        nested.as_str(),
+        r#"{"p": [[0,0],[1,0],[0,1]], "q": [[0,0],[1,0],[0,"#, // truncated
+        r#"{"p": [[0,0],[1,0],[0,1]], "q": [[0,0],[1,0],[0,1e999]]}"#,
+        r#"{"p": [[0,0],[1,0],[0,1]], "q": [[0,0],[1,0],[0,-1e309]]}"#,
+        garbage.as_str(),
+        huge_valid.as_str(),
+        r#"{"p": [[0,0],[1,0],[0,1]], "q": [[0,0],[1,0],[0,1]]}"#,
+    ];
+    let input = lines.join("\n");
+    for algorithm in ["auto", "clm", "linear"] {
+        let (code, out, err) = run(&["check", "--algorithm", algorithm], input.as_bytes());
+        assert_eq!(code, 0, "{err}");
+        let replies: Vec<serde_json::Value> = out.lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+        assert_eq!(replies.len(), lines.len());
+        for (i, r) in replies[..5].iter().enumerate() {
+            assert!(r["error"].is_string(), "{algorithm} line {i}: {r}");
+        }
+        assert_eq!(replies[5], serde_json::json!({"intersects": true}));
+        assert_eq!(replies[6], serde_json::json!({"intersects": true}));
+    }
+    // The same hostile lines for crossings.
+    let (code, out, _) = run(&["crossings"], input.as_bytes());
+    assert_eq!(code, 0);
+    assert_eq!(out.lines().count(), lines.len());
+}
