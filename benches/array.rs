@@ -1,5 +1,6 @@
-//! Intersection queries on sorted arrays: every algorithm in `Algorithm::ALL` (and
-//! the O(log n) ones also under the fast kernel) against the peers geo (`Intersects`
+//! Intersection queries on sorted arrays: every algorithm in `Algorithm::ARRAY` (and
+//! the O(log n) ones also under the fast kernel), and the sublinear `clm` on the same
+//! polygons linked once in a shuffled arena, against the peers geo (`Intersects`
 //! on `Polygon` and on `MonotoneChainPolygon`) and parry2d-f64 (`intersection_test`
 //! on `ConvexPolygon`), for n = 2^4, 2^6, …, 2^max vertices per polygon, intersecting
 //! and disjoint pairs in separate groups. Inputs (pairs, peer shapes) are built
@@ -19,8 +20,8 @@ use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query::intersection_test;
 use parry2d_f64::shape::ConvexPolygon as ParryPolygon;
 use polysect::generate::{self, Family, Relation};
-use polysect::intersect::{Algorithm, ArrayIntersection, Linear};
-use polysect::{ConvexPolygon, Precision};
+use polysect::intersect::{Algorithm, ArrayIntersection, Clm, ClmWorkspace, Linear, LinkedIntersection};
+use polysect::{ConvexPolygon, Exact, LinkedPolygon, Precision};
 use rand::SeedableRng;
 use rand::rngs::SmallRng;
 use std::hint::black_box;
@@ -71,11 +72,32 @@ fn bench(c: &mut Criterion) {
             let (p, q) = pair(n, relation, &mut rng);
             group.throughput(Throughput::Elements(n as u64));
             group.sample_size(if log >= 14 { 10 } else { 50 });
-            for &alg in Algorithm::ALL {
+            for &alg in Algorithm::ARRAY {
                 group.bench_with_input(BenchmarkId::new(alg.name(), n), &(&p, &q), |b, (p, q)| {
                     b.iter(|| assert_eq!(alg.intersects(Precision::Exact, black_box(p), black_box(q)), want))
                 });
             }
+            // The sublinear test on the same polygons, linked once in shuffled arena order
+            // outside the timed loop (linking is O(n)), with a reused workspace and RNG.
+            let (lp, lq) = (
+                LinkedPolygon::from_convex_shuffled(&p, &mut rng),
+                LinkedPolygon::from_convex_shuffled(&q, &mut rng),
+            );
+            let mut ws = ClmWorkspace::default();
+            let mut clm_rng = SmallRng::seed_from_u64(SEED ^ n as u64);
+            group.bench_function(BenchmarkId::new("clm", n), |b| {
+                b.iter(|| {
+                    let hit = Clm.intersects_with_workspace(
+                        Exact,
+                        black_box(&lp),
+                        black_box(&lq),
+                        &mut clm_rng,
+                        &mut ws,
+                    );
+                    assert_eq!(hit, want)
+                })
+            });
+            drop((lp, lq));
             for &alg in Algorithm::LOGARITHMIC {
                 let id = BenchmarkId::new(format!("{}-fast", alg.name()), n);
                 group.bench_with_input(id, &(&p, &q), |b, (p, q)| {
