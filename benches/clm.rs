@@ -8,14 +8,12 @@
 //!   (Convert is linear: beyond that it only burns machine time).
 //! * `clm_factor`: the sample factor c of [`ClmWithFactor`] at n = 2^12 and 2^18.
 //!
-//! After the criterion groups a plain timing pass prints the summary the docs quote:
-//! time per query and time/√n per n (intersecting and disjoint), Convert's time, and
-//! the crossover n where CLM becomes faster than Convert. Set `POLYSECT_BENCH_SUMMARY=0`
-//! to skip it.
+//! The √n-normalised curve and the crossover as tables and plots come from
+//! `polysect bench sqrt crossover` (src/experiments/, docs/results.md).
 //!
 //! Shared machines: `cargo bench --bench clm -- --warm-up-time 1 --measurement-time 2`.
 
-use criterion::{BenchmarkId, Criterion, Throughput, criterion_group};
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use polysect::generate::{Family, Relation, pair};
 use polysect::intersect::{
     ArrayIntersection, Clm, ClmWithFactor, ClmWorkspace, Convert, ConvertWorkspace, Linear,
@@ -25,7 +23,6 @@ use polysect::{Exact, LinkedPolygon};
 use rand::SeedableRng;
 use rand::rngs::SmallRng;
 use std::hint::black_box;
-use std::time::Instant;
 
 const SEED: u64 = 0xbe4c_c1a0;
 const CONVERT_MAX_LOG2: u32 = 16;
@@ -179,135 +176,6 @@ fn bench_factor(c: &mut Criterion) {
 }
 
 /// Median over batches of the mean time per query, in microseconds.
-fn time_queries<L: LinkedIntersection>(alg: &L, set: &Pairs, budget_s: f64) -> f64 {
-    let mut rng = SmallRng::seed_from_u64(SEED + 4);
-    let mut ws = L::Workspace::default();
-    let mut run = |reps: usize| {
-        let start = Instant::now();
-        for r in 0..reps {
-            let (p, q) = &set.pairs[r % set.pairs.len()];
-            assert_eq!(
-                alg.intersects_with_workspace(Exact, p, q, &mut rng, &mut ws),
-                set.answer
-            );
-        }
-        start.elapsed().as_secs_f64()
-    };
-    // Calibrate: about budget_s / 7 per batch.
-    let mut reps = 1;
-    while run(reps) < budget_s / 70.0 && reps < 1 << 24 {
-        reps *= 2;
-    }
-    let per_batch = (budget_s / 7.0 / (run(reps) / reps as f64)).max(1.0) as usize;
-    let mut times: Vec<f64> = (0..7).map(|_| run(per_batch) / per_batch as f64 * 1e6).collect();
-    times.sort_by(f64::total_cmp);
-    times[3]
-}
-
-/// The walk Convert does before its array test, alone: a lower bound for Convert with an
-/// O(log n) array algorithm (which adds about a microsecond). Microseconds per query.
-fn time_walks(set: &Pairs, budget_s: f64) -> f64 {
-    let mut buf = Vec::new();
-    let mut walk = |poly: &LinkedPolygon| {
-        buf.clear();
-        let mut pos = 0;
-        for _ in 0..poly.len() {
-            buf.push(poly.point_at(pos));
-            pos = poly.next_at(pos);
-        }
-        black_box(&buf);
-    };
-    let mut run = |reps: usize| {
-        let start = Instant::now();
-        for r in 0..reps {
-            let (p, q) = &set.pairs[r % set.pairs.len()];
-            walk(p);
-            walk(q);
-        }
-        start.elapsed().as_secs_f64()
-    };
-    let mut reps = 1;
-    while run(reps) < budget_s / 70.0 && reps < 1 << 24 {
-        reps *= 2;
-    }
-    let per_batch = (budget_s / 7.0 / (run(reps) / reps as f64)).max(1.0) as usize;
-    let mut times: Vec<f64> = (0..7).map(|_| run(per_batch) / per_batch as f64 * 1e6).collect();
-    times.sort_by(f64::total_cmp);
-    times[3]
-}
-
-fn summary() {
-    if std::env::var("POLYSECT_BENCH_SUMMARY").is_ok_and(|v| v == "0") {
-        return;
-    }
-    println!("\nsummary (median of 7 batches, exact kernel, shuffled arenas):");
-    println!(
-        "{:>9} {:>11} {:>11} {:>10} {:>10} {:>11} {:>9} {:>9} {:>9}",
-        "n",
-        "clm int µs",
-        "clm dis µs",
-        "int ns/√n",
-        "dis ns/√n",
-        "convert µs",
-        "walk µs",
-        "clm/conv",
-        "clm/walk"
-    );
-    let mut crossover = None;
-    let mut crossover_walk = None;
-    for log2 in sizes() {
-        let n = 1usize << log2;
-        let int = make_pairs(log2, Relation::Intersecting);
-        let dis = make_pairs(log2, Relation::Disjoint);
-        let ti = time_queries(&Clm, &int, 0.3);
-        let td = time_queries(&Clm, &dis, 0.3);
-        let (conv, walk, ratio, ratio_walk) = if log2 <= CONVERT_MAX_LOG2 {
-            let c = (time_queries(&<Convert>::default(), &int, 0.15)
-                + time_queries(&<Convert>::default(), &dis, 0.15))
-                / 2.0;
-            let w = time_walks(&int, 0.15);
-            let ratio = (ti + td) / 2.0 / c;
-            let ratio_walk = (ti + td) / 2.0 / w;
-            if ratio < 1.0 && crossover.is_none() {
-                crossover = Some(n);
-            }
-            if ratio_walk < 1.0 && crossover_walk.is_none() {
-                crossover_walk = Some(n);
-            }
-            (
-                format!("{c:.2}"),
-                format!("{w:.2}"),
-                format!("{ratio:.2}"),
-                format!("{ratio_walk:.2}"),
-            )
-        } else {
-            ("-".into(), "-".into(), "-".into(), "-".into())
-        };
-        let s = (n as f64).sqrt();
-        println!(
-            "{:>9} {:>11.2} {:>11.2} {:>10.1} {:>10.1} {:>11} {:>9} {:>9} {:>9}",
-            n,
-            ti,
-            td,
-            ti * 1e3 / s,
-            td * 1e3 / s,
-            conv,
-            walk,
-            ratio,
-            ratio_walk
-        );
-    }
-    let show = |what: &str, c: Option<usize>| match c {
-        Some(n) => println!("crossover against {what}: CLM (mean of int and dis) is faster from n = {n}"),
-        None => println!(
-            "crossover against {what}: none up to n = 2^{}",
-            max_log2().min(CONVERT_MAX_LOG2)
-        ),
-    };
-    show("Convert<Linear>", crossover);
-    show("the walk alone", crossover_walk);
-}
-
 fn all(c: &mut Criterion) {
     bench_clm(c);
     bench_convert_vs_clm(c);
@@ -316,11 +184,4 @@ fn all(c: &mut Criterion) {
 
 criterion_group!(benches, all);
 
-fn main() {
-    benches();
-    Criterion::default().configure_from_args().final_summary();
-    // Only when the whole bench runs (criterion's `--list`/filters pass args we ignore).
-    if !std::env::args().any(|a| a == "--list") {
-        summary();
-    }
-}
+criterion_main!(benches);
