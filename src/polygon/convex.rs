@@ -90,6 +90,15 @@ impl ConvexPolygon {
         ConvexPolygon::new(self.vertices.iter().map(|&p| f(p)))
     }
 
+    /// Translates every vertex in place, each coordinate rounded to nearest, without
+    /// validating: for callers that validated the same rounded coordinates already (a
+    /// scene translating a linked polygon and its snapshot together). O(n).
+    pub(crate) fn translate_unchecked(&mut self, dx: f64, dy: f64) {
+        for p in &mut self.vertices {
+            *p = Point::new(p.x + dx, p.y + dy);
+        }
+    }
+
     /// Axis-aligned bounding box `(min, max)`.
     pub fn bounding_box(&self) -> (Point, Point) {
         let mut lo = self.vertices[0];
@@ -143,7 +152,7 @@ impl TryFrom<Vec<Point>> for ConvexPolygon {
 /// Whether direction `d` lies in the upper half-turn [0, π) of angles.
 /// Exact: `b − a` computed in floating point has the sign of the true difference.
 #[inline]
-fn upper(a: Point, b: Point) -> bool {
+pub(crate) fn upper(a: Point, b: Point) -> bool {
     let dy = b.y - a.y;
     dy > 0.0 || (dy == 0.0 && b.x > a.x)
 }

@@ -355,6 +355,51 @@ impl<K: Kernel> Scene<K> {
         Ok(old)
     }
 
+    /// Translates the polygon by `(dx, dy)`: every vertex becomes `(x + dx, y + dy)`, each
+    /// coordinate rounded to nearest (IEEE addition). O(n) to translate and validate, then
+    /// O(1) for the bounding box (shifted; rounding is monotone, so the shifted box still
+    /// contains, or equals, the translated polygon's box) and no reconversion: a valid
+    /// array snapshot is translated in place with the same roundings and stays valid.
+    /// Vertex handles stay valid. See docs/store.md for what is exact here.
+    ///
+    /// # Errors
+    /// `StalePolygon`; [`EditError::NonFinite`] when `dx` or `dy` is not finite or a
+    /// coordinate would overflow; [`EditError::RoundingBreaksConvexity`] when rounding
+    /// would leave the polygon not strictly convex. Nothing changes on error.
+    ///
+    /// ```
+    /// use polysect::store::Scene;
+    /// let mut scene = Scene::new();
+    /// let a = scene.insert_points([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+    /// let b = scene.insert_points([[3.0, 0.0], [4.0, 0.0], [4.0, 1.0]])?;
+    /// assert!(!scene.intersects(a, b)?);
+    /// scene.translate(b, -1.0, 0.5)?; // b's corner (2, 0.5) now lies on a's edge
+    /// assert!(scene.intersects(a, b)?);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn translate(&mut self, id: PolygonId, dx: f64, dy: f64) -> Result<(), SceneError> {
+        let key = self.key(id)?;
+        let e = &mut self.entries[key];
+        e.polygon.translate(dx, dy)?;
+        e.version += 1;
+        if let Some(s) = &mut e.snapshot {
+            s.translate_unchecked(dx, dy);
+        }
+        let shifted = BoundingBox {
+            min: Point::new(e.bbox.min.x + dx, e.bbox.min.y + dy),
+            max: Point::new(e.bbox.max.x + dx, e.bbox.max.y + dy),
+        };
+        if shifted.min.is_finite() && shifted.max.is_finite() {
+            e.bbox = shifted;
+        } else {
+            // A loose box reaching past the polygon overflowed: take the true box.
+            e.bbox = BoundingBox::of(e.polygon.iter().map(|(_, p)| p)).expect("a polygon has vertices");
+            e.bbox_tight = true;
+        }
+        self.broad.mark(key);
+        Ok(())
+    }
+
     fn grow_box(&mut self, key: usize, p: Point) {
         let e = &mut self.entries[key];
         let before = e.bbox;
