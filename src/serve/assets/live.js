@@ -19,7 +19,7 @@
     settings: null, frame: 0, last: null, pending: null, inflight: false, dirty: true,
     edits: 0, editsAtFrame: 0, moveInflight: false, moveQueued: null, drag: null, hover: null,
     times: [], fps: 0, drawMs: 0, refusals: 0, errors: 0, lastRefusal: "", lastError: "",
-    view: { scale: 1, ox: 0, oy: 0, dpr: 1 }, figuresAt: 0, appliedParams: false,
+    view: { scale: 1, ox: 0, oy: 0, dpr: 1 }, figuresAt: 0, figuresOf: null, appliedParams: false,
   };
 
   function send(msg) {
@@ -337,10 +337,12 @@
     return [(b[0] + b[2]) / 2 + S.offsets[2 * i], (b[1] + b[3]) / 2 + S.offsets[2 * i + 1]];
   }
 
+  // At most four times a second (the DOM is slower than the canvas); tick() catches up.
   function figures() {
     const now = performance.now();
-    if (now - S.figuresAt < 250 || !S.last) return;
+    if (now - S.figuresAt < 250 || !S.last || S.figuresOf === S.last) return;
     S.figuresAt = now;
+    S.figuresOf = S.last;
     const m = S.last, t = m.timing, set = (id, x) => { $(id).textContent = x; };
     const f2 = (x) => x.toFixed(2);
     set("f-fps", S.fps.toFixed(1));
@@ -359,6 +361,7 @@
   function tick() {
     if (S.pending) { applyFrame(); draw(); requestFrame(); }
     else if (S.dirty) draw();
+    else figures();
     requestAnimationFrame(tick);
   }
 
@@ -379,6 +382,7 @@
   window.polysect = {
     get ready() { return S.ready; },
     get scene() { return S.scene; },
+    get world() { return S.world; },
     get frame() { return S.frame; },
     get fps() { return S.fps; },
     get drawMs() { return S.drawMs; },
