@@ -738,3 +738,80 @@ fn live_page_fps() {
         }
     }
 }
+
+/// Takes the pictures of docs/live.md (docs/img/live_simulation.png and
+/// docs/img/live_editing.png): the default scene paused on collisions, then a scene in
+/// editing: a dragged vertex, an inserted one, a refused drag and its reason, the
+/// pointer over a vertex.
+#[test]
+#[ignore = "writes docs/img; needs chromium and chromium-driver; run by hand"]
+fn live_page_screenshots() {
+    let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("docs/img");
+    let (_server, url) = start_polysect();
+    let b = Browser::start();
+    b.goto(&url);
+    b.wait_for(
+        "the first frames",
+        "window.polysect.ready && window.polysect.frame > 3",
+        30,
+    );
+    b.wait_for("collisions", "window.polysect.shown().pairs.length >= 2", 30);
+    b.click("#pause");
+    b.wait_for("pause", "window.polysect.settings.paused", 10);
+    for _ in 0..400 {
+        if b.js("return window.polysect.shown().pairs.length;").as_u64() >= Some(2) {
+            break;
+        }
+        b.click("#step");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    std::thread::sleep(Duration::from_millis(400));
+    std::fs::write(out.join("live_simulation.png"), b.screenshot()).expect("written");
+
+    b.type_into("#polygons", "12");
+    b.type_into("#vertices", "10");
+    b.type_into("#seed", "4");
+    b.click("#apply");
+    b.wait_for(
+        "the editing scene",
+        "window.polysect.ready && window.polysect.settings.vertices === 10 && window.polysect.shown().polygons.length === 12",
+        20,
+    );
+    let s = shown(&b);
+    let edits = |b: &Browser| b.js("return window.polysect.shown().ids.flat().length;");
+    // Pull a vertex of polygon 0 outwards by a fifth of its distance from the centroid.
+    let (p0, c0) = (&s.polygons[0], centroid(&s.polygons[0]));
+    let v = p0[0];
+    let to = Point::new(v.x + 0.2 * (v.x - c0.x), v.y + 0.2 * (v.y - c0.y));
+    b.drag(to_screen(&b, v), to_screen(&b, to), 200);
+    // Insert a vertex just outside the middle of an edge of polygon 1 (3 px out).
+    let p1 = &s.polygons[1];
+    let (a, z) = (p1[2], p1[3]);
+    let m = to_screen(&b, Point::new(0.5 * (a.x + z.x), 0.5 * (a.y + z.y)));
+    let c1 = to_screen(&b, centroid(p1));
+    let (ox, oy) = (m[0] - c1[0], m[1] - c1[1]);
+    let len = ox.hypot(oy);
+    let before = edits(&b);
+    let click = [m[0] + 3.0 * ox / len, m[1] + 3.0 * oy / len];
+    b.drag(click, click, 0);
+    b.wait_for(
+        "the insertion",
+        &format!("window.polysect.shown().ids.flat().length > {before}"),
+        10,
+    );
+    // A vertex of polygon 2 dragged into its own interior: refused.
+    let p2 = &s.polygons[2];
+    b.drag(to_screen(&b, p2[0]), to_screen(&b, centroid(p2)), 0);
+    b.wait_for("the refusal", "window.polysect.refusals > 0", 10);
+    // Hover over the moved vertex of polygon 0.
+    let moved = shown(&b).polygons[0][0];
+    let at = to_screen(&b, moved).map(|c| c.round() as i64);
+    b.cmd(
+        "POST",
+        "/actions",
+        Some(json!({"actions": [{"type": "pointer", "id": "mouse", "parameters": {"pointerType": "mouse"},
+            "actions": [{"type": "pointerMove", "duration": 0, "x": at[0], "y": at[1], "origin": "viewport"}]}]})),
+    );
+    std::thread::sleep(Duration::from_millis(400));
+    std::fs::write(out.join("live_editing.png"), b.screenshot()).expect("written");
+}

@@ -338,14 +338,20 @@
   }
 
   // At most four times a second (the DOM is slower than the canvas); tick() catches up.
+  // Frames per second over the last second; 0 once no frame has moved for a second.
+  function fps() {
+    const last = S.times[S.times.length - 1];
+    return last !== undefined && performance.now() - last < 1000 ? S.fps : 0;
+  }
+
   function figures() {
     const now = performance.now();
-    if (now - S.figuresAt < 250 || !S.last || S.figuresOf === S.last) return;
+    if (now - S.figuresAt < 250 || !S.last || (S.figuresOf === S.last && fps() > 0)) return;
     S.figuresAt = now;
     S.figuresOf = S.last;
     const m = S.last, t = m.timing, set = (id, x) => { $(id).textContent = x; };
     const f2 = (x) => x.toFixed(2);
-    set("f-fps", S.fps.toFixed(1));
+    set("f-fps", fps().toFixed(1));
     set("f-total", f2(t.update_ms + t.broad_ms + t.narrow_ms + t.response_ms));
     set("f-update", f2(t.update_ms)); set("f-broad", f2(t.broad_ms)); set("f-narrow", f2(t.narrow_ms));
     set("f-response", f2(t.response_ms)); set("f-draw", f2(S.drawMs));
@@ -384,7 +390,7 @@
     get scene() { return S.scene; },
     get world() { return S.world; },
     get frame() { return S.frame; },
-    get fps() { return S.fps; },
+    get fps() { return fps(); },
     get drawMs() { return S.drawMs; },
     get settings() { return S.settings; },
     get figures() { return S.last && { timing: S.last.timing, queries: S.last.queries, candidates: S.last.candidates, stats: S.last.stats, totals: S.last.totals }; },
