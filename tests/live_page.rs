@@ -416,21 +416,59 @@ fn paint_at(img: &Image, at: [f64; 2]) -> Paint {
     }
 }
 
-// ---------------------------------------------------------------- the test
-
-#[test]
-#[ignore = "needs chromium and chromium-driver (Debian packages); CI runs it"]
-fn live_page_in_a_browser() {
-    let (mut server, url) = start_polysect();
+/// Starts the server and a browser on its page; returns once frames are drawn.
+fn open_page() -> (Proc, String, Browser) {
+    let (server, url) = start_polysect();
     let b = Browser::start();
     b.goto(&url);
-
-    // 1. The simulation starts by itself and advances.
     b.wait_for(
         "the first frames",
         "window.polysect.ready && window.polysect.frame > 3",
         30,
     );
+    (server, url, b)
+}
+
+/// Pauses, then steps until at least `pairs` pairs collide (at most 400 steps).
+fn pause_on_collisions(b: &Browser, pairs: u64) {
+    b.click("#pause");
+    b.wait_for(
+        "pause",
+        "window.polysect.settings.paused && window.polysect.idle",
+        10,
+    );
+    for _ in 0..400 {
+        if b.js("return window.polysect.shown().pairs.length;").as_u64() >= Some(pairs) {
+            return;
+        }
+        b.click("#step");
+        b.wait_for("the step", "window.polysect.idle", 10);
+    }
+}
+
+/// Picks a strategy and a precision in the page's menus and waits until they are in
+/// force. Frames already on their way then still carry the old counters: returns the
+/// frame number after which frames carry the new ones.
+fn choose(b: &Browser, strategy: &str, precision: &str) -> u64 {
+    b.click(&format!("#strategy option[value={strategy}]"));
+    b.click(&format!("#precision option[value={precision}]"));
+    b.wait_for(
+        "the settings",
+        &format!(
+            "window.polysect.settings.strategy === '{strategy}' && window.polysect.settings.precision === '{precision}'"
+        ),
+        20,
+    );
+    b.js("return window.polysect.frame;").as_u64().expect("frame") + 3
+}
+
+// ---------------------------------------------------------------- the test
+
+#[test]
+#[ignore = "needs chromium and chromium-driver (Debian packages); CI runs it"]
+fn live_page_in_a_browser() {
+    // 1. The simulation starts by itself and advances.
+    let (mut server, _url, b) = open_page();
     let first = shown(&b);
     std::thread::sleep(Duration::from_millis(500));
     let later = shown(&b);
@@ -457,17 +495,7 @@ fn live_page_in_a_browser() {
 
     // 3. The store controls reach the store: `sampled` converts nothing and samples;
     //    `cached` converts. (A precision change starts the planner's counters again.)
-    // Frames already on their way when a setting changes still carry the old counters:
-    // judge only frames a few numbers later.
-    let frame_now = |b: &Browser| b.js("return window.polysect.frame;").as_u64().expect("frame");
-    b.click("#strategy option:nth-child(2)"); // sampled
-    b.click("#precision option:nth-child(2)"); // fast
-    b.wait_for(
-        "the settings",
-        "window.polysect.settings.strategy === 'sampled' && window.polysect.settings.precision === 'fast'",
-        20,
-    );
-    let since = frame_now(&b) + 3;
+    let since = choose(&b, "sampled", "fast");
     b.wait_for(
         "the sampled strategy at work",
         &format!("window.polysect.frame > {since} && window.polysect.figures.totals.sampled_tests > 20"),
@@ -477,14 +505,7 @@ fn live_page_in_a_browser() {
         b.js("return window.polysect.figures.totals.conversions;"),
         json!(0)
     );
-    b.click("#strategy option:nth-child(4)"); // cached
-    b.click("#precision option:nth-child(1)"); // exact
-    b.wait_for(
-        "the settings",
-        "window.polysect.settings.strategy === 'cached' && window.polysect.settings.precision === 'exact'",
-        20,
-    );
-    let since = frame_now(&b) + 3;
+    let since = choose(&b, "cached", "exact");
     b.wait_for(
         "the cached strategy converting",
         &format!(
@@ -496,15 +517,7 @@ fn live_page_in_a_browser() {
 
     // 4. Pause while a pair collides; the picture shows it: a screenshot whose pixels at
     //    every polygon's centroid have the colliding fill exactly for the colliding ones.
-    b.click("#pause");
-    b.wait_for("pause", "window.polysect.settings.paused", 10);
-    for _ in 0..400 {
-        if b.js("return window.polysect.shown().pairs.length;") != json!(0) {
-            break;
-        }
-        b.click("#step");
-        std::thread::sleep(Duration::from_millis(20));
-    }
+    pause_on_collisions(&b, 1);
     let paused = assert_pairs_match_the_library(&b);
     assert!(!paused.pairs.is_empty(), "a colliding pair while paused");
     std::thread::sleep(Duration::from_millis(300));
@@ -747,24 +760,9 @@ fn live_page_fps() {
 #[ignore = "writes docs/img; needs chromium and chromium-driver; run by hand"]
 fn live_page_screenshots() {
     let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("docs/img");
-    let (_server, url) = start_polysect();
-    let b = Browser::start();
-    b.goto(&url);
-    b.wait_for(
-        "the first frames",
-        "window.polysect.ready && window.polysect.frame > 3",
-        30,
-    );
+    let (_server, _url, b) = open_page();
     b.wait_for("collisions", "window.polysect.shown().pairs.length >= 2", 30);
-    b.click("#pause");
-    b.wait_for("pause", "window.polysect.settings.paused", 10);
-    for _ in 0..400 {
-        if b.js("return window.polysect.shown().pairs.length;").as_u64() >= Some(2) {
-            break;
-        }
-        b.click("#step");
-        std::thread::sleep(Duration::from_millis(20));
-    }
+    pause_on_collisions(&b, 2);
     std::thread::sleep(Duration::from_millis(400));
     std::fs::write(out.join("live_simulation.png"), b.screenshot()).expect("written");
 

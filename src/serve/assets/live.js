@@ -387,6 +387,8 @@
   // whether the drawn pairs already account for every edit received.
   window.polysect = {
     get ready() { return S.ready; },
+    // No frame requested and none waiting to be drawn.
+    get idle() { return !S.inflight && !S.pending; },
     get scene() { return S.scene; },
     get world() { return S.world; },
     get frame() { return S.frame; },
