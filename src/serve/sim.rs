@@ -564,14 +564,12 @@ impl Simulation {
                 "polygon {polygon} has used all its {MAX_VERTEX_IDS} vertex ids; start a new scene"
             )));
         }
-        if self.bodies[polygon].ids.len() - self.bodies[polygon].ids.iter().filter(|v| v.is_none()).count()
-            >= MAX_VERTICES
-        {
+        let id = self.bodies[polygon].id;
+        if on_scene!(&self.store, s => s.polygon(id)).map_or(0, |p| p.len()) >= MAX_VERTICES {
             return Err(EditFailure::Invalid(format!(
                 "polygon {polygon} already has {MAX_VERTICES} vertices, the page's limit"
             )));
         }
-        let id = self.bodies[polygon].id;
         let v = on_scene!(&mut self.store, s => s.insert_vertex(id, a, p)).map_err(refused)?;
         self.bodies[polygon].ids.push(Some(v));
         self.edited(polygon);
@@ -915,6 +913,36 @@ mod tests {
         assert!(
             matches!(sim.move_vertex(1, 0, [1e9, 0.0]), Err(EditFailure::Invalid(m)) if m.contains("outside"))
         );
+    }
+
+    /// Inserting and removing one vertex over and over uses up the polygon's ids (they
+    /// are never reused); then insertions are refused with a message, removals go on.
+    #[test]
+    fn vertex_ids_are_bounded() {
+        let mut sim = Simulation::new(
+            Settings {
+                polygons: 1,
+                ..Settings::default()
+            },
+            1,
+        )
+        .expect("valid");
+        let poly = &sim.current_vertices()[0];
+        let (a, b) = (poly[0], poly[1]);
+        let (ex, ey) = (b.x - a.x, b.y - a.y);
+        // Just outside the middle of edge 0 → 1 (outward is to the right of a → b).
+        let out = [0.5 * (a.x + b.x) + 0.01 * ey, 0.5 * (a.y + b.y) - 0.01 * ex];
+        let first = sim.settings().vertices as u32;
+        for k in first..MAX_VERTEX_IDS as u32 {
+            let e = sim.insert_vertex(0, 0, out).expect("valid insertion");
+            assert_eq!(e.vertex, k);
+            sim.remove_vertex(0, k).expect("removal");
+        }
+        match sim.insert_vertex(0, 0, out) {
+            Err(EditFailure::Invalid(m)) => assert!(m.contains("used all its"), "{m}"),
+            other => panic!("expected the id limit, got {other:?}"),
+        }
+        sim.remove_vertex(0, 5).expect("removals still work");
     }
 
     #[test]
