@@ -128,6 +128,7 @@ fn dechunk(mut data: &[u8]) -> Vec<u8> {
 struct Browser {
     addr: String,
     session: String,
+    profile: PathBuf,
     _driver: Proc,
 }
 
@@ -176,6 +177,7 @@ impl Browser {
         Browser {
             addr,
             session,
+            profile,
             _driver: driver,
         }
     }
@@ -270,6 +272,7 @@ impl Browser {
 impl Drop for Browser {
     fn drop(&mut self) {
         let _ = http(&self.addr, "DELETE", &format!("/session/{}", self.session), None);
+        let _ = std::fs::remove_dir_all(&self.profile);
     }
 }
 
