@@ -45,6 +45,7 @@ pub mod kernel;
 pub mod lp;
 pub mod polygon;
 pub mod render;
+pub mod serve;
 pub mod store;
 
 /// The README's examples, compiled and run as doctests.

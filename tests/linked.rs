@@ -225,3 +225,30 @@ fn translations_round_each_coordinate_and_are_refused_exactly_when_convexity_bre
     t.translate(f64::MAX, 0.0).unwrap_err();
     t.translate(0.0, 0.0).unwrap();
 }
+
+/// Translations that round nothing (coordinates and offsets on a common binary grid)
+/// skip the boundary walk; they must still give exactly the reference's polygon.
+#[test]
+fn exact_translations_move_rigidly() {
+    let mut rng = SmallRng::seed_from_u64(SEED ^ 0x7b);
+    let grid = 2f64.powi(-20);
+    for _ in 0..500 {
+        let n = rng.random_range(3..200);
+        let base = polysect::generate::regular_polygon(n, 1000.0);
+        let Ok(poly) = base.map(|v| Point::new((v.x / grid).round() * grid, (v.y / grid).round() * grid))
+        else {
+            continue;
+        };
+        let mut p = LinkedPolygon::from_convex_shuffled(&poly, &mut rng);
+        for _ in 0..20 {
+            let (dx, dy) = (
+                (rng.random_range(-50.0..50.0) / grid).round() * grid,
+                (rng.random_range(-50.0..50.0) / grid).round() * grid,
+            );
+            let want = translated_reference(&p, dx, dy).expect("an exact translation is valid");
+            p.translate(dx, dy).expect("accepted");
+            assert_eq!(p.iter().map(|(_, v)| v).collect::<Vec<_>>(), want);
+        }
+        p.debug_validate().unwrap();
+    }
+}

@@ -10,6 +10,7 @@ use polysect::{ConvexPolygon, Precision};
 use rand::SeedableRng;
 use rand::rngs::SmallRng;
 use std::io::{self, BufRead, BufWriter, Write};
+use std::net::IpAddr;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -126,6 +127,16 @@ enum Command {
     },
     /// Measure the planner's cost model (conversion vs sampling crossover) on this machine.
     Calibrate,
+    /// Serve the live page: polygons moving, colliding and being edited in a scene.
+    /// Prints the page's URL once listening; stops on Ctrl-C or SIGTERM.
+    Serve {
+        /// Port to listen on (0: any free port; the printed URL names it).
+        #[arg(long, default_value_t = 8080)]
+        port: u16,
+        /// Address to listen on (loopback by default: the page is for this machine).
+        #[arg(long, default_value = "127.0.0.1", value_parser = parse_bind)]
+        bind: IpAddr,
+    },
 }
 
 #[derive(Clone, Copy)]
@@ -162,6 +173,14 @@ fn parse_precision(s: &str) -> Result<Precision, String> {
 
 fn parse_experiment(s: &str) -> Result<Experiment, String> {
     s.parse()
+}
+
+fn parse_bind(s: &str) -> Result<IpAddr, String> {
+    if s == "localhost" {
+        return Ok(IpAddr::from([127, 0, 0, 1]));
+    }
+    s.parse()
+        .map_err(|_| format!("'{s}' is not an IP address (e.g. 127.0.0.1, ::1, 0.0.0.0)"))
 }
 
 fn parse_family(s: &str) -> Result<Family, String> {
@@ -221,6 +240,7 @@ fn main() -> ExitCode {
         }) => demo::run(polygons, max_log2, steps, seed, &svg),
         Some(Command::Render { file, out, limit }) => render(file.as_deref(), &out, limit),
         Some(Command::Calibrate) => calibrate(),
+        Some(Command::Serve { port, bind }) => serve(bind, port),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -375,6 +395,29 @@ fn render(file: Option<&str>, out_path: &str, limit: usize) -> io::Result<()> {
         .map_err(|e| io::Error::new(e.kind(), format!("cannot write {out_path}: {e}")))?;
     eprintln!("wrote {} panel(s) to {out_path}", panels.len());
     Ok(())
+}
+
+/// Listens, prints the URL, and serves until SIGINT or SIGTERM (then exits with 0).
+fn serve(bind: IpAddr, port: u16) -> io::Result<()> {
+    let server = polysect::serve::Server::bind(bind, port)?;
+    let (done, finished) = std::sync::mpsc::channel::<io::Result<()>>();
+    let stop = done.clone();
+    ctrlc::set_handler(move || {
+        let _ = stop.send(Ok(()));
+    })
+    .map_err(io::Error::other)?;
+    let url = server.url();
+    std::thread::spawn(move || {
+        let why = server
+            .run()
+            .and(Err(io::Error::other("the server stopped accepting connections")));
+        let _ = done.send(why);
+    });
+    let mut out = io::stdout().lock();
+    writeln!(out, "{url}")?;
+    out.flush()?;
+    drop(out);
+    finished.recv().unwrap_or(Ok(()))
 }
 
 fn calibrate() -> io::Result<()> {

@@ -323,7 +323,9 @@ impl LinkedPolygon {
     /// Rounding moves each vertex by at most half an ulp of its new coordinates, which is
     /// enough to flatten or flip a turn whose vertices are only a few ulps apart, so the
     /// rounded polygon is validated again, exactly: every turn strictly left and the
-    /// boundary winding once. Handles and the arena order are unchanged.
+    /// boundary winding once. When no addition rounds (checked per coordinate, in
+    /// storage order, with the two-sum error) the polygon moved rigidly and the walk is
+    /// skipped. Handles and the arena order are unchanged.
     ///
     /// # Errors
     /// `NonFinite` when `dx` or `dy` is not finite or a translated coordinate overflows
@@ -349,12 +351,20 @@ impl LinkedPolygon {
             return Err(EditError::NonFinite { point: by });
         }
         let moved = |p: Point| Point::new(p.x + dx, p.y + dy);
-        if let Some(node) = self.nodes.iter().find(|node| !moved(node.point).is_finite()) {
-            return Err(EditError::NonFinite {
-                point: moved(node.point),
-            });
+        // One pass in storage order: overflow, and whether every addition is exact
+        // (Knuth's two-sum error is zero). An exact translation preserves every
+        // orientation, so only a rounded one needs the boundary walk below.
+        let mut exact = true;
+        for node in &self.nodes {
+            let (p, q) = (node.point, moved(node.point));
+            if !q.is_finite() {
+                return Err(EditError::NonFinite { point: q });
+            }
+            exact &= two_sum_error(p.x, dx, q.x) == 0.0 && two_sum_error(p.y, dy, q.y) == 0.0;
         }
-        self.check_translated(moved)?;
+        if !exact {
+            self.check_translated(moved)?;
+        }
         for node in &mut self.nodes {
             node.point = moved(node.point);
         }
@@ -544,6 +554,13 @@ impl LinkedPolygon {
         }
         self.to_convex().debug_validate()
     }
+}
+
+/// The rounding error of `s = a + b` (Knuth's two-sum): zero exactly when the sum was
+/// exact. `a`, `b` and `s` finite.
+fn two_sum_error(a: f64, b: f64, s: f64) -> f64 {
+    let bb = s - a;
+    (a - (s - bb)) + (b - bb)
 }
 
 /// Serialised as its vertex list, counter-clockwise from [`LinkedPolygon::first`];
