@@ -7,9 +7,9 @@
 //! into a regression test.
 
 use crate::intersect::{Algorithm, ArrayIntersection, Linear, brute_force};
-use crate::jsonl;
 use crate::kernel::{Exact, Point, Precision};
 use crate::polygon::{ConvexPolygon, EditError, LinkedPolygon, PolygonError, convex_hull};
+use crate::protocol;
 use std::fmt;
 
 /// A point whose `Debug` is the Rust expression that builds it.
@@ -186,7 +186,7 @@ pub fn json_line(bytes: &[u8]) -> bool {
     let mut answered = false;
     for &algorithm in Algorithm::ALL {
         for precision in Precision::ALL {
-            let reply = jsonl::check_line(bytes, |p, q| algorithm.intersects(precision, p, q));
+            let reply = protocol::check::check_line(bytes, |p, q| algorithm.intersects(precision, p, q));
             let v: serde_json::Value = serde_json::from_str(&reply).expect("the reply is JSON");
             assert!(
                 v.get("intersects").is_some() != v.get("error").is_some(),
