@@ -23,8 +23,8 @@ use super::json::shown;
 use super::line::{Channel, Stop, json_string, serve};
 use super::write_point;
 use crate::kernel::{Exact, Kernel, Point};
-use crate::polygon::{ConvexPolygon, LinkedPolygon, VertexId};
-use crate::store::{PolygonId, Scene, Strategy};
+use crate::polygon::{ConvexPolygon, EditError, LinkedPolygon, VertexId};
+use crate::store::{PolygonId, Scene, SceneError, Strategy};
 use std::collections::{BTreeMap, HashMap};
 use std::fmt::{self, Write as _};
 use std::io::{self, Read, Write};
@@ -252,6 +252,30 @@ impl<K: Kernel> SceneSession<K> {
         self.polygons.values().map(|n| n.vertices.len()).sum()
     }
 
+    /// Every polygon by name with its vertices and their ids, counter-clockwise from the
+    /// smallest id: what `vertices` would answer for each (for tests that check a refused
+    /// line changed nothing).
+    pub(crate) fn state(&self) -> BTreeMap<String, Vec<(u64, Point)>> {
+        self.polygons
+            .iter()
+            .map(|(name, named)| {
+                let ids: HashMap<VertexId, u64> = named.vertices.iter().map(|(&id, &v)| (v, id)).collect();
+                let start = named.vertices.first_key_value().map(|(_, &v)| v);
+                let walk: Vec<(u64, Point)> = match (self.scene.polygon(named.id), start) {
+                    (Ok(poly), Some(start)) => poly
+                        .iter_from(start)
+                        .map(|it| {
+                            it.map(|(v, p)| (ids.get(&v).copied().unwrap_or(u64::MAX), p))
+                                .collect()
+                        })
+                        .unwrap_or_default(),
+                    _ => Vec::new(),
+                };
+                (name.clone(), walk)
+            })
+            .collect()
+    }
+
     /// Checks the scene's invariants and that the names and ids match it exactly: every
     /// name has a live polygon, every live vertex exactly one id, every id is below the
     /// polygon's next id.
@@ -354,9 +378,11 @@ impl<K: Kernel> SceneSession<K> {
                 let name = l.name.ok_or_else(|| need("name"))?;
                 let by = l.by.ok_or_else(|| need("by"))?;
                 let pid = self.named(&name)?.id;
-                self.scene
-                    .translate(pid, by.x, by.y)
-                    .map_err(|e| format!("translate refused: {e}"))?;
+                self.scene.translate(pid, by.x, by.y).map_err(|e| match e {
+                    // Its message starts with "translation refused".
+                    SceneError::Edit(EditError::RoundingBreaksConvexity { .. }) => e.to_string(),
+                    _ => format!("translate refused: {e}"),
+                })?;
                 Ok(OK.into())
             }
             "intersects" => {
