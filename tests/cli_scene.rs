@@ -495,6 +495,17 @@ fn output_failures_exit_1_and_closed_pipes_exit_0() {
             vec!["scene"],
             vec!["crossings"],
             vec!["--help"],
+            vec![
+                "demo",
+                "--polygons",
+                "2",
+                "--max-log2",
+                "4",
+                "--steps",
+                "2",
+                "--svg",
+                "/dev/null",
+            ],
         ] {
             let input: &[u8] = match args[0] {
                 "scene" => b"{\"op\": \"pairs\"}\n",
@@ -518,6 +529,21 @@ fn output_failures_exit_1_and_closed_pipes_exit_0() {
             assert!(err.contains("No space left"), "{args:?}: {err}");
         }
     }
+    // An output directory that cannot be made.
+    let (code, _, err) = run(
+        &[
+            "bench",
+            "sqrt",
+            "--quick",
+            "--no-progress",
+            "--out",
+            "/proc/polysect-bench",
+        ],
+        b"",
+    );
+    assert_eq!(code, 1, "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("cannot write to /proc/polysect-bench"), "{err}");
     // A reader that stops early: the writer stops quietly with status 0.
     let mut child = Command::new(env!("CARGO_BIN_EXE_polysect"))
         .args(["gen", "--count", "1000000"])

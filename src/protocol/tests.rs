@@ -512,3 +512,36 @@ fn deep_nesting_and_long_values_are_skipped_or_echoed_without_recursion() {
     );
     assert_eq!(answer(&long_number), r#"{"intersects": true}"#);
 }
+
+#[test]
+fn every_protocol_refuses_every_shape_that_is_not_its_object() {
+    use crate::crossings::{Crossings, Sweep};
+    let shapes = [
+        (
+            r#"[[[0,0],[1,0],[0,1]], [[5,5],[6,5],[5,6]], 7]"#,
+            "found an array",
+        ),
+        (r#"[{"op": "pairs"}]"#, "found an array"),
+        ("[]", "found an array"),
+        ("42", "found a number"),
+        (r#""{\"op\": \"pairs\"}""#, "found a string"),
+        ("null", "found null"),
+        ("false", "found a boolean"),
+        ("{}", "missing field"),
+        (r#"{"id": 5}"#, "missing field"),
+        ("{\"x\": 1} {}", "trailing characters"),
+    ];
+    let mut session = SceneSession::new(SceneOptions::default()).unwrap();
+    for (shape, needle) in shapes {
+        let replies = [
+            check_line(shape.as_bytes(), |_, _| true),
+            crossings_line(shape.as_bytes(), |p, q| Sweep.crossings(p, q)),
+            session.answer_line(shape.as_bytes()),
+        ];
+        for reply in replies {
+            let message = error_of(&reply);
+            assert!(message.contains(needle), "{shape} -> {message}");
+        }
+    }
+    assert!(session.scene().is_empty());
+}
