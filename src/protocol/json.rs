@@ -141,20 +141,9 @@ impl<R: Read, W: Write> Channel<R, W> {
         } else {
             loop {
                 let at = self.column();
-                if b != b'"' {
-                    return Err(self.syntax(
-                        at,
-                        format!("invalid JSON: expected a key (a string), found {}", kind(b)),
-                    ));
-                }
                 let mut key = std::mem::take(&mut self.keybuf);
                 key.clear();
-                self.string_into(&mut key)?;
-                if self.ws()? != b':' {
-                    let at = self.column();
-                    return Err(self.syntax(at, "invalid JSON: expected ':' after the key"));
-                }
-                self.bump();
+                self.key_into(b, &mut key)?;
                 self.ws()?;
                 let known = keys.iter().position(|k| k.as_bytes() == key.as_slice());
                 let bit = match known {
@@ -308,18 +297,23 @@ impl<R: Read, W: Write> Channel<R, W> {
     /// Inside an object being skipped: a key and its colon.
     fn member_key(&mut self) -> Result<(), Stop> {
         let b = self.ws()?;
-        let at = self.column();
+        let mut s = std::mem::take(&mut self.scratch);
+        s.clear();
+        let r = self.key_into(b, &mut s);
+        self.scratch = s;
+        r
+    }
+
+    /// A key (the next byte, `b`, must open it) decoded into `out`, and its colon.
+    fn key_into(&mut self, b: u8, out: &mut Vec<u8>) -> Result<(), Stop> {
         if b != b'"' {
+            let at = self.column();
             return Err(self.syntax(
                 at,
                 format!("invalid JSON: expected a key (a string), found {}", kind(b)),
             ));
         }
-        let mut s = std::mem::take(&mut self.scratch);
-        s.clear();
-        let r = self.string_into(&mut s);
-        self.scratch = s;
-        r?;
+        self.string_into(out)?;
         if self.ws()? != b':' {
             let at = self.column();
             return Err(self.syntax(at, "invalid JSON: expected ':' after the key"));
@@ -527,23 +521,33 @@ impl<R: Read, W: Write> Channel<R, W> {
                 }
             }
             index += 1;
-            let c = self.ws()?;
-            match c {
-                b',' => self.bump(),
-                b']' => {
-                    self.bump();
-                    break;
-                }
-                other => {
-                    let at = self.column();
-                    return Err(self.syntax(
-                        at,
-                        format!("invalid JSON: expected ',' or ']', found {}", kind(other)),
-                    ));
-                }
+            if !self.array_continues()? {
+                break;
             }
         }
         Ok(ok.then_some(points))
+    }
+
+    /// After an array element: consumes `,` (true: another element follows) or `]`
+    /// (false: the array ended).
+    fn array_continues(&mut self) -> Result<bool, Stop> {
+        match self.ws()? {
+            b',' => {
+                self.bump();
+                Ok(true)
+            }
+            b']' => {
+                self.bump();
+                Ok(false)
+            }
+            other => {
+                let at = self.column();
+                Err(self.syntax(
+                    at,
+                    format!("invalid JSON: expected ',' or ']', found {}", kind(other)),
+                ))
+            }
+        }
     }
 
     /// One `[x, y]` point. `None` after a recorded error (the value is consumed).
@@ -595,19 +599,8 @@ impl<R: Read, W: Write> Channel<R, W> {
                     self.wrong_type(at_c, c, m)?;
                 }
                 count += 1;
-                match self.ws()? {
-                    b',' => self.bump(),
-                    b']' => {
-                        self.bump();
-                        break;
-                    }
-                    other => {
-                        let at = self.column();
-                        return Err(self.syntax(
-                            at,
-                            format!("invalid JSON: expected ',' or ']', found {}", kind(other)),
-                        ));
-                    }
+                if !self.array_continues()? {
+                    break;
                 }
             }
         }
