@@ -87,6 +87,12 @@ fn usage_errors() {
         err.contains("--certificate") && err.contains("not available"),
         "{err}"
     );
+    let (code, _, err) = run(&["scene", "--certificate", "/no/such/file"], b"");
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("--certificate") && err.contains("not available"),
+        "{err}"
+    );
     let (code, _, err) = run(&["scene", "--strategy", "eager"], b"");
     assert_eq!(code, 2);
     assert!(err.contains("planner") && err.contains("cached"), "{err}");

@@ -7,7 +7,7 @@ use polysect::generate::{self, Family, Relation};
 use polysect::intersect::Algorithm;
 use polysect::protocol::{self, scene::SceneOptions, scene::SceneSession};
 use polysect::store::Strategy;
-use polysect::{ConvexPolygon, Exact, Fast, Precision};
+use polysect::{ConvexPolygon, Exact, Fast, Kernel, Precision};
 use rand::SeedableRng;
 use rand::rngs::SmallRng;
 use std::io::{self, BufWriter, Read, Write};
@@ -348,17 +348,20 @@ fn check(
 }
 
 fn scene(file: Option<&str>, precision: Precision, options: SceneOptions) -> Result<(), Failure> {
-    let usage = |e: protocol::scene::OptionError| Failure::Usage(e.to_string());
-    let input = open_input(file).map_err(Failure::Io)?;
     match precision {
-        Precision::Exact => SceneSession::with_kernel(Exact, options)
-            .map_err(usage)?
-            .run(input, output()),
-        Precision::Fast => SceneSession::with_kernel(Fast, options)
-            .map_err(usage)?
-            .run(input, output()),
+        Precision::Exact => run_session(SceneSession::with_kernel(Exact, options), file),
+        Precision::Fast => run_session(SceneSession::with_kernel(Fast, options), file),
     }
-    .map_err(Failure::Io)
+}
+
+/// Options are checked before the input is opened: a usage error comes first.
+fn run_session<K: Kernel>(
+    session: Result<SceneSession<K>, protocol::scene::OptionError>,
+    file: Option<&str>,
+) -> Result<(), Failure> {
+    let mut session = session.map_err(|e| Failure::Usage(e.to_string()))?;
+    let input = open_input(file).map_err(Failure::Io)?;
+    session.run(input, output()).map_err(Failure::Io)
 }
 
 fn crossings(file: Option<&str>, algorithm: CrossingAlgorithm, precision: Precision) -> io::Result<()> {
@@ -432,6 +435,9 @@ fn render(file: Option<&str>, out_path: &str, limit: usize) -> io::Result<()> {
     use polysect::render::{Panel, Style, svg};
     let mut panels = Vec::new();
     protocol::check::for_each_pair(open_input(file)?, |line_no, pair| {
+        if panels.len() >= limit {
+            return false;
+        }
         let panel = match pair {
             Ok((p, q)) => {
                 let hit = Algorithm::Linear.intersects(Precision::Exact, &p, &q);
