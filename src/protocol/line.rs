@@ -45,8 +45,8 @@ pub(crate) struct Channel<R, W> {
     out: W,
     /// Output written since the last flush.
     dirty: bool,
-    /// While some value's raw text is being captured: the bytes before `capture_from`
-    /// of earlier blocks.
+    /// While a value's verbatim text is being captured: its bytes from earlier blocks
+    /// (the rest starts at `buf[capture_from]`).
     pub(super) capture: Option<Vec<u8>>,
     pub(super) capture_from: usize,
     /// Scratch memory for number tokens that straddle blocks and for strings.
