@@ -176,12 +176,14 @@ impl<K: Kernel> Scene<K> {
             costs: CostModel::default(),
             stats: PlannerStats::default(),
             workspace: QueryWorkspace::default(),
-            rng: SmallRng::seed_from_u64(0x5ce9e),
+            rng: crate::intersect::fresh_rng(),
         }
     }
 
-    /// Reseeds the RNG of the sampled test (answers do not depend on it under the exact
-    /// kernel; running times and the fast kernel's rare wrong answers do).
+    /// Reseeds the RNG of the sampled test, which is otherwise seeded from the operating
+    /// system (docs/design.md, "Randomness"): the same seed and the same operations give
+    /// the same draws. Answers do not depend on it under the exact kernel; running times
+    /// and the fast kernel's rare wrong answers do.
     pub fn seed(&mut self, seed: u64) {
         self.rng = SmallRng::seed_from_u64(seed);
     }
@@ -548,14 +550,14 @@ impl<K: Kernel> Scene<K> {
             })
             .collect();
         self.convert_all(pending);
+        let base: u64 = rand::Rng::random(&mut self.rng);
         let this = &*self;
         routes
             .par_iter()
             .enumerate()
             .map_init(QueryWorkspace::default, |ws, (i, route)| {
                 let route = route.clone()?;
-                let mut rng =
-                    SmallRng::seed_from_u64(0x9a1e_u64 ^ (i as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15));
+                let mut rng = SmallRng::seed_from_u64(base ^ (i as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15));
                 Ok(this.answer(route, ws, &mut rng))
             })
             .collect()
