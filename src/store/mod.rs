@@ -53,6 +53,7 @@
 mod broad;
 mod interop;
 mod planner;
+mod route;
 mod scene;
 pub mod workload;
 

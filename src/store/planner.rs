@@ -1,10 +1,11 @@
 //! The query planner's cost model, strategies and counters. The rule itself is in the
-//! module docs of [`store`](super); `Scene` applies it.
+//! module docs of [`store`](super); `Scene` applies it. This file knows the routes
+//! (`route.rs`, which it times) and nothing of the scene.
 
+use super::route::{QueryWorkspace, array_test, sampled_test};
 use crate::generate::{self, Family, Relation};
-use crate::intersect::Algorithm;
 use crate::kernel::Kernel;
-use crate::polygon::{ConvexPolygon, LinkedPolygon};
+use crate::polygon::LinkedPolygon;
 use rand::SeedableRng;
 use rand::rngs::SmallRng;
 use std::time::Instant;
@@ -90,7 +91,7 @@ impl CostModel {
         let mut convert_per_vertex = Vec::new();
         let mut sampled_per_sqrt = Vec::new();
         let mut crossover = None;
-        let mut ws = super::scene::QueryWorkspace::default();
+        let mut ws = QueryWorkspace::default();
         for &n in &sizes {
             let pairs: Vec<(LinkedPolygon, LinkedPolygon)> = (0..8)
                 .map(|_| {
@@ -105,12 +106,12 @@ impl CostModel {
             let t_convert = time_per(reps, || {
                 for (p, q) in &pairs {
                     let (a, b) = (p.to_convex(), q.to_convex());
-                    std::hint::black_box(Algorithm::fastest_array().intersects_with(kernel, &a, &b));
+                    std::hint::black_box(array_test(kernel, &a, &b));
                 }
             }) / pairs.len() as f64;
             let t_sampled = time_per(reps, || {
                 for (p, q) in &pairs {
-                    std::hint::black_box(super::scene::sampled_test(kernel, p, q, &mut ws, &mut rng));
+                    std::hint::black_box(sampled_test(kernel, p, q, &mut ws, &mut rng));
                 }
             }) / pairs.len() as f64;
             convert_per_vertex.push(t_convert / (2 * n) as f64);
@@ -156,9 +157,4 @@ pub struct PlannerStats {
     pub throwaway_conversions: u64,
     /// Snapshots dropped by an edit.
     pub invalidations: u64,
-}
-
-/// Runs the fastest array algorithm with the scene's kernel.
-pub(crate) fn array_test<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> bool {
-    Algorithm::fastest_array().intersects_with(kernel, p, q)
 }

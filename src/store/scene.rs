@@ -1,8 +1,8 @@
 //! [`Scene`]: the store of editable polygons and its query planner.
 
 use super::broad::{BoundingBox, BroadPhase};
-use super::planner::{CostModel, PlannerStats, Strategy, array_test};
-use crate::intersect::{Clm, ClmWorkspace, LinkedIntersection};
+use super::planner::{CostModel, PlannerStats, Strategy};
+use super::route::{QueryWorkspace, Route, array_test, sampled_test};
 use crate::kernel::{Exact, Kernel, Point};
 use crate::polygon::{ConvexPolygon, EditError, LinkedPolygon, PolygonError, VertexId};
 use rand::SeedableRng;
@@ -93,32 +93,6 @@ impl Entry {
             stats.invalidations += 1;
         }
     }
-}
-
-/// Per-query scratch memory, reused so that queries allocate nothing in the steady state.
-#[derive(Clone, Debug, Default)]
-pub(crate) struct QueryWorkspace {
-    clm: ClmWorkspace,
-}
-
-/// The sampled (sublinear) test on two linked polygons: Chazelle–Liu–Magen.
-pub(crate) fn sampled_test<K: Kernel>(
-    kernel: K,
-    p: &LinkedPolygon,
-    q: &LinkedPolygon,
-    ws: &mut QueryWorkspace,
-    rng: &mut SmallRng,
-) -> bool {
-    Clm.intersects_with_workspace(kernel, p, q, rng, &mut ws.clm)
-}
-
-/// How one planned query will be answered.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Route {
-    Known(bool),
-    Arrays(usize, usize),
-    Sampled(usize, usize),
-    Throwaway(usize, usize),
 }
 
 /// A scene of editable convex polygons with planned intersection queries; see the
