@@ -6,10 +6,10 @@
 use criterion::{BatchSize, BenchmarkId, Criterion, criterion_group, criterion_main};
 use polysect::generate::regular_polygon;
 use polysect::store::Scene;
-use polysect::{Exact, LinkedPolygon, Point, VertexId};
-use std::hint::black_box;
 use polysect::store::Strategy;
 use polysect::store::workload::{self, WorkloadSpec};
+use polysect::{Exact, LinkedPolygon, Point, VertexId};
+use std::hint::black_box;
 
 fn workloads(c: &mut Criterion) {
     let base = workload::scattered_scene(Exact, 48, 16, 3.0, 7);
@@ -65,7 +65,12 @@ fn edit_targets(p: &LinkedPolygon) -> Vec<(VertexId, Point, Point, Point)> {
         .map(|(v, a)| {
             let b = p.point(p.next(v).unwrap()).unwrap();
             let out = |x: f64, y: f64, f: f64| Point::new(x * f, y * f);
-            (v, a, out((a.x + b.x) / 2.0, (a.y + b.y) / 2.0, 1.0001), out(a.x, a.y, 1.0001))
+            (
+                v,
+                a,
+                out((a.x + b.x) / 2.0, (a.y + b.y) / 2.0, 1.0001),
+                out(a.x, a.y, 1.0001),
+            )
         })
         .collect()
 }
@@ -103,7 +108,9 @@ fn edits(c: &mut Criterion) {
         b.iter(|| {
             let (v, _, ins, _) = targets[i % targets.len()];
             i += 1;
-            let w = scene.insert_vertex(black_box(id), black_box(v), black_box(ins)).unwrap();
+            let w = scene
+                .insert_vertex(black_box(id), black_box(v), black_box(ins))
+                .unwrap();
             scene.remove_vertex(black_box(id), black_box(w)).unwrap()
         })
     });
@@ -112,8 +119,12 @@ fn edits(c: &mut Criterion) {
         b.iter(|| {
             let (v, at, _, out) = targets[i % targets.len()];
             i += 1;
-            scene.move_vertex(black_box(id), black_box(v), black_box(out)).unwrap();
-            scene.move_vertex(black_box(id), black_box(v), black_box(at)).unwrap()
+            scene
+                .move_vertex(black_box(id), black_box(v), black_box(out))
+                .unwrap();
+            scene
+                .move_vertex(black_box(id), black_box(v), black_box(at))
+                .unwrap()
         })
     });
     group.finish();

@@ -9,10 +9,14 @@
 //! sampling stays exactly uniform after any sequence of removals and the storage
 //! never holds more than the live vertices (plus `Vec` slack).
 //!
-//! Users hold [`VertexId`]s: a key into a `slab` of slots (each slot records the
-//! node's current position) plus a generation. Slab keys are reused after removal;
-//! the generation (a per-polygon counter, 64 bits, never reused) makes a stale handle
-//! an error instead of an alias of some later vertex.
+//! Users hold [`VertexId`]s: the polygon's identity, a key into a `slab` of slots (each
+//! slot records the node's current position) and a generation. The identity is drawn
+//! from one process-wide counter when the polygon is built or cloned, so a handle from
+//! another polygon is refused ([`EditError::ForeignHandle`]) instead of naming
+//! whichever vertex sits in the same slot here. Slab keys are reused after removal; the
+//! generation (a per-polygon counter, 64 bits, never reused) makes a stale handle an
+//! error ([`EditError::StaleHandle`]) instead of an alias of some later vertex. Checking
+//! a handle is one comparison more than the slab lookup; no edit touches the counter.
 //!
 //! Algorithms inside the crate walk positions directly (`*_at` methods); positions
 //! are valid until the next edit, which the borrow checker enforces for anyone
@@ -30,13 +34,41 @@ use super::{ConvexPolygon, EditError, PolygonError};
 use crate::kernel::{Exact, Kernel, Orientation, Point};
 use rand::Rng;
 use slab::Slab;
+use std::sync::atomic::{AtomicU64, Ordering};
 
-/// A stable handle to a vertex of a [`LinkedPolygon`]. Stays valid until that vertex
-/// is removed; afterwards every use is an [`EditError::StaleHandle`].
+/// A stable handle to a vertex of one [`LinkedPolygon`]. Stays valid until that vertex
+/// is removed; afterwards every use is an [`EditError::StaleHandle`]. Given to any other
+/// polygon (including a clone of its own), every use is an [`EditError::ForeignHandle`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct VertexId {
-    slot: u32,
+    owner: u64,
     generation: u64,
+    slot: u32,
+}
+
+/// A process-wide unique identity, for the owner of handles (a polygon, a scene).
+/// Cloning draws a fresh one: a clone is a new owner, and handles of the original are
+/// foreign to it. One relaxed atomic increment per owner built (64 bits: never wraps in
+/// practice; `AtomicU64` exists on every target the library builds for, wasm32 included).
+#[derive(Debug, PartialEq, Eq)]
+pub(crate) struct Identity(u64);
+
+impl Identity {
+    pub(crate) fn fresh() -> Self {
+        static NEXT: AtomicU64 = AtomicU64::new(1);
+        Identity(NEXT.fetch_add(1, Ordering::Relaxed))
+    }
+
+    #[inline]
+    pub(crate) fn get(&self) -> u64 {
+        self.0
+    }
+}
+
+impl Clone for Identity {
+    fn clone(&self) -> Self {
+        Identity::fresh()
+    }
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -56,6 +88,11 @@ struct Slot {
 /// A convex polygon as a doubly linked list of vertices, counter-clockwise, with O(1)
 /// validated edits and O(1) uniform vertex sampling. See the module docs for the layout.
 ///
+/// Vertex handles ([`VertexId`]) belong to the polygon that issued them: another
+/// polygon refuses them with [`EditError::ForeignHandle`]. A clone is another polygon
+/// (same vertices, fresh handles: take them from the clone with [`first`](Self::first),
+/// [`iter`](Self::iter) or [`next`](Self::next)).
+///
 /// ```
 /// use polysect::{LinkedPolygon, Point, EditError};
 /// let mut p = LinkedPolygon::from_points([[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]])?;
@@ -69,10 +106,14 @@ struct Slot {
 /// p.remove(v)?;
 /// assert_eq!(p.remove(v), Err(EditError::StaleHandle));
 /// assert_eq!(p.next(a)?, b);
+/// // A handle of another polygon is refused, never applied to this one.
+/// let other = LinkedPolygon::from_points([[10.0, 10.0], [11.0, 10.0], [11.0, 11.0]])?;
+/// assert_eq!(p.remove(other.first()), Err(EditError::ForeignHandle));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Clone, Debug)]
 pub struct LinkedPolygon {
+    owner: Identity,
     nodes: Vec<Node>,
     slots: Slab<Slot>,
     next_generation: u64,
@@ -168,6 +209,7 @@ impl LinkedPolygon {
             };
         }
         LinkedPolygon {
+            owner: Identity::fresh(),
             nodes,
             slots,
             next_generation: n as u64,
@@ -186,15 +228,33 @@ impl LinkedPolygon {
         self.id_at(0)
     }
 
+    #[inline]
     fn pos(&self, id: VertexId) -> Result<usize, EditError> {
+        if id.owner != self.owner.get() {
+            return Err(EditError::ForeignHandle);
+        }
         match self.slots.get(id.slot as usize) {
             Some(s) if s.generation == id.generation => Ok(s.pos as usize),
             _ => Err(EditError::StaleHandle),
         }
     }
 
-    /// True while `id` names a live vertex of this polygon.
-    pub fn contains(&self, id: VertexId) -> bool {
+    /// True while `id` names a live vertex of this polygon (false for a removed vertex
+    /// and for a handle of another polygon). This asks about a handle, not whether a
+    /// point lies in the polygon.
+    ///
+    /// ```
+    /// use polysect::LinkedPolygon;
+    /// let mut p = LinkedPolygon::from_points([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+    /// let q = p.clone();
+    /// let v = p.first();
+    /// assert!(p.has_vertex(v));
+    /// assert!(!q.has_vertex(v)); // a clone is another polygon
+    /// p.remove(v)?;
+    /// assert!(!p.has_vertex(v));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn has_vertex(&self, id: VertexId) -> bool {
         self.pos(id).is_ok()
     }
 
@@ -260,6 +320,7 @@ impl LinkedPolygon {
         let pos = self.nodes.len() as u32;
         let generation = self.bump_generation();
         let slot = self.slots.insert(Slot { pos, generation }) as u32;
+        let owner = self.owner.get();
         self.nodes.push(Node {
             point,
             next: b as u32,
@@ -268,7 +329,11 @@ impl LinkedPolygon {
         });
         self.nodes[a].next = pos;
         self.nodes[b].prev = pos;
-        Ok(VertexId { slot, generation })
+        Ok(VertexId {
+            owner,
+            generation,
+            slot,
+        })
     }
 
     /// Removes the vertex, returning its point. O(1).
@@ -499,8 +564,9 @@ impl LinkedPolygon {
     pub fn id_at(&self, pos: usize) -> VertexId {
         let slot = self.nodes[pos].slot;
         VertexId {
-            slot,
+            owner: self.owner.get(),
             generation: self.slots[slot as usize].generation,
+            slot,
         }
     }
 
@@ -607,7 +673,47 @@ mod tests {
         );
         assert_eq!(p.point(w), Ok(Point::new(2., -0.5)));
         let other = square();
-        assert!(other.contains(other.first()));
+        assert!(other.has_vertex(other.first()));
+    }
+
+    #[test]
+    fn a_handle_of_another_polygon_is_refused_by_every_method() {
+        let mut a = square();
+        let b = LinkedPolygon::from_points([[10., 10.], [11., 10.], [11., 11.]]).unwrap();
+        // The same slot and generation exist in `a`: only the owner tells them apart.
+        let vb = b.next(b.first()).unwrap();
+        let twin = a.next(a.first()).unwrap();
+        assert_eq!((vb.slot, vb.generation), (twin.slot, twin.generation));
+        let copy = a.clone();
+        let from_copy = copy.first();
+        let before: Vec<_> = a.iter().map(|(_, p)| p).collect();
+        for foreign in [vb, from_copy] {
+            assert!(!a.has_vertex(foreign));
+            assert_eq!(a.point(foreign), Err(EditError::ForeignHandle));
+            assert_eq!(a.next(foreign), Err(EditError::ForeignHandle));
+            assert_eq!(a.prev(foreign), Err(EditError::ForeignHandle));
+            assert_eq!(a.position(foreign), Err(EditError::ForeignHandle));
+            assert!(matches!(a.iter_from(foreign), Err(EditError::ForeignHandle)));
+            assert_eq!(
+                a.insert_after(foreign, Point::new(2., -1.)),
+                Err(EditError::ForeignHandle)
+            );
+            assert_eq!(a.remove(foreign), Err(EditError::ForeignHandle));
+            assert_eq!(
+                a.move_vertex(foreign, Point::new(5., -1.)),
+                Err(EditError::ForeignHandle)
+            );
+        }
+        assert_eq!(a.iter().map(|(_, p)| p).collect::<Vec<_>>(), before);
+        // The original's handles are foreign to the clone too, and each polygon still
+        // accepts its own.
+        assert_eq!(copy.point(a.first()), Err(EditError::ForeignHandle));
+        assert!(copy.has_vertex(from_copy) && a.has_vertex(twin) && b.has_vertex(vb));
+        // A removed vertex of this polygon stays stale, not foreign.
+        let v = a.insert_after(a.first(), Point::new(2., -1.)).unwrap();
+        a.remove(v).unwrap();
+        assert_eq!(a.point(v), Err(EditError::StaleHandle));
+        a.debug_validate().unwrap();
     }
 
     #[test]

@@ -4,17 +4,20 @@ use super::broad::{BoundingBox, BroadPhase};
 use super::planner::{CostModel, PlannerStats, Strategy};
 use super::route::{QueryWorkspace, Route, array_test, sampled_test};
 use crate::kernel::{Exact, Kernel, Point};
-use crate::polygon::{ConvexPolygon, EditError, LinkedPolygon, PolygonError, VertexId};
+use crate::polygon::{ConvexPolygon, EditError, Identity, LinkedPolygon, PolygonError, VertexId};
 use rand::SeedableRng;
 use rand::rngs::SmallRng;
 use rayon::prelude::*;
 use slab::Slab;
 use std::fmt;
 
-/// A handle to a polygon in a [`Scene`]. Carries a generation: after the polygon is
-/// removed, every use is [`SceneError::StalePolygon`], even if its slot is reused.
+/// A handle to a polygon in one [`Scene`]. Carries a generation: after the polygon is
+/// removed, every use is [`SceneError::StalePolygon`], even if its slot is reused. It also
+/// carries the scene's identity: given to any other scene (a clone included), every use
+/// is [`SceneError::ForeignPolygon`]. Handles of one scene order by slot.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
 pub struct PolygonId {
+    scene: u64,
     key: u32,
     generation: u64,
 }
@@ -24,6 +27,8 @@ pub struct PolygonId {
 pub enum SceneError {
     /// The polygon handle is stale (the polygon was removed).
     StalePolygon,
+    /// The polygon handle belongs to another scene (or to another copy of this one).
+    ForeignPolygon,
     /// A vertex edit was refused.
     Edit(EditError),
     /// A polygon to insert is invalid.
@@ -34,6 +39,7 @@ impl fmt::Display for SceneError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             SceneError::StalePolygon => write!(f, "the polygon handle is stale (the polygon was removed)"),
+            SceneError::ForeignPolygon => write!(f, "the polygon handle belongs to another scene"),
             SceneError::Edit(e) => write!(f, "{e}"),
             SceneError::Polygon(e) => write!(f, "{e}"),
         }
@@ -98,6 +104,14 @@ impl Entry {
 /// A scene of editable convex polygons with planned intersection queries; see the
 /// [module docs](super) for the planner's rule.
 ///
+/// # Handles
+/// Every method taking a [`PolygonId`] refuses a handle of a removed polygon
+/// ([`SceneError::StalePolygon`]) and a handle of another scene
+/// ([`SceneError::ForeignPolygon`]); every method taking a [`VertexId`] refuses a vertex
+/// handle of another polygon (`SceneError::Edit(EditError::ForeignHandle)`), also one of
+/// a polygon of this scene. A refused call changes nothing. A clone of a scene is another
+/// scene: take its handles from [`ids`](Self::ids).
+///
 /// ```
 /// use polysect::store::Scene;
 /// use polysect::Point;
@@ -114,6 +128,8 @@ impl Entry {
 /// ```
 #[derive(Clone, Debug)]
 pub struct Scene<K: Kernel = Exact> {
+    /// Fresh for every scene and every clone: handles name polygons of this scene only.
+    identity: Identity,
     kernel: K,
     entries: Slab<Entry>,
     next_generation: u64,
@@ -142,6 +158,7 @@ impl<K: Kernel> Scene<K> {
     /// An empty scene deciding predicates with `kernel`.
     pub fn with_kernel(kernel: K) -> Self {
         Scene {
+            identity: Identity::fresh(),
             kernel,
             entries: Slab::new(),
             next_generation: 0,
@@ -203,7 +220,9 @@ impl<K: Kernel> Scene<K> {
 
     /// The handles of all polygons, in slot order.
     pub fn ids(&self) -> impl Iterator<Item = PolygonId> + '_ {
-        self.entries.iter().map(|(k, e)| PolygonId {
+        let scene = self.identity.get();
+        self.entries.iter().map(move |(k, e)| PolygonId {
+            scene,
             key: k as u32,
             generation: e.generation,
         })
@@ -233,6 +252,7 @@ impl<K: Kernel> Scene<K> {
         });
         self.broad.mark(key);
         PolygonId {
+            scene: self.identity.get(),
             key: key as u32,
             generation,
         }
@@ -247,14 +267,21 @@ impl<K: Kernel> Scene<K> {
         Ok(self.insert(LinkedPolygon::from_points(points)?))
     }
 
-    /// Removes a polygon, returning it.
+    /// Removes a polygon, returning it (its vertex handles stay valid on it).
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`.
     pub fn remove(&mut self, id: PolygonId) -> Result<LinkedPolygon, SceneError> {
         let key = self.key(id)?;
         self.broad.mark(key);
         Ok(self.entries.remove(key).polygon)
     }
 
+    #[inline]
     fn key(&self, id: PolygonId) -> Result<usize, SceneError> {
+        if id.scene != self.identity.get() {
+            return Err(SceneError::ForeignPolygon);
+        }
         match self.entries.get(id.key as usize) {
             Some(e) if e.generation == id.generation => Ok(id.key as usize),
             _ => Err(SceneError::StalePolygon),
@@ -263,12 +290,16 @@ impl<K: Kernel> Scene<K> {
 
     fn id_of(&self, key: usize) -> PolygonId {
         PolygonId {
+            scene: self.identity.get(),
             key: key as u32,
             generation: self.entries[key].generation,
         }
     }
 
     /// The polygon (read-only; edit through the scene so caches stay correct).
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon` (as every method taking a `PolygonId`).
     pub fn polygon(&self, id: PolygonId) -> Result<&LinkedPolygon, SceneError> {
         self.key(id).map(|k| &self.entries[k].polygon)
     }
@@ -290,6 +321,11 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Inserts a vertex after `after` (see [`LinkedPolygon::insert_after`]). O(1).
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`, or the [`EditError`] of the polygon's own edit
+    /// (`StaleHandle`, `ForeignHandle` when `after` is not a vertex handle of polygon
+    /// `id`, `NonFinite`, `WouldBreakConvexity`).
     pub fn insert_vertex(
         &mut self,
         id: PolygonId,
@@ -305,6 +341,10 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Removes a vertex (see [`LinkedPolygon::remove`]). O(1).
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`, or the polygon's [`EditError`] (`StaleHandle`,
+    /// `ForeignHandle`, `TooFewVertices`).
     pub fn remove_vertex(&mut self, id: PolygonId, v: VertexId) -> Result<Point, SceneError> {
         let key = self.key(id)?;
         let e = &mut self.entries[key];
@@ -317,6 +357,10 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Moves a vertex (see [`LinkedPolygon::move_vertex`]). O(1).
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`, or the polygon's [`EditError`] (`StaleHandle`,
+    /// `ForeignHandle`, `NonFinite`, `WouldBreakConvexity`).
     pub fn move_vertex(&mut self, id: PolygonId, v: VertexId, p: Point) -> Result<Point, SceneError> {
         let key = self.key(id)?;
         let e = &mut self.entries[key];
@@ -337,7 +381,7 @@ impl<K: Kernel> Scene<K> {
     /// Vertex handles stay valid. See docs/store.md for what is exact here.
     ///
     /// # Errors
-    /// `StalePolygon`; [`EditError::NonFinite`] when `dx` or `dy` is not finite or a
+    /// `StalePolygon`, `ForeignPolygon`; [`EditError::NonFinite`] when `dx` or `dy` is not finite or a
     /// coordinate would overflow; [`EditError::RoundingBreaksConvexity`] when rounding
     /// would leave the polygon not strictly convex. Nothing changes on error.
     ///
@@ -495,6 +539,9 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Whether polygons `a` and `b` intersect (closed sets: touching counts).
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon` for either handle.
     pub fn intersects(&mut self, a: PolygonId, b: PolygonId) -> Result<bool, SceneError> {
         let (ka, kb) = (self.key(a)?, self.key(b)?);
         let mut pending = Vec::new();
@@ -511,7 +558,8 @@ impl<K: Kernel> Scene<K> {
 
     /// Answers many queries: planned in order, conversions built in parallel, then the
     /// pairs answered in parallel. Results are in input order and do not depend on the
-    /// number of threads.
+    /// number of threads. A pair with a stale or foreign handle gets that error in its
+    /// place; the other pairs are answered.
     pub fn intersects_batch(&mut self, pairs: &[(PolygonId, PolygonId)]) -> Vec<Result<bool, SceneError>> {
         let mut pending = Vec::new();
         let routes: Vec<Result<Route, SceneError>> = pairs
@@ -553,6 +601,9 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// All polygons other than `a` that intersect it, in slot order.
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`.
     pub fn intersecting(&mut self, a: PolygonId) -> Result<Vec<PolygonId>, SceneError> {
         let ka = self.key(a)?;
         self.flush_broad_phase();
