@@ -56,21 +56,36 @@ type Entry = GeomWithData<Rectangle<[f64; 2]>, usize>;
 
 /// The R-tree over polygon boxes, keyed by the scene's slab key. Updates are deferred:
 /// `mark` records a changed key, `flush` brings the tree up to date.
+///
+/// Memory is O(largest key): a key is listed as dirty at most once between two flushes
+/// (a per-key flag), so a program that edits, inserts and removes forever without ever
+/// asking a broad-phase query holds no more than one entry per slot.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct BroadPhase {
     tree: RTree<Entry>,
-    /// The box each key is indexed under, so it can be removed again.
-    indexed: Vec<Option<BoundingBox>>,
+    /// The box each key is indexed under, so it can be removed again, and whether the
+    /// key is listed in `dirty`.
+    indexed: Vec<(Option<BoundingBox>, bool)>,
     dirty: Vec<usize>,
 }
 
 impl BroadPhase {
-    /// Records that `key`'s box changed (or the key was added or removed).
+    /// Records that `key`'s box changed (or the key was added or removed). O(1).
     pub fn mark(&mut self, key: usize) {
         if self.indexed.len() <= key {
-            self.indexed.resize(key + 1, None);
+            self.indexed.resize(key + 1, (None, false));
         }
-        self.dirty.push(key);
+        if !self.indexed[key].1 {
+            self.indexed[key].1 = true;
+            self.dirty.push(key);
+        }
+    }
+
+    /// Heap bytes held (the tree estimated from its size).
+    pub fn heap_bytes(&self) -> usize {
+        self.tree.size() * std::mem::size_of::<Entry>() * 2
+            + self.indexed.capacity() * std::mem::size_of::<(Option<BoundingBox>, bool)>()
+            + self.dirty.capacity() * std::mem::size_of::<usize>()
     }
 
     /// Brings the tree up to date with `current(key)` for every dirty key.
@@ -78,34 +93,35 @@ impl BroadPhase {
         if self.dirty.is_empty() {
             return;
         }
-        self.dirty.sort_unstable();
-        self.dirty.dedup();
+        for &key in &self.dirty {
+            self.indexed[key].1 = false;
+        }
         if self.dirty.len() * 2 > self.tree.size() {
             // Most of the tree changed: rebuild it in O(N log N) instead.
-            for key in std::mem::take(&mut self.dirty) {
-                self.indexed[key] = current(key);
+            for key in self.dirty.drain(..) {
+                self.indexed[key].0 = current(key);
             }
             let entries: Vec<Entry> = self
                 .indexed
                 .iter()
                 .enumerate()
-                .filter_map(|(k, b)| b.map(|b| GeomWithData::new(b.rectangle(), k)))
+                .filter_map(|(k, (b, _))| b.map(|b| GeomWithData::new(b.rectangle(), k)))
                 .collect();
             self.tree = RTree::bulk_load(entries);
             return;
         }
         for key in std::mem::take(&mut self.dirty) {
             let now = current(key);
-            if now == self.indexed[key] {
+            if now == self.indexed[key].0 {
                 continue;
             }
-            if let Some(old) = self.indexed[key] {
+            if let Some(old) = self.indexed[key].0 {
                 self.tree.remove(&GeomWithData::new(old.rectangle(), key));
             }
             if let Some(b) = now {
                 self.tree.insert(GeomWithData::new(b.rectangle(), key));
             }
-            self.indexed[key] = now;
+            self.indexed[key].0 = now;
         }
     }
 

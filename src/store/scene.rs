@@ -233,6 +233,25 @@ impl<K: Kernel> Scene<K> {
         self.entries.iter().filter(|(_, e)| e.snapshot.is_some()).count()
     }
 
+    /// Heap memory held by the scene's structures, in bytes: the polygons' arenas, the
+    /// snapshots, the slots and the broad phase (per-query scratch memory, bounded by
+    /// the largest polygon queried, is not counted). It is O(slots + vertices) whatever
+    /// the sequence of calls: no structure grows with the number of edits or queries.
+    /// Slots are the largest number of polygons the scene has held at once.
+    pub fn heap_bytes(&self) -> usize {
+        let polygons: usize = self
+            .entries
+            .iter()
+            .map(|(_, e)| {
+                e.polygon.arena_bytes()
+                    + e.snapshot
+                        .as_ref()
+                        .map_or(0, |s| std::mem::size_of_val(s.vertices()))
+            })
+            .sum();
+        polygons + self.entries.capacity() * std::mem::size_of::<Entry>() + self.broad.heap_bytes()
+    }
+
     /// Adds a polygon.
     pub fn insert(&mut self, polygon: LinkedPolygon) -> PolygonId {
         let bbox = BoundingBox::of(polygon.iter().map(|(_, p)| p)).expect("a polygon has vertices");
