@@ -1,14 +1,18 @@
-//! Scene workloads (edit-heavy, balanced, query-heavy) × strategies, all-pairs
-//! queries on a scene of 1,000 polygons, and the O(1) edit paths (insert + remove, move)
-//! on a linked polygon and through a scene. Each workload iteration runs on a fresh
-//! clone of the same scene, so snapshot caching starts from the same state every time.
+//! Scene workloads × strategies: edit-heavy, balanced, query-heavy, and a 2^18-vertex
+//! polygon holding its snapshot against a triangle moved before every query; all-pairs
+//! queries on a scene of 1,000 polygons; `intersecting_pairs` on fresh grids of 10k and
+//! 40k overlapping squares (batch planning must stay near-linear); and the O(1) edit
+//! paths (insert + remove, move) on a linked polygon and through a scene. Each workload
+//! iteration runs on a fresh clone of the same scene, so snapshot caching starts from
+//! the same state every time.
 
 use criterion::{BatchSize, BenchmarkId, Criterion, criterion_group, criterion_main};
 use polysect::generate::regular_polygon;
-use polysect::store::Scene;
-use polysect::store::Strategy;
 use polysect::store::workload::{self, WorkloadSpec};
+use polysect::store::{PolygonId, Scene, Strategy};
 use polysect::{Exact, LinkedPolygon, Point, VertexId};
+use rand::SeedableRng;
+use rand::rngs::SmallRng;
 use std::hint::black_box;
 
 fn workloads(c: &mut Criterion) {
@@ -35,6 +39,89 @@ fn workloads(c: &mut Criterion) {
         }
         group.finish();
     }
+}
+
+/// A shuffled 2^18-vertex circle that already holds its snapshot, and a triangle in the
+/// corner of its bounding box (outside the circle: disjoint, the expensive answer) whose
+/// vertex moves before every query. Converting the triangle and testing the arrays costs
+/// a fraction of one sampled query on the big polygon.
+fn big_snapshot_small_moving(c: &mut Criterion) {
+    const STEPS: usize = 32;
+    let mut rng = SmallRng::seed_from_u64(0xb16);
+    let mut base = Scene::new();
+    let big = base.insert(LinkedPolygon::from_convex_shuffled(
+        &regular_polygon(1 << 18, 1.0),
+        &mut rng,
+    ));
+    let small = base.insert_points([[0.8, 0.8], [0.9, 0.8], [0.8, 0.9]]).unwrap();
+    base.set_strategy(Strategy::Cached);
+    assert!(!base.intersects(big, small).unwrap());
+    assert!(base.has_snapshot(big).unwrap());
+    // Handles belong to one scene: each clone's are found by rank.
+    let rank = |s: &Scene, id: PolygonId| s.ids().position(|x| x == id).unwrap();
+    let (big, small) = (rank(&base, big), rank(&base, small));
+    let mut group = c.benchmark_group("workload/big-snapshot-vs-moving-triangle");
+    group.sample_size(10);
+    for strategy in Strategy::ALL {
+        // One scene per strategy for all iterations: an even number of steps brings the
+        // triangle back, and the big polygon keeps its snapshot under every strategy.
+        let mut scene = base.clone();
+        scene.set_strategy(strategy);
+        let ids: Vec<PolygonId> = scene.ids().collect();
+        let (p, t) = (ids[big], ids[small]);
+        let v = scene
+            .polygon(t)
+            .unwrap()
+            .next(scene.polygon(t).unwrap().first())
+            .unwrap();
+        group.bench_function(BenchmarkId::from_parameter(strategy.name()), |b| {
+            b.iter(|| {
+                for step in 0..STEPS {
+                    let x = if step % 2 == 0 { 0.95 } else { 0.9 };
+                    scene.move_vertex(t, v, Point::new(x, 0.8)).unwrap();
+                    assert!(!scene.intersects(p, t).unwrap());
+                }
+            })
+        });
+        assert!(scene.has_snapshot(p).unwrap());
+    }
+    group.finish();
+}
+
+/// An m × m grid of squares of side 1.5 at unit spacing: each overlaps its eight
+/// neighbours, so the scene has 2m(m − 1) + 2(m − 1)² intersecting pairs.
+fn grid(m: usize) -> (Scene, usize) {
+    let mut scene = Scene::new();
+    for i in 0..m {
+        for j in 0..m {
+            let (x, y) = (i as f64, j as f64);
+            scene
+                .insert_points([[x, y], [x + 1.5, y], [x + 1.5, y + 1.5], [x, y + 1.5]])
+                .unwrap();
+        }
+    }
+    (scene, 2 * m * (m - 1) + 2 * (m - 1) * (m - 1))
+}
+
+/// `intersecting_pairs` on a fresh grid (no snapshots, broad phase not built yet), at
+/// 10k and 40k polygons: planning the batch must not be quadratic.
+fn fresh_grid_pairs(c: &mut Criterion) {
+    let mut group = c.benchmark_group("batch/fresh-grid");
+    group.sample_size(10);
+    for m in [100, 200] {
+        let (base, expected) = grid(m);
+        group.bench_function(BenchmarkId::from_parameter(m * m), |b| {
+            b.iter_batched(
+                || base.clone(),
+                |mut scene| {
+                    assert_eq!(scene.intersecting_pairs().len(), expected);
+                    scene
+                },
+                BatchSize::LargeInput,
+            )
+        });
+    }
+    group.finish();
 }
 
 fn all_pairs(c: &mut Criterion) {
@@ -130,5 +217,12 @@ fn edits(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, workloads, all_pairs, edits);
+criterion_group!(
+    benches,
+    workloads,
+    big_snapshot_small_moving,
+    all_pairs,
+    fresh_grid_pairs,
+    edits
+);
 criterion_main!(benches);

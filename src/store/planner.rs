@@ -79,6 +79,13 @@ impl CostModel {
         self.sampled_ns_per_sqrt_n * (n as f64).sqrt()
     }
 
+    /// Estimated cost of answering a query on polygons of `n` and `m` vertices without
+    /// both snapshots, less the array test that would replace it: what snapshots of both
+    /// save that query.
+    pub fn saving(&self, n: usize, m: usize) -> f64 {
+        self.sampled_cost(n.max(m))
+    }
+
     /// Measures the model on this machine on generated polygons in shuffled arenas:
     /// conversion time per vertex at the largest size (2^18, where the walk misses the
     /// caches, as it does for the large polygons the rule is about), sampled time per √n
@@ -140,6 +147,80 @@ fn time_per(reps: usize, mut f: impl FnMut()) -> f64 {
 fn median(v: &mut [f64]) -> f64 {
     v.sort_by(f64::total_cmp);
     v[v.len() / 2]
+}
+
+/// A polygon's planner account since its last edit: the ski-rental rent and the history
+/// of queries between edits.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Account {
+    /// What the missing snapshot of this polygon has cost the queries since its last
+    /// edit (the saving a snapshot would have brought them), in nanoseconds.
+    rent_ns: f64,
+    /// Queries (past the bounding boxes) since the last edit.
+    queries_since_edit: u32,
+    /// Moving average of the number of queries between two edits (infinite until the
+    /// first edit: no history, plain ski rental).
+    queries_per_edit: f64,
+}
+
+impl Default for Account {
+    fn default() -> Self {
+        Account {
+            rent_ns: 0.0,
+            queries_since_edit: 0,
+            queries_per_edit: f64::INFINITY,
+        }
+    }
+}
+
+impl Account {
+    /// An edit: the snapshot is gone, the rent starts again, the history learns how many
+    /// queries came between the last two edits.
+    pub(crate) fn edited(&mut self) {
+        self.rent_ns = 0.0;
+        let q = self.queries_since_edit as f64;
+        self.queries_per_edit = if self.queries_per_edit.is_finite() {
+            0.5 * self.queries_per_edit + 0.5 * q
+        } else {
+            q
+        };
+        self.queries_since_edit = 0;
+    }
+
+    /// A query past the bounding boxes.
+    pub(crate) fn queried(&mut self) {
+        self.queries_since_edit = self.queries_since_edit.saturating_add(1);
+    }
+
+    /// A query answered without this polygon's snapshot: rent of `saving_ns`.
+    pub(crate) fn pay(&mut self, saving_ns: f64) {
+        self.rent_ns += saving_ns;
+    }
+
+    /// Whether to convert now. `known_ns` is what a snapshot of this polygon saves the
+    /// `known` queries being planned now (one query, or a batch's), `cost_ns` the
+    /// conversion.
+    ///
+    /// Ski rental, with the queries at hand counted: buy at once when they alone pay for
+    /// it; otherwise buy once the rent since the last edit plus their saving reaches the
+    /// price, unless the queries expected before the next edit (the average between
+    /// edits so far, less those already seen; as many again as already seen once past
+    /// the average) would not pay for it.
+    pub(crate) fn should_convert(&self, cost_ns: f64, known_ns: f64, known: u32) -> bool {
+        if known_ns >= cost_ns {
+            return true;
+        }
+        if self.rent_ns + known_ns < cost_ns {
+            return false;
+        }
+        let seen = self.queries_since_edit as f64;
+        let expected_more = if self.queries_per_edit > seen {
+            self.queries_per_edit - seen
+        } else {
+            seen
+        };
+        known_ns + expected_more * (known_ns / known.max(1) as f64) >= cost_ns
+    }
 }
 
 /// What the planner did, for the demo table and the tests.

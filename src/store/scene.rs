@@ -1,7 +1,7 @@
 //! [`Scene`]: the store of editable polygons and its query planner.
 
 use super::broad::{BoundingBox, BroadPhase};
-use super::planner::{CostModel, PlannerStats, Strategy};
+use super::planner::{Account, CostModel, PlannerStats, Strategy};
 use super::route::{QueryWorkspace, Route, array_test, sampled_test};
 use crate::kernel::{Exact, Kernel, Point};
 use crate::polygon::{ConvexPolygon, EditError, Identity, LinkedPolygon, PolygonError, VertexId};
@@ -72,32 +72,35 @@ struct Entry {
     version: u64,
     /// The array form, present only while the polygon is unchanged since it was built.
     snapshot: Option<ConvexPolygon>,
-    /// Estimated cost of the sampled queries this polygon took part in since its last
-    /// edit (the planner's ski-rental account), in nanoseconds.
-    rent_ns: f64,
-    /// The estimated cost of the last sampled query it took part in.
-    last_rent_ns: f64,
-    /// Queries (past the bounding boxes) since the last edit.
-    queries_since_edit: u32,
-    /// Moving average of the number of queries between two edits (infinite until the
-    /// first edit: no history, plain ski rental).
-    queries_per_edit: f64,
+    /// The planner's ski-rental account.
+    account: Account,
+    /// Scratch of the plan being made: chosen for conversion, and what a snapshot would
+    /// save the planned queries (and how many) that involve this polygon.
+    plan: PlanMark,
+}
+
+/// Per-polygon marks of one plan, so that planning a batch is O(1) per pair; every
+/// field is back at its default when a plan ends.
+#[derive(Clone, Copy, Debug, Default)]
+struct PlanMark {
+    convert: bool,
+    touched: bool,
+    known_ns: f64,
+    known: u32,
 }
 
 impl Entry {
     fn edited(&mut self, stats: &mut PlannerStats) {
         self.version += 1;
-        self.rent_ns = 0.0;
-        let q = self.queries_since_edit as f64;
-        self.queries_per_edit = if self.queries_per_edit.is_finite() {
-            0.5 * self.queries_per_edit + 0.5 * q
-        } else {
-            q
-        };
-        self.queries_since_edit = 0;
+        self.account.edited();
         if self.snapshot.take().is_some() {
             stats.invalidations += 1;
         }
+    }
+
+    /// Has a snapshot, or will have one before the plan is answered.
+    fn will_have_snapshot(&self) -> bool {
+        self.snapshot.is_some() || self.plan.convert
     }
 }
 
@@ -264,10 +267,8 @@ impl<K: Kernel> Scene<K> {
             bbox_tight: true,
             version: 0,
             snapshot: None,
-            rent_ns: 0.0,
-            last_rent_ns: 0.0,
-            queries_since_edit: 0,
-            queries_per_edit: f64::INFINITY,
+            account: Account::default(),
+            plan: PlanMark::default(),
         });
         self.broad.mark(key);
         PolygonId {
@@ -465,29 +466,69 @@ impl<K: Kernel> Scene<K> {
         self.stats.conversions += 1;
     }
 
-    /// Ski rental, refined by the polygon's history: convert once the rent paid since the
-    /// last edit covers the conversion, unless the queries expected before the next edit
-    /// (the average between edits so far, less those already seen; at least as many as
-    /// already seen once past the average) would not pay for it.
-    fn should_convert(&self, key: usize) -> bool {
-        let e = &self.entries[key];
-        let cost = self.costs.convert_cost(e.polygon.len());
-        if e.rent_ns < cost {
-            return false;
+    /// Plans queries between live keys (`Err` entries are passed through): bounding
+    /// boxes, then the strategy; returns the routes and the keys to convert before
+    /// answering. O(1) per pair and per polygon involved (per-polygon marks), so a batch
+    /// is planned in linear time.
+    ///
+    /// The planner knows every query of the batch before deciding: a polygon without a
+    /// snapshot is charged, per query, what its conversion would save that query (all of
+    /// it when the other polygon has or will have a snapshot, half when both lack one),
+    /// and is converted when [`Account::should_convert`] says so for the batch's total.
+    /// Polygons whose partners were chosen are then offered the other half once more.
+    fn plan(
+        &mut self,
+        pairs: impl Iterator<Item = Result<(usize, usize), SceneError>>,
+    ) -> (Vec<Result<Route, SceneError>>, Vec<usize>) {
+        let mut routes: Vec<Result<Route, SceneError>> = Vec::with_capacity(pairs.size_hint().0);
+        let mut touched = Vec::new();
+        for pair in pairs {
+            let route = pair.map(|(a, b)| self.plan_boxes(a, b, &mut touched));
+            routes.push(route);
         }
-        let seen = e.queries_since_edit as f64;
-        let expected_more = if e.queries_per_edit > seen {
-            e.queries_per_edit - seen
-        } else {
-            seen
-        };
-        expected_more * e.last_rent_ns >= cost
+        let mut chosen = Vec::new();
+        match self.strategy {
+            Strategy::Sampled | Strategy::Convert => {}
+            Strategy::Cached => chosen.extend(touched.iter().copied()),
+            Strategy::Planner => {
+                self.choose(&touched, &mut chosen);
+                if !chosen.is_empty() {
+                    // A partner chosen now turns the half savings into whole ones.
+                    for k in &chosen {
+                        self.entries[*k].plan.convert = true;
+                    }
+                    for route in routes.iter().flatten() {
+                        if let Route::Sampled(a, b) = *route {
+                            for (k, other) in [(a, b), (b, a)] {
+                                let (ek, eo) = (&self.entries[k], &self.entries[other]);
+                                if !ek.will_have_snapshot() && eo.plan.convert && eo.snapshot.is_none() {
+                                    let half = 0.5 * self.saving(a, b);
+                                    self.entries[k].plan.known_ns += half;
+                                }
+                            }
+                        }
+                    }
+                    self.choose(&touched, &mut chosen);
+                }
+            }
+        }
+        for k in &chosen {
+            self.entries[*k].plan.convert = true;
+        }
+        for route in routes.iter_mut().flatten() {
+            if let Route::Sampled(a, b) = *route {
+                *route = self.finish_route(a, b);
+            }
+        }
+        for k in touched {
+            self.entries[k].plan = PlanMark::default();
+        }
+        (routes, chosen)
     }
 
-    /// Plans one query between live keys: bounding boxes, then the strategy. Keys chosen
-    /// for conversion are appended to `pending` (the caller converts them before
-    /// answering); later plans treat them as converted.
-    fn plan(&mut self, a: usize, b: usize, pending: &mut Vec<usize>) -> Route {
+    /// The box test; a live pair is left as `Sampled` for now, its polygons marked and
+    /// credited with the saving a snapshot would bring.
+    fn plan_boxes(&mut self, a: usize, b: usize, touched: &mut Vec<usize>) -> Route {
         if a == b {
             return Route::Known(true);
         }
@@ -495,46 +536,62 @@ impl<K: Kernel> Scene<K> {
             self.stats.box_rejects += 1;
             return Route::Known(false);
         }
-        for k in [a, b] {
-            self.entries[k].queries_since_edit = self.entries[k].queries_since_edit.saturating_add(1);
-        }
-        let has = |s: &Self, k: usize, pending: &Vec<usize>| {
-            s.entries[k].snapshot.is_some() || pending.contains(&k)
-        };
-        match self.strategy {
-            Strategy::Sampled => {}
-            Strategy::Convert => {
-                if !(has(self, a, pending) && has(self, b, pending)) {
-                    self.stats.throwaway_conversions += 2;
-                    return Route::Throwaway(a, b);
+        let saving = self.saving(a, b);
+        for (k, other) in [(a, b), (b, a)] {
+            let has_other = self.entries[other].snapshot.is_some();
+            let e = &mut self.entries[k];
+            e.account.queried();
+            if e.snapshot.is_none() {
+                if !e.plan.touched {
+                    e.plan.touched = true;
+                    touched.push(k);
                 }
-            }
-            Strategy::Cached => {
-                for k in [a, b] {
-                    if !has(self, k, pending) {
-                        pending.push(k);
-                    }
-                }
-            }
-            Strategy::Planner => {
-                for k in [a, b] {
-                    if !has(self, k, pending) && self.should_convert(k) {
-                        pending.push(k);
-                    }
-                }
+                e.plan.known_ns += if has_other { saving } else { 0.5 * saving };
+                e.plan.known += 1;
             }
         }
-        if has(self, a, pending) && has(self, b, pending) {
+        Route::Sampled(a, b)
+    }
+
+    /// Appends to `chosen` the touched polygons, not yet chosen, that the planner
+    /// converts.
+    fn choose(&self, touched: &[usize], chosen: &mut Vec<usize>) {
+        for &k in touched {
+            let e = &self.entries[k];
+            let cost = self.costs.convert_cost(e.polygon.len());
+            if !e.plan.convert && e.account.should_convert(cost, e.plan.known_ns, e.plan.known) {
+                chosen.push(k);
+            }
+        }
+    }
+
+    /// What snapshots of both polygons would save one query between them.
+    fn saving(&self, a: usize, b: usize) -> f64 {
+        self.costs
+            .saving(self.entries[a].polygon.len(), self.entries[b].polygon.len())
+    }
+
+    /// The route of a live pair once conversions are chosen; unconverted polygons pay
+    /// their rent.
+    fn finish_route(&mut self, a: usize, b: usize) -> Route {
+        let (ha, hb) = (
+            self.entries[a].will_have_snapshot(),
+            self.entries[b].will_have_snapshot(),
+        );
+        if ha && hb {
             self.stats.array_tests += 1;
             return Route::Arrays(a, b);
         }
-        let rent = self
-            .costs
-            .sampled_cost(self.entries[a].polygon.len().max(self.entries[b].polygon.len()));
-        for k in [a, b] {
-            if !has(self, k, pending) {
-                self.entries[k].rent_ns += rent;
-                self.entries[k].last_rent_ns = rent;
+        if self.strategy == Strategy::Convert {
+            self.stats.throwaway_conversions += 2;
+            return Route::Throwaway(a, b);
+        }
+        let saving = self.saving(a, b);
+        for (k, has_other) in [(a, hb), (b, ha)] {
+            if !self.entries[k].will_have_snapshot() {
+                self.entries[k]
+                    .account
+                    .pay(if has_other { saving } else { 0.5 * saving });
             }
         }
         self.stats.sampled_tests += 1;
@@ -563,11 +620,11 @@ impl<K: Kernel> Scene<K> {
     /// `StalePolygon`, `ForeignPolygon` for either handle.
     pub fn intersects(&mut self, a: PolygonId, b: PolygonId) -> Result<bool, SceneError> {
         let (ka, kb) = (self.key(a)?, self.key(b)?);
-        let mut pending = Vec::new();
-        let route = self.plan(ka, kb, &mut pending);
-        for k in pending {
+        let (mut routes, chosen) = self.plan(std::iter::once(Ok((ka, kb))));
+        for k in chosen {
             self.convert(k);
         }
+        let route = routes.pop().expect("one route")?;
         let mut ws = std::mem::take(&mut self.workspace);
         let mut rng = std::mem::replace(&mut self.rng, SmallRng::seed_from_u64(0));
         let answer = self.answer(route, &mut ws, &mut rng);
@@ -575,20 +632,18 @@ impl<K: Kernel> Scene<K> {
         Ok(answer)
     }
 
-    /// Answers many queries: planned in order, conversions built in parallel, then the
-    /// pairs answered in parallel. Results are in input order and do not depend on the
-    /// number of threads. A pair with a stale or foreign handle gets that error in its
-    /// place; the other pairs are answered.
+    /// Answers many queries: planned together (the planner sees the whole batch before
+    /// choosing conversions), conversions built in parallel, then the pairs answered in
+    /// parallel. Results are in input order and do not depend on the number of threads.
+    /// A pair with a stale or foreign handle gets that error in its place; the other
+    /// pairs are answered.
     pub fn intersects_batch(&mut self, pairs: &[(PolygonId, PolygonId)]) -> Vec<Result<bool, SceneError>> {
-        let mut pending = Vec::new();
-        let routes: Vec<Result<Route, SceneError>> = pairs
+        let keys: Vec<Result<(usize, usize), SceneError>> = pairs
             .iter()
-            .map(|&(a, b)| {
-                let (ka, kb) = (self.key(a)?, self.key(b)?);
-                Ok(self.plan(ka, kb, &mut pending))
-            })
+            .map(|&(a, b)| Ok((self.key(a)?, self.key(b)?)))
             .collect();
-        self.convert_all(pending);
+        let (routes, chosen) = self.plan(keys.into_iter());
+        self.convert_all(chosen);
         let this = &*self;
         routes
             .par_iter()
