@@ -44,9 +44,10 @@
 //! tight again whenever the polygon is walked anyway (at conversion).
 //!
 //! # Broad phase
-//! An R-tree (`rstar`) over the bounding boxes, updated lazily: edits mark polygons
-//! dirty, and the next scene query re-inserts the dirty boxes (or bulk-loads the tree
-//! when most of them are dirty).
+//! Sort and sweep over the bounding boxes (`broad.rs`), updated lazily: edits mark
+//! polygons dirty, and the next scene query re-reads the dirty boxes and repairs the
+//! order by insertion sort (or sorts again when most moved far); the last sweep's pairs
+//! are reused while nothing changes.
 //!
 //! # Parallel batches
 //! [`Scene::intersects_batch`] and [`Scene::intersecting_pairs`] plan sequentially,
