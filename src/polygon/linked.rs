@@ -419,38 +419,51 @@ impl LinkedPolygon {
                 point: moved(node.point),
             });
         }
-        self.check_translated(moved)?;
-        for node in &mut self.nodes {
-            node.point = moved(node.point);
-        }
-        Ok(())
+        self.translate_finite(dx, dy, None).map(|_| ())
     }
 
-    /// Checks exactly that the polygon with every vertex mapped by `f` is strictly convex,
-    /// counter-clockwise and winds once, walking the boundary from position 0.
-    fn check_translated(&self, f: impl Fn(Point) -> Point) -> Result<(), EditError> {
-        use super::convex::upper;
-        let start = 0;
-        let (mut a, mut b) = (f(self.point_at(self.prev_at(start))), f(self.point_at(start)));
-        let mut pos = start;
-        let mut windings = 0;
-        for _ in 0..self.len() {
-            let next = self.next_at(pos);
-            let c = f(self.point_at(next));
-            if Exact.orient(a, b, c) != Orientation::Ccw {
-                return Err(EditError::RoundingBreaksConvexity { point: b });
+    /// [`translate`](Self::translate) when the caller knows that no translated coordinate
+    /// overflows (`dx`, `dy` finite, and, say, the translated bounding box finite).
+    /// With `boundary`, the polygon's vertices counter-clockwise from position 0 (its
+    /// array snapshot), the rounded boundary is checked on that contiguous array instead
+    /// of along the links: one sequential read instead of a walk. O(n).
+    ///
+    /// Returns the translated polygon's rounding margin ([`turn_margin`], the least over its
+    /// turns): any later translation whose
+    /// rounding moves no coordinate by `margin` or more keeps it strictly convex.
+    pub(crate) fn translate_finite(
+        &mut self,
+        dx: f64,
+        dy: f64,
+        boundary: Option<&[Point]>,
+    ) -> Result<f64, EditError> {
+        let moved = |p: Point| Point::new(p.x + dx, p.y + dy);
+        let margin = match boundary {
+            Some(ring) => {
+                debug_assert!(ring.len() == self.len() && ring[0] == self.point_at(0));
+                check_rounded_ring(ring[ring.len() - 1], ring.iter().copied(), moved)?
             }
-            if !upper(a, b) && upper(b, c) {
-                windings += 1;
+            None => {
+                let mut pos = 0;
+                let walk = (0..self.len()).map(|_| {
+                    let here = self.point_at(pos);
+                    pos = self.next_at(pos);
+                    here
+                });
+                check_rounded_ring(self.point_at(self.prev_at(0)), walk, moved)?
             }
-            (a, b, pos) = (b, c, next);
+        };
+        self.translate_unchecked(dx, dy);
+        Ok(margin)
+    }
+
+    /// Translates every vertex without checking anything: for callers that have proved
+    /// the rounded polygon strictly convex (a margin from [`translate_finite`]) and no
+    /// coordinate overflowing. O(n), one sequential pass.
+    pub(crate) fn translate_unchecked(&mut self, dx: f64, dy: f64) {
+        for node in &mut self.nodes {
+            node.point = Point::new(node.point.x + dx, node.point.y + dy);
         }
-        if windings != 1 {
-            return Err(EditError::RoundingBreaksConvexity {
-                point: f(self.point_at(start)),
-            });
-        }
-        Ok(())
     }
 
     /// Whether `v` may sit between the vertices at positions a and b = next(a) (or
@@ -610,6 +623,76 @@ impl LinkedPolygon {
         }
         self.to_convex().debug_validate()
     }
+}
+
+/// Checks exactly that the boundary `ring` (counter-clockwise, the vertex before its
+/// first is `last`) with every vertex mapped by `f` is strictly convex,
+/// counter-clockwise and winds once; the error names the first failing mapped vertex
+/// from the ring's start, or its first vertex when the boundary would wind more than
+/// once. On success returns the mapped boundary's rounding margin: the least
+/// [`turn_margin`] of its turns.
+fn check_rounded_ring(
+    last: Point,
+    mut ring: impl Iterator<Item = Point>,
+    f: impl Fn(Point) -> Point,
+) -> Result<f64, EditError> {
+    use super::convex::upper;
+    let Some(first) = ring.next() else {
+        return Ok(0.0);
+    };
+    let (mut a, mut b) = (f(last), f(first));
+    let mut windings = 0;
+    let mut margin = f64::INFINITY;
+    for c in ring.map(&f).chain(std::iter::once(f(first))) {
+        if Exact.orient(a, b, c) != Orientation::Ccw {
+            return Err(EditError::RoundingBreaksConvexity { point: b });
+        }
+        if !upper(a, b) && upper(b, c) {
+            windings += 1;
+        }
+        margin = margin.min(turn_margin(a, b, c));
+        (a, b) = (b, c);
+    }
+    if windings != 1 {
+        return Err(EditError::RoundingBreaksConvexity { point: f(first) });
+    }
+    Ok(margin)
+}
+
+/// A lower bound on `L / (2·S + 8)` for the turn a → b → c: L a lower bound on the exact
+/// determinant D = (b − a) × (c − b), S an upper bound on ‖b − a‖₁ + ‖c − b‖₁; zero when
+/// the floating-point evaluation cannot certify D > 0.
+///
+/// # Why it is a rounding margin
+/// Move every vertex by at most δ ≤ 1 in each coordinate: each edge vector moves by at
+/// most 2δ per coordinate, so D changes by at most 2δ·(‖u‖₁ + ‖v‖₁) + 8δ² ≤ δ·(2S + 8).
+/// If δ is below this bound for every turn, every turn stays strictly left all along the
+/// straight-line motion, so the total turning, a multiple of 2π that varies
+/// continuously, stays 2π: the moved polygon is strictly convex and winds once. A
+/// rounded translation moves every vertex by at most half an ulp of its new coordinates
+/// from the exact translate, which preserves D. After such a move the bound for the
+/// moved polygon is at least (m − δ) / (1 + 2δ) for the old bound m, which the caller
+/// uses to skip checks of the next translations.
+///
+/// # Precision
+/// D is evaluated in floating point as u_x·v_y − u_y·v_x on rounded differences; its
+/// error is below 3.01ε·(|u_x·v_y| + |u_y·v_x|) (Shewchuk's bound for orient2d); we
+/// subtract 8ε times that sum, and widen S by a factor 1 + 8ε, then shrink the ratio by
+/// 1 − 8ε, so every rounding is covered with room to spare. Where the products could
+/// leave the normal range (overflow, or underflow that voids relative bounds) the margin
+/// is zero: no check is ever skipped on its strength.
+pub(crate) fn turn_margin(a: Point, b: Point, c: Point) -> f64 {
+    const EPS: f64 = f64::EPSILON / 2.0;
+    let (ux, uy, vx, vy) = (b.x - a.x, b.y - a.y, c.x - b.x, c.y - b.y);
+    let (l, r) = (ux * vy, uy * vx);
+    let size = l.abs() + r.abs();
+    if size.is_nan() || size < 1e-270 {
+        return 0.0;
+    }
+    let lower = (l - r) - 8.0 * EPS * (l.abs() + r.abs());
+    let s = (ux.abs() + uy.abs() + vx.abs() + vy.abs()) * (1.0 + 8.0 * EPS);
+    let m = lower / (2.0 * s + 8.0) * (1.0 - 8.0 * EPS);
+    if m.is_finite() && m > 0.0 { m } else { 0.0 }
 }
 
 /// Serialised as its vertex list, counter-clockwise from [`LinkedPolygon::first`];

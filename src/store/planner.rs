@@ -2,10 +2,10 @@
 //! module docs of [`store`](super); `Scene` applies it. This file knows the routes
 //! (`route.rs`, which it times) and nothing of the scene.
 
-use super::route::{QueryWorkspace, array_test, sampled_test};
+use super::route::{QueryWorkspace, barba_test, linear_array_test, linear_test, sampled_test};
 use crate::generate::{self, Family, Relation};
 use crate::kernel::Kernel;
-use crate::polygon::LinkedPolygon;
+use crate::polygon::{ConvexPolygon, LinkedPolygon};
 use rand::SeedableRng;
 use rand::rngs::SmallRng;
 use std::time::Instant;
@@ -20,7 +20,8 @@ pub enum Strategy {
     Convert,
     /// Convert on first use and keep the snapshot until the next edit.
     Cached,
-    /// Decide per query from sizes, the crossover and the queries since the last edit.
+    /// Decide per query from sizes, the measured costs of each route and the queries
+    /// since the last edit (the rule in the [module docs](super)).
     #[default]
     Planner,
 }
@@ -43,105 +44,304 @@ impl Strategy {
     }
 }
 
-/// Estimated costs, in nanoseconds, that drive the planner.
+/// The smallest size in the cost tables is 2^`MIN_LOG2` vertices.
+const MIN_LOG2: u32 = 2;
+/// The tables hold sizes 2^2 ..= 2^18; larger sizes are extrapolated.
+pub const COST_SIZES: usize = 17;
+
+/// Estimated costs, in nanoseconds, that drive the planner: one table per route,
+/// entry i for polygons of 2^(i + 2) vertices (2^2 ..= 2^18), measured by
+/// [`CostModel::calibrate`]. Between entries costs are interpolated linearly in the
+/// size; beyond the largest, extrapolated along the last segment's power law.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct CostModel {
-    /// Walking a linked polygon into an array, per vertex.
+    /// Converting one linked polygon of that size (shuffled arena) to an array.
+    pub convert_ns: [f64; COST_SIZES],
+    /// The sampled test (Chazelle–Liu–Magen) on two linked polygons of that size.
+    pub sampled_ns: [f64; COST_SIZES],
+    /// The linear test walking two linked polygons of that size
+    /// ([`LinearLinked`](crate::intersect::LinearLinked)).
+    pub linear_ns: [f64; COST_SIZES],
+    /// The array test on two snapshots of that size: [`Linear`](crate::intersect::Linear)
+    /// up to `array_linear_max` vertices, Barba–Langerman above.
+    pub array_ns: [f64; COST_SIZES],
+    /// The largest size at which the linear array test beats Barba–Langerman; a pair
+    /// of snapshots with at most twice this many vertices in all is tested linearly.
+    pub array_linear_max: usize,
+    /// Summary, at 2^18 vertices: conversion per vertex.
     pub convert_ns_per_vertex: f64,
-    /// One sampled query, per √n of the larger polygon.
+    /// Summary: the median over the sizes of the sampled test's time per √n.
     pub sampled_ns_per_sqrt_n: f64,
-    /// The size below which converting both polygons plus an array test beats one
-    /// sampled query (measured on disjoint pairs). Reported for users choosing a fixed
-    /// strategy; the planner's rule needs only the two cost constants, which imply it.
+    /// The largest size at which two fresh polygons are converted on their first query
+    /// (converting both costs less than what snapshots save that query); 0 if none.
     pub crossover: usize,
 }
 
 impl Default for CostModel {
-    /// Measured with `polysect calibrate` on the project's 2-core reference machine
-    /// (two runs: 126–137 ns per vertex, 694–702 ns·√n, crossover 4096; docs/store.md).
+    /// `polysect calibrate` on the project's 2-core reference machine, the median of
+    /// five runs entry by entry (docs/store.md).
     fn default() -> Self {
-        CostModel {
-            convert_ns_per_vertex: 130.0,
-            sampled_ns_per_sqrt_n: 700.0,
-            crossover: 4096,
-        }
+        CostModel::from_tables(
+            DEFAULT_TABLES.0,
+            DEFAULT_TABLES.1,
+            DEFAULT_TABLES.2,
+            DEFAULT_TABLES.3,
+        )
     }
+}
+
+type Table = [f64; COST_SIZES];
+
+/// convert, sampled, linear, array tables of the default model.
+const DEFAULT_TABLES: (Table, Table, Table, Table) = (
+    [
+        26.0, 37.0, 59.0, 105.0, 206.0, 693.0, 1794.0, 44189.0, 73574.0, 1.521e+05, 3.170e+05, 9.024e+05,
+        2.060e+06, 4.317e+06, 9.280e+06, 1.643e+07, 7.446e+07,
+    ],
+    [
+        656.0, 921.0, 1318.0, 1641.0, 2406.0, 2979.0, 4273.0, 6753.0, 9647.0, 13339.0, 19122.0, 21754.0,
+        28164.0, 28586.0, 47904.0, 1.005e+05, 1.706e+05,
+    ],
+    [
+        33.0, 79.0, 182.0, 564.0, 1294.0, 2389.0, 4920.0, 13093.0, 1.034e+05, 1.497e+05, 3.122e+05,
+        8.211e+05, 2.393e+06, 4.976e+06, 7.747e+06, 8.220e+06, 7.360e+07,
+    ],
+    [
+        25.0, 52.0, 94.0, 125.0, 165.0, 206.0, 218.0, 231.0, 258.0, 244.0, 229.0, 252.0, 225.0, 188.0, 197.0,
+        403.0, 361.0,
+    ],
+);
+
+/// The size of table entry `i`.
+fn size_of(i: usize) -> usize {
+    1 << (i as u32 + MIN_LOG2)
+}
+
+/// Looks `n` up in `table`: linear interpolation in n between the entries of the
+/// neighbouring powers of two (no logarithm on the planner's path), the first entry
+/// below the smallest size, and beyond the largest the last segment's power law.
+fn lookup(table: &Table, n: usize) -> f64 {
+    let n = n.max(1);
+    let k = n.ilog2();
+    if k < MIN_LOG2 {
+        return table[0];
+    }
+    let i = (k - MIN_LOG2) as usize;
+    if i + 1 < COST_SIZES {
+        let f = (n - (1 << k)) as f64 / (1u64 << k) as f64;
+        return table[i] + f * (table[i + 1] - table[i]);
+    }
+    let (a, b) = (table[COST_SIZES - 2].max(1e-3), table[COST_SIZES - 1].max(1e-3));
+    let top = size_of(COST_SIZES - 1) as f64;
+    b * (n as f64 / top).powf((b / a).log2())
 }
 
 impl CostModel {
+    /// A model from its four tables (convert, sampled, linear, array; see the fields);
+    /// the summaries and the crossover are derived.
+    pub fn from_tables(convert_ns: Table, sampled_ns: Table, linear_ns: Table, array_ns: Table) -> CostModel {
+        let mut model = CostModel {
+            convert_ns,
+            sampled_ns,
+            linear_ns,
+            array_ns,
+            array_linear_max: 0,
+            convert_ns_per_vertex: 0.0,
+            sampled_ns_per_sqrt_n: 0.0,
+            crossover: 0,
+        };
+        model.derive_summaries();
+        model
+    }
+
+    fn derive_summaries(&mut self) {
+        let last = COST_SIZES - 1;
+        self.convert_ns_per_vertex = self.convert_ns[last] / size_of(last) as f64;
+        let mut per_sqrt: Vec<f64> = (0..COST_SIZES)
+            .map(|i| self.sampled_ns[i] / (size_of(i) as f64).sqrt())
+            .collect();
+        self.sampled_ns_per_sqrt_n = median(&mut per_sqrt);
+        self.crossover = (0..COST_SIZES)
+            .map(size_of)
+            .take_while(|&n| 2.0 * self.convert_cost(n) <= self.saving(n, n))
+            .last()
+            .unwrap_or(0);
+    }
+
     /// Estimated cost of converting an n-vertex polygon.
     pub fn convert_cost(&self, n: usize) -> f64 {
-        self.convert_ns_per_vertex * n as f64
+        lookup(&self.convert_ns, n)
     }
 
-    /// Estimated cost of one sampled query involving an n-vertex polygon.
-    pub fn sampled_cost(&self, n: usize) -> f64 {
-        self.sampled_ns_per_sqrt_n * (n as f64).sqrt()
+    /// Estimated cost of the sampled test on polygons of `n` and `m` vertices (it is
+    /// governed by the larger).
+    pub fn sampled_cost(&self, n: usize, m: usize) -> f64 {
+        lookup(&self.sampled_ns, n.max(m))
     }
 
-    /// Estimated cost of answering a query on polygons of `n` and `m` vertices without
-    /// both snapshots, less the array test that would replace it: what snapshots of both
-    /// save that query.
+    /// Estimated cost of the linear test walking linked polygons of `n` and `m` vertices.
+    pub fn linear_cost(&self, n: usize, m: usize) -> f64 {
+        0.5 * (lookup(&self.linear_ns, n) + lookup(&self.linear_ns, m))
+    }
+
+    /// Whether a pair of snapshots of `n` and `m` vertices is tested linearly rather
+    /// than by Barba–Langerman.
+    pub fn array_is_linear(&self, n: usize, m: usize) -> bool {
+        n + m <= 2 * self.array_linear_max
+    }
+
+    /// Estimated cost of the array test on snapshots of `n` and `m` vertices.
+    pub fn array_cost(&self, n: usize, m: usize) -> f64 {
+        if self.array_is_linear(n, m) {
+            lookup(&self.array_ns, (n + m) / 2)
+        } else {
+            lookup(&self.array_ns, n.max(m))
+        }
+    }
+
+    /// Whether the linear walk is the cheaper test on linked polygons of `n` and `m`
+    /// vertices (otherwise the sampled test).
+    pub fn prefers_linear(&self, n: usize, m: usize) -> bool {
+        self.linear_cost(n, m) <= self.sampled_cost(n, m)
+    }
+
+    /// Estimated cost of the cheaper test on linked polygons of `n` and `m` vertices.
+    pub fn linked_cost(&self, n: usize, m: usize) -> f64 {
+        self.linear_cost(n, m).min(self.sampled_cost(n, m))
+    }
+
+    /// What snapshots of both polygons save one query between them: the cheaper linked
+    /// test less the array test (never negative).
     pub fn saving(&self, n: usize, m: usize) -> f64 {
-        self.sampled_cost(n.max(m))
+        (self.linked_cost(n, m) - self.array_cost(n, m)).max(0.0)
     }
 
-    /// Measures the model on this machine on generated polygons in shuffled arenas:
-    /// conversion time per vertex at the largest size (2^18, where the walk misses the
-    /// caches, as it does for the large polygons the rule is about), sampled time per √n
-    /// (median over 2^4..2^18), and the crossover as the smallest size at which one sampled
-    /// query is cheaper than converting both polygons plus an array test. Takes a few
-    /// seconds.
+    /// Measures the model on this machine, for sizes 2^2 ..= 2^18, on generated polygons
+    /// in shuffled arenas (as after a long edit history), half of the pairs intersecting
+    /// and half disjoint. At each size the polygons are drawn from a pool of about 2^18
+    /// vertices in all, so that large sizes are measured out of cache, as in a scene.
+    /// Each figure is the best of five short rounds (large sizes: one cold run), and each
+    /// table is made non-decreasing in the size. Takes two to three seconds.
     pub fn calibrate<K: Kernel>(kernel: K) -> CostModel {
         let mut rng = SmallRng::seed_from_u64(0xca1b);
-        let sizes: Vec<usize> = (4..=18).step_by(2).map(|e| 1usize << e).collect();
-        let mut convert_per_vertex = Vec::new();
-        let mut sampled_per_sqrt = Vec::new();
-        let mut crossover = None;
+        let mut tables = [[0.0; COST_SIZES]; 5];
         let mut ws = QueryWorkspace::default();
-        for &n in &sizes {
-            let pairs: Vec<(LinkedPolygon, LinkedPolygon)> = (0..8)
-                .map(|_| {
-                    let (p, q) = generate::pair(Family::NonUniform, n, Relation::Disjoint, &mut rng);
-                    (
-                        LinkedPolygon::from_convex_shuffled(&p, &mut rng),
-                        LinkedPolygon::from_convex_shuffled(&q, &mut rng),
-                    )
-                })
-                .collect();
-            let reps = ((1 << 18) / n.max(64)).max(2);
-            let t_convert = time_per(reps, || {
-                for (p, q) in &pairs {
-                    let (a, b) = (p.to_convex(), q.to_convex());
-                    std::hint::black_box(array_test(kernel, &a, &b));
-                }
-            }) / pairs.len() as f64;
-            let t_sampled = time_per(reps, || {
-                for (p, q) in &pairs {
-                    std::hint::black_box(sampled_test(kernel, p, q, &mut ws, &mut rng));
-                }
-            }) / pairs.len() as f64;
-            convert_per_vertex.push(t_convert / (2 * n) as f64);
-            sampled_per_sqrt.push(t_sampled / (n as f64).sqrt());
-            if crossover.is_none() && t_sampled < t_convert {
-                crossover = Some(n);
+        for i in 0..COST_SIZES {
+            let row = measure_size(kernel, size_of(i), &mut rng, &mut ws);
+            for (table, value) in tables.iter_mut().zip(row) {
+                table[i] = value;
             }
         }
-        CostModel {
-            convert_ns_per_vertex: *convert_per_vertex.last().expect("sizes are measured"),
-            sampled_ns_per_sqrt_n: median(&mut sampled_per_sqrt),
-            crossover: crossover.unwrap_or(usize::MAX),
+        for table in &mut tables {
+            monotone(table);
         }
+        let [convert, sampled, linear, barba, linear_array] = tables;
+        let mut model = CostModel::from_tables(convert, sampled, linear, barba);
+        model.set_array_tables(&barba, &linear_array);
+        model
+    }
+
+    /// The array table is the cheaper of the two array tests at each size, and
+    /// `array_linear_max` the last size of the initial run where the linear one wins.
+    fn set_array_tables(&mut self, barba: &Table, linear: &Table) {
+        self.array_linear_max = (0..COST_SIZES)
+            .take_while(|&i| linear[i] < barba[i])
+            .last()
+            .map_or(0, size_of);
+        for i in 0..COST_SIZES {
+            self.array_ns[i] = if size_of(i) <= self.array_linear_max {
+                linear[i]
+            } else {
+                barba[i]
+            };
+        }
+        self.derive_summaries();
     }
 }
 
-fn time_per(reps: usize, mut f: impl FnMut()) -> f64 {
-    f(); // warm the caches
-    let start = Instant::now();
-    for _ in 0..reps {
-        f();
+/// Times the five routes at size n: conversion (per polygon), sampled, linear on
+/// linked polygons, Barba–Langerman and linear on arrays (per pair).
+fn measure_size<K: Kernel>(kernel: K, n: usize, rng: &mut SmallRng, ws: &mut QueryWorkspace) -> [f64; 5] {
+    let count = ((1usize << 17) / n).clamp(1, 128);
+    let pairs: Vec<(LinkedPolygon, LinkedPolygon, ConvexPolygon, ConvexPolygon)> = (0..count)
+        .map(|j| {
+            let relation = if j % 2 == 0 {
+                Relation::Disjoint
+            } else {
+                Relation::Intersecting
+            };
+            let (p, q) = generate::pair(Family::NonUniform, n, relation, rng);
+            (
+                LinkedPolygon::from_convex_shuffled(&p, rng),
+                LinkedPolygon::from_convex_shuffled(&q, rng),
+                p,
+                q,
+            )
+        })
+        .collect();
+    let per_pair = |t: f64| t / pairs.len() as f64;
+    let t0 = per_pair(best_time(|| {
+        for (p, q, _, _) in &pairs {
+            std::hint::black_box(p.to_convex());
+            std::hint::black_box(q.to_convex());
+        }
+    })) / 2.0;
+    let t1 = per_pair(best_time(|| {
+        for (p, q, _, _) in &pairs {
+            std::hint::black_box(sampled_test(kernel, p, q, ws, rng));
+        }
+    }));
+    let t2 = per_pair(best_time(|| {
+        for (p, q, _, _) in &pairs {
+            std::hint::black_box(linear_test(kernel, p, q));
+        }
+    }));
+    let t3 = per_pair(best_time(|| {
+        for (_, _, p, q) in &pairs {
+            std::hint::black_box(barba_test(kernel, p, q));
+        }
+    }));
+    let t4 = per_pair(best_time(|| {
+        for (_, _, p, q) in &pairs {
+            std::hint::black_box(linear_array_test(kernel, p, q));
+        }
+    }));
+    [t0, t1, t2, t3, t4]
+}
+
+/// Makes a measured table non-decreasing in the size, as every route's cost is: first
+/// each entry is capped by every later one (a round slowed by another process cannot
+/// leave a spike), then raised to every earlier one.
+fn monotone(table: &mut Table) {
+    for i in (0..COST_SIZES - 1).rev() {
+        table[i] = table[i].min(table[i + 1]);
     }
-    start.elapsed().as_nanos() as f64 / reps as f64
+    for i in 1..COST_SIZES {
+        table[i] = table[i].max(table[i - 1]);
+    }
+}
+
+/// Times `f` in nanoseconds: once (which also warms the caches); if that took under
+/// 5 ms, five more rounds of repetitions filling about 0.3 ms each, and the
+/// best per-repetition time. Large sizes are thus measured once, cold, as a scene meets
+/// them, and calibration stays within a few seconds.
+fn best_time(mut f: impl FnMut()) -> f64 {
+    let start = Instant::now();
+    f();
+    let once = start.elapsed().as_nanos().max(1) as f64;
+    if once >= 5e6 {
+        return once;
+    }
+    let reps = ((3e5 / once) as usize).clamp(1, 1000);
+    (0..5)
+        .map(|_| {
+            let start = Instant::now();
+            for _ in 0..reps {
+                f();
+            }
+            start.elapsed().as_nanos() as f64 / reps as f64
+        })
+        .fold(f64::INFINITY, f64::min)
 }
 
 fn median(v: &mut [f64]) -> f64 {
@@ -232,6 +432,8 @@ pub struct PlannerStats {
     pub array_tests: u64,
     /// Queries answered by the sampled test on linked polygons.
     pub sampled_tests: u64,
+    /// Queries answered by the linear test walking both linked polygons.
+    pub linear_tests: u64,
     /// Snapshots built (and kept).
     pub conversions: u64,
     /// Arrays built for one query and dropped (strategy `Convert`).
