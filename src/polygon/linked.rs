@@ -549,9 +549,17 @@ impl LinkedPolygon {
         }
     }
 
-    /// The polygon as a sorted array, starting at [`first`](Self::first). O(n).
+    /// The polygon as a sorted array, starting at [`first`](Self::first). O(n): one walk
+    /// along the links (no handle lookups).
     pub fn to_convex(&self) -> ConvexPolygon {
-        ConvexPolygon::from_ccw_unchecked(self.iter().map(|(_, p)| p).collect())
+        let mut out = Vec::with_capacity(self.len());
+        let mut pos = 0;
+        for _ in 0..self.len() {
+            let node = &self.nodes[pos];
+            out.push(node.point);
+            pos = node.next as usize;
+        }
+        ConvexPolygon::from_ccw_unchecked(out)
     }
 
     /// The point stored at position `pos` (positions are `0..len`, valid until the next edit).

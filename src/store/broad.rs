@@ -1,11 +1,12 @@
 //! Bounding boxes and the sort-and-sweep broad phase.
 //!
 //! # Sort and sweep
-//! The boxes are kept sorted by their left side. All overlapping pairs: one sweep, each
-//! box against the following boxes that start before it ends, their vertical extents
-//! compared; O(N + X) for N boxes and X pairs overlapping along x (X ≥ the pairs
-//! reported; in a scene whose boxes are small against the world, X is a small multiple
-//! of N). The boxes overlapping one box: a binary search on the running maximum of
+//! The boxes are kept sorted by their left side. All overlapping pairs: a sweep in
+//! about √N/2 horizontal bands, each box against the following boxes of its bands that
+//! start before it ends, their vertical extents compared; O(N + B + X) for N boxes
+//! listed B times in all and X pairs overlapping along x within a band (in a scene whose
+//! boxes are small against the world, both are small multiples of N; boxes all in one
+//! band degrade to the plain sweep, O(N + pairs overlapping along x)). The boxes overlapping one box: a binary search on the running maximum of
 //! the right sides finds the first box that can reach it, then a scan up to its right
 //! side, O(log N + the boxes in that slab).
 //!
@@ -92,6 +93,8 @@ pub(crate) struct BroadPhase {
     /// The overlapping pairs of the last sweep, valid while nothing changed.
     pairs: Vec<(usize, usize)>,
     pairs_valid: bool,
+    /// Scratch of the sweep: per horizontal band, indices into `sorted`.
+    bands: Vec<Vec<u32>>,
 }
 
 impl BroadPhase {
@@ -113,6 +116,7 @@ impl BroadPhase {
             + self.sorted.capacity() * std::mem::size_of::<Slab>()
             + self.reach.capacity() * std::mem::size_of::<f64>()
             + self.pairs.capacity() * std::mem::size_of::<(usize, usize)>()
+            + self.bands.iter().map(|b| b.capacity() * 4).sum::<usize>()
     }
 
     /// Brings the sorted boxes up to date with `current(key)` for every dirty key.
@@ -188,20 +192,67 @@ impl BroadPhase {
     /// flushed. Reuses the last sweep while nothing changed.
     pub fn overlapping_pairs(&mut self) -> Vec<(usize, usize)> {
         if !self.pairs_valid {
-            self.pairs.clear();
-            let sorted = &self.sorted;
-            for (i, a) in sorted.iter().enumerate() {
-                for b in sorted[i + 1..].iter().take_while(|b| b.min_x <= a.max_x) {
-                    if a.min_y <= b.max_y && b.min_y <= a.max_y {
+            self.sweep();
+            self.pairs_valid = true;
+        }
+        self.pairs.clone()
+    }
+
+    /// The sweep, in horizontal bands: about √N / 2 bands of equal height over the boxes'
+    /// vertical extent; each box is listed (in left-side order) in every band it meets,
+    /// each band swept on its own, and a pair reported only in the band holding the
+    /// lower end of the two boxes' common vertical interval, so exactly once. A box
+    /// then meets only the boxes of its own bands along x, not all those of its vertical
+    /// slab. Band membership uses a monotone floating-point map of y (the same one for
+    /// listing and for reporting); every overlap decision is an exact comparison.
+    fn sweep(&mut self) {
+        self.pairs.clear();
+        let n = self.sorted.len();
+        if n < 2 {
+            return;
+        }
+        let (lo, hi) = self
+            .sorted
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), s| {
+                (lo.min(s.min_y), hi.max(s.max_y))
+            });
+        let bands = ((n as f64).sqrt() / 2.0).clamp(1.0, 1024.0) as usize;
+        let scale = bands as f64 / (hi - lo);
+        let band_of = |y: f64| -> usize {
+            let b = (y - lo) * scale;
+            if b.is_finite() && b > 0.0 {
+                (b as usize).min(bands - 1)
+            } else {
+                0
+            }
+        };
+        self.bands.resize_with(bands.max(self.bands.len()), Vec::new);
+        for band in &mut self.bands {
+            band.clear();
+        }
+        for (i, s) in self.sorted.iter().enumerate() {
+            for band in &mut self.bands[band_of(s.min_y)..=band_of(s.max_y)] {
+                band.push(i as u32);
+            }
+        }
+        let sorted = &self.sorted;
+        for (j, band) in self.bands[..bands].iter().enumerate() {
+            for (t, &ia) in band.iter().enumerate() {
+                let a = &sorted[ia as usize];
+                for &ib in &band[t + 1..] {
+                    let b = &sorted[ib as usize];
+                    if b.min_x > a.max_x {
+                        break;
+                    }
+                    if a.min_y <= b.max_y && b.min_y <= a.max_y && band_of(a.min_y.max(b.min_y)) == j {
                         let (p, q) = (a.key.min(b.key), a.key.max(b.key));
                         self.pairs.push((p as usize, q as usize));
                     }
                 }
             }
-            self.pairs.sort_unstable();
-            self.pairs_valid = true;
         }
-        self.pairs.clone()
+        self.pairs.sort_unstable();
     }
 }
 
@@ -260,6 +311,62 @@ mod tests {
         (x * 7.0).fract() < 0.5
     }
 
+    fn all_pairs(boxes: &[Option<BoundingBox>]) -> Vec<(usize, usize)> {
+        let mut want = Vec::new();
+        for a in 0..boxes.len() {
+            for b in a + 1..boxes.len() {
+                if let (Some(p), Some(q)) = (boxes[a], boxes[b])
+                    && p.overlaps(&q)
+                {
+                    want.push((a, b));
+                }
+            }
+        }
+        want
+    }
+
+    /// Degenerate layouts for the bands: every box on one horizontal line (zero height
+    /// in all), a box spanning everything, boxes touching exactly at band-like
+    /// coordinates, huge and tiny coordinates.
+    #[test]
+    fn sweep_on_degenerate_layouts() {
+        let b = |x0: f64, y0: f64, x1: f64, y1: f64| {
+            Some(BoundingBox {
+                min: Point::new(x0, y0),
+                max: Point::new(x1, y1),
+            })
+        };
+        let layouts: Vec<Vec<Option<BoundingBox>>> = vec![
+            (0..50).map(|i| b(i as f64, 3.0, i as f64 + 1.0, 3.0)).collect(),
+            (0..50)
+                .map(|i| b(i as f64, i as f64, i as f64 + 1.0, i as f64 + 1.0))
+                .chain([b(-1e300, -1e300, 1e300, 1e300)])
+                .collect(),
+            (0..64)
+                .map(|i| {
+                    b(
+                        (i % 8) as f64,
+                        (i / 8) as f64,
+                        (i % 8) as f64 + 1.0,
+                        (i / 8) as f64 + 1.0,
+                    )
+                })
+                .collect(),
+            (0..40)
+                .map(|i| b(0.0, i as f64 * 1e-300, 1.0, (i + 1) as f64 * 1e-300))
+                .chain([b(0.0, -1.7e308, 1.0, 1.7e308), None, b(5.0, 5.0, 5.0, 5.0)])
+                .collect(),
+        ];
+        for (l, boxes) in layouts.iter().enumerate() {
+            let mut broad = BroadPhase::default();
+            for k in 0..boxes.len() {
+                broad.mark(k);
+            }
+            broad.flush(|k| boxes[k]);
+            assert_eq!(broad.overlapping_pairs(), all_pairs(boxes), "layout {l}");
+        }
+    }
+
     /// Pairs and single-box queries against all pairs, under inserts, removals, small
     /// and large moves, and flushes with nothing changed.
     #[test]
@@ -289,16 +396,7 @@ mod tests {
                 broad.mark(k);
             }
             broad.flush(|k| boxes[k]);
-            let mut want = Vec::new();
-            for a in 0..boxes.len() {
-                for b in a + 1..boxes.len() {
-                    if let (Some(p), Some(q)) = (boxes[a], boxes[b])
-                        && p.overlaps(&q)
-                    {
-                        want.push((a, b));
-                    }
-                }
-            }
+            let want = all_pairs(&boxes);
             assert_eq!(broad.overlapping_pairs(), want, "round {round}");
             assert_eq!(broad.overlapping_pairs(), want, "round {round}, reused");
             for (k, b) in boxes.iter().enumerate().take(20) {
