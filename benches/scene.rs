@@ -26,6 +26,10 @@
 //! brute force over all pairs (exact linear test on every pair whose boxes overlap).
 //!
 //! `cargo bench --bench scene`; ratios polysect / parry2d per workload come from one run.
+//! Both sides run every frame, so besides criterion's figures the bench prints, per
+//! workload, a paired comparison over the same frames (each side's time per frame, the
+//! ratio of the totals and the median per-frame ratio): on a busy machine the pairing
+//! keeps the ratio meaningful when the speed drifts between criterion's two runs.
 //! `POLYSECT_SCENE_DEFAULT_COSTS=1` uses the default cost model instead of calibrating
 //! (for profiling runs).
 
@@ -375,6 +379,9 @@ struct World {
     ours: Ours,
     parry: Parry,
     frames: u64,
+    /// Per frame, both sides' times (polysect, parry2d), whichever side criterion timed:
+    /// the paired comparison printed after each workload.
+    paired: Vec<(Duration, Duration)>,
 }
 
 impl World {
@@ -386,6 +393,7 @@ impl World {
             parry: Parry::new(&mirror),
             mirror,
             frames: 0,
+            paired: Vec::new(),
         };
         // The first frame, checked against brute force.
         let frame = world.mirror.step(workload.motion);
@@ -397,32 +405,65 @@ impl World {
         world
     }
 
-    /// Runs `iters` frames timing one side; the other follows untimed and the counts are
-    /// compared.
+    /// Runs `iters` frames timing one side for criterion; the other follows (timed only
+    /// for the paired comparison) and the counts are compared.
     fn run(&mut self, iters: u64, time_ours: bool) -> Duration {
         let mut total = Duration::ZERO;
         for _ in 0..iters {
             let frame = self.mirror.step(self.workload.motion);
             let start = Instant::now();
-            let timed = if time_ours {
+            let first = if time_ours {
                 self.ours.frame(&frame)
             } else {
                 self.parry.frame(&frame)
             };
-            total += start.elapsed();
-            let other = if time_ours {
+            let t_first = start.elapsed();
+            total += t_first;
+            let start = Instant::now();
+            let second = if time_ours {
                 self.parry.frame(&frame)
             } else {
                 self.ours.frame(&frame)
             };
+            let t_second = start.elapsed();
+            self.paired.push(if time_ours {
+                (t_first, t_second)
+            } else {
+                (t_second, t_first)
+            });
             self.frames += 1;
             assert_eq!(
-                timed, other,
-                "{} frame {}: pair counts differ (timed side polysect: {time_ours})",
+                first, second,
+                "{} frame {}: pair counts differ (first side polysect: {time_ours})",
                 self.workload.name, self.frames
             );
         }
         total
+    }
+
+    /// The paired comparison over every frame run so far: total time of each side over
+    /// the same frames, and the median of the per-frame ratios.
+    fn paired_report(&self) -> String {
+        let (ours, parry): (Duration, Duration) = self
+            .paired
+            .iter()
+            .fold((Duration::ZERO, Duration::ZERO), |(a, b), &(x, y)| (a + x, b + y));
+        let mut ratios: Vec<f64> = self
+            .paired
+            .iter()
+            .map(|(x, y)| x.as_secs_f64() / y.as_secs_f64().max(1e-12))
+            .collect();
+        ratios.sort_by(f64::total_cmp);
+        let frames = self.paired.len().max(1) as f64;
+        format!(
+            "{}: paired over {} frames: polysect {:.3} ms, parry2d {:.3} ms per frame, ratio of totals {:.2}, median per-frame ratio {:.2}",
+            self.workload.name,
+            self.paired.len(),
+            ours.as_secs_f64() * 1e3 / frames,
+            parry.as_secs_f64() * 1e3 / frames,
+            ours.as_secs_f64() / parry.as_secs_f64().max(1e-12),
+            ratios.get(ratios.len() / 2).copied().unwrap_or(f64::NAN),
+        )
     }
 }
 
@@ -445,6 +486,7 @@ fn scene(c: &mut Criterion) {
             b.iter_custom(|iters| world.borrow_mut().run(iters, false))
         });
         group.finish();
+        eprintln!("{}", world.borrow().paired_report());
     }
 }
 

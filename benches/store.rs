@@ -4,7 +4,8 @@
 //! 40k overlapping squares (batch planning must stay near-linear); and the O(1) edit
 //! paths (insert + remove, move) on a linked polygon and through a scene. Each workload
 //! iteration runs on a fresh clone of the same scene, so snapshot caching starts from
-//! the same state every time.
+//! the same state every time. The `ratios` group runs the planner interleaved with the
+//! fixed strategies and prints its ratio to the best of them over the same rounds.
 
 use criterion::{BatchSize, BenchmarkId, Criterion, criterion_group, criterion_main};
 use polysect::generate::regular_polygon;
@@ -14,6 +15,7 @@ use polysect::{Exact, LinkedPolygon, Point, VertexId};
 use rand::SeedableRng;
 use rand::rngs::SmallRng;
 use std::hint::black_box;
+use std::time::{Duration, Instant};
 
 fn workloads(c: &mut Criterion) {
     let base = workload::scattered_scene(Exact, 48, 16, 3.0, 7);
@@ -46,44 +48,165 @@ fn workloads(c: &mut Criterion) {
 /// vertex moves before every query. Converting the triangle and testing the arrays costs
 /// a fraction of one sampled query on the big polygon.
 fn big_snapshot_small_moving(c: &mut Criterion) {
-    const STEPS: usize = 32;
-    let mut rng = SmallRng::seed_from_u64(0xb16);
-    let mut base = Scene::new();
-    let big = base.insert(LinkedPolygon::from_convex_shuffled(
-        &regular_polygon(1 << 18, 1.0),
-        &mut rng,
-    ));
-    let small = base.insert_points([[0.8, 0.8], [0.9, 0.8], [0.8, 0.9]]).unwrap();
-    base.set_strategy(Strategy::Cached);
-    assert!(!base.intersects(big, small).unwrap());
-    assert!(base.has_snapshot(big).unwrap());
-    // Handles belong to one scene: each clone's are found by rank.
-    let rank = |s: &Scene, id: PolygonId| s.ids().position(|x| x == id).unwrap();
-    let (big, small) = (rank(&base, big), rank(&base, small));
+    let base = BigSnapshot::new();
     let mut group = c.benchmark_group("workload/big-snapshot-vs-moving-triangle");
     group.sample_size(10);
     for strategy in Strategy::ALL {
         // One scene per strategy for all iterations: an even number of steps brings the
         // triangle back, and the big polygon keeps its snapshot under every strategy.
-        let mut scene = base.clone();
-        scene.set_strategy(strategy);
-        let ids: Vec<PolygonId> = scene.ids().collect();
-        let (p, t) = (ids[big], ids[small]);
-        let v = scene
-            .polygon(t)
-            .unwrap()
-            .next(scene.polygon(t).unwrap().first())
-            .unwrap();
+        let mut run = base.with(strategy);
         group.bench_function(BenchmarkId::from_parameter(strategy.name()), |b| {
-            b.iter(|| {
-                for step in 0..STEPS {
-                    let x = if step % 2 == 0 { 0.95 } else { 0.9 };
-                    scene.move_vertex(t, v, Point::new(x, 0.8)).unwrap();
-                    assert!(!scene.intersects(p, t).unwrap());
+            b.iter(|| run.steps())
+        });
+        assert!(run.scene.has_snapshot(run.big).unwrap());
+    }
+    group.finish();
+}
+
+/// The big-snapshot workload's scene, ready for any strategy.
+struct BigSnapshot {
+    scene: Scene,
+    big: PolygonId,
+    small: PolygonId,
+    vertex: VertexId,
+}
+
+impl BigSnapshot {
+    const STEPS: usize = 32;
+
+    fn new() -> BigSnapshot {
+        let mut rng = SmallRng::seed_from_u64(0xb16);
+        let mut scene = Scene::new();
+        let big = scene.insert(LinkedPolygon::from_convex_shuffled(
+            &regular_polygon(1 << 18, 1.0),
+            &mut rng,
+        ));
+        let small = scene.insert_points([[0.8, 0.8], [0.9, 0.8], [0.8, 0.9]]).unwrap();
+        scene.set_strategy(Strategy::Cached);
+        assert!(!scene.intersects(big, small).unwrap());
+        assert!(scene.has_snapshot(big).unwrap());
+        let vertex = scene
+            .polygon(small)
+            .unwrap()
+            .next(scene.polygon(small).unwrap().first())
+            .unwrap();
+        BigSnapshot {
+            scene,
+            big,
+            small,
+            vertex,
+        }
+    }
+
+    /// A clone with `strategy` (handles belong to one scene: the clone's are found by
+    /// rank).
+    fn with(&self, strategy: Strategy) -> BigSnapshot {
+        let mut scene = self.scene.clone();
+        scene.set_strategy(strategy);
+        let rank = |id: PolygonId| self.scene.ids().position(|x| x == id).unwrap();
+        let ids: Vec<PolygonId> = scene.ids().collect();
+        let (big, small) = (ids[rank(self.big)], ids[rank(self.small)]);
+        let vertex = scene
+            .polygon(small)
+            .unwrap()
+            .next(scene.polygon(small).unwrap().first())
+            .unwrap();
+        BigSnapshot {
+            scene,
+            big,
+            small,
+            vertex,
+        }
+    }
+
+    /// Moves the triangle's vertex and queries, `STEPS` times (even: back where it was).
+    fn steps(&mut self) {
+        for step in 0..Self::STEPS {
+            let x = if step % 2 == 0 { 0.95 } else { 0.9 };
+            self.scene
+                .move_vertex(self.small, self.vertex, Point::new(x, 0.8))
+                .unwrap();
+            assert!(!self.scene.intersects(self.big, self.small).unwrap());
+        }
+    }
+}
+
+/// The planner against the fixed strategies that can be best here (sampled, cached;
+/// convert is 30× to 100,000× slower on every workload, see the groups above),
+/// interleaved: each criterion iteration runs one round of every strategy on the same
+/// workload from the same state, and the planner's time is what criterion records.
+/// After each workload the bench prints each strategy's median round and the planner's
+/// ratio to the best fixed strategy over the same rounds: on a busy machine, where speed
+/// drifts between criterion's groups, the pairing keeps the ratio meaningful.
+fn planner_ratios(c: &mut Criterion) {
+    const SHOWN: [Strategy; 3] = [Strategy::Sampled, Strategy::Cached, Strategy::Planner];
+    let base = workload::scattered_scene(Exact, 48, 16, 3.0, 7);
+    let big = BigSnapshot::new();
+    let mut group = c.benchmark_group("ratios");
+    group.sample_size(10);
+    let specs = WorkloadSpec::standard(1000, 11);
+    for name in specs
+        .iter()
+        .map(|s| s.name)
+        .chain(["big-snapshot-vs-moving-triangle"])
+    {
+        let mut rounds: Vec<[Duration; 3]> = Vec::new();
+        let mut runs: Vec<BigSnapshot> = SHOWN.iter().map(|&st| big.with(st)).collect();
+        group.bench_function(BenchmarkId::new("planner-interleaved", name), |b| {
+            b.iter_custom(|iters| {
+                let mut planner = Duration::ZERO;
+                for _ in 0..iters {
+                    let mut round = [Duration::ZERO; 3];
+                    for (i, &strategy) in SHOWN.iter().enumerate() {
+                        round[i] = match specs.iter().find(|s| s.name == name) {
+                            Some(spec) => {
+                                let mut scene = base.clone();
+                                scene.set_strategy(strategy);
+                                let start = Instant::now();
+                                let r = workload::run(&mut scene, spec, false, || {});
+                                let t = start.elapsed();
+                                assert_eq!(r.queries + r.edits, spec.steps as u64);
+                                t
+                            }
+                            None => {
+                                let start = Instant::now();
+                                runs[i].steps();
+                                start.elapsed()
+                            }
+                        };
+                    }
+                    planner += round[2];
+                    rounds.push(round);
                 }
+                planner
             })
         });
-        assert!(scene.has_snapshot(p).unwrap());
+        let stat = |i: usize| {
+            let mut v: Vec<Duration> = rounds.iter().map(|r| r[i]).collect();
+            v.sort();
+            (v[0], v[v.len() / 2])
+        };
+        let m: Vec<(Duration, Duration)> = (0..3).map(stat).collect();
+        let mut per_round: Vec<f64> = rounds
+            .iter()
+            .map(|r| r[2].as_secs_f64() / r[0].min(r[1]).as_secs_f64())
+            .collect();
+        per_round.sort_by(f64::total_cmp);
+        let ratio = |a: Duration, b: Duration, c: Duration| a.as_secs_f64() / b.min(c).as_secs_f64();
+        eprintln!(
+            "{name}: {} interleaved rounds; min / median: sampled {:?} / {:?}, cached {:?} / {:?}, planner {:?} / {:?}; \
+             planner / best fixed: median of per-round ratios {:.2}, of minima {:.2}, of medians {:.2}",
+            rounds.len(),
+            m[0].0,
+            m[0].1,
+            m[1].0,
+            m[1].1,
+            m[2].0,
+            m[2].1,
+            per_round[per_round.len() / 2],
+            ratio(m[2].0, m[0].0, m[1].0),
+            ratio(m[2].1, m[0].1, m[1].1),
+        );
     }
     group.finish();
 }
@@ -221,6 +344,7 @@ criterion_group!(
     benches,
     workloads,
     big_snapshot_small_moving,
+    planner_ratios,
     all_pairs,
     fresh_grid_pairs,
     edits

@@ -83,15 +83,17 @@ struct Entry {
 }
 
 /// A planned batch: a route per pair (in input order), the polygons to convert first,
-/// and the estimated cost of it all in nanoseconds.
+/// and the estimated costs of the conversions and of the answers, in nanoseconds.
 struct Plan {
     routes: Vec<Result<Route, SceneError>>,
     chosen: Vec<usize>,
-    estimate_ns: f64,
+    convert_ns: f64,
+    answer_ns: f64,
 }
 
-/// Below this estimated cost a batch runs on the calling thread: handing work to other
-/// threads costs microseconds, and far more when the machine is busy.
+/// Conversions, or answers, run on other threads too only when there are several and
+/// their estimated cost reaches this: handing work to other threads costs microseconds,
+/// and far more when the machine is busy (the caller waits for a worker to wake up).
 const PARALLEL_MIN_NS: f64 = 1e6;
 
 /// Per-polygon marks of one plan, so that planning a batch is O(1) per pair; every
@@ -547,16 +549,16 @@ impl<K: Kernel> Scene<K> {
                 }
             }
         }
-        let mut estimate_ns = 0.0;
+        let (mut convert_ns, mut answer_ns) = (0.0, 0.0);
         for k in &chosen {
             self.entries[*k].plan.convert = true;
-            estimate_ns += self.costs.convert_cost(self.entries[*k].polygon.len());
+            convert_ns += self.costs.convert_cost(self.entries[*k].polygon.len());
         }
         for route in routes.iter_mut().flatten() {
             if let Route::Sampled(a, b) = *route {
                 let (r, cost) = self.finish_route(a, b);
                 *route = r;
-                estimate_ns += cost;
+                answer_ns += cost;
             }
         }
         for k in touched {
@@ -565,7 +567,8 @@ impl<K: Kernel> Scene<K> {
         Plan {
             routes,
             chosen,
-            estimate_ns,
+            convert_ns,
+            answer_ns,
         }
     }
 
@@ -693,9 +696,9 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Answers many queries: planned together (the planner sees the whole batch before
-    /// choosing conversions), then conversions built and pairs answered, in parallel
-    /// when the plan's estimated cost is large enough to pay for handing work to other
-    /// threads. Results are in input order and do not depend on the number of threads.
+    /// choosing conversions), then conversions built and pairs answered, each in
+    /// parallel when there are several and their estimated cost (at least 1 ms) pays for
+    /// handing work to other threads. Results are in input order and do not depend on the number of threads.
     /// A pair with a stale or foreign handle gets that error in its place; the other
     /// pairs are answered.
     pub fn intersects_batch(&mut self, pairs: &[(PolygonId, PolygonId)]) -> Vec<Result<bool, SceneError>> {
@@ -707,8 +710,10 @@ impl<K: Kernel> Scene<K> {
 
     /// Converts the chosen polygons and answers the routes.
     fn run_plan(&mut self, plan: Plan) -> Vec<Result<bool, SceneError>> {
-        let parallel = plan.estimate_ns >= PARALLEL_MIN_NS && rayon::current_num_threads() > 1;
-        self.convert_all(plan.chosen, parallel);
+        let threads = rayon::current_num_threads() > 1;
+        let parallel_convert = threads && plan.chosen.len() > 1 && plan.convert_ns >= PARALLEL_MIN_NS;
+        let parallel = threads && plan.routes.len() > 64 && plan.answer_ns >= PARALLEL_MIN_NS;
+        self.convert_all(plan.chosen, parallel_convert);
         let mut ws = std::mem::take(&mut self.workspace);
         let this = &*self;
         let answer = |ws: &mut QueryWorkspace, (i, route): (usize, &Result<Route, SceneError>)| {
