@@ -455,8 +455,17 @@ impl World {
             .collect();
         ratios.sort_by(f64::total_cmp);
         let frames = self.paired.len().max(1) as f64;
+        let st = self.ours.scene.stats();
+        let per = |x: u64| x as f64 / (self.frames + 1) as f64;
         format!(
-            "{}: paired over {} frames: polysect {:.3} ms, parry2d {:.3} ms per frame, ratio of totals {:.2}, median per-frame ratio {:.2}",
+            "{}: polysect routes per frame: {:.0} box rejects, {:.0} array, {:.0} linear, {:.0} sampled tests, {:.1} conversions\n\
+             {}: paired over {} frames: polysect {:.3} ms, parry2d {:.3} ms per frame, ratio of totals {:.2}, median per-frame ratio {:.2}",
+            self.workload.name,
+            per(st.box_rejects),
+            per(st.array_tests),
+            per(st.linear_tests),
+            per(st.sampled_tests),
+            per(st.conversions),
             self.workload.name,
             self.paired.len(),
             ours.as_secs_f64() * 1e3 / frames,

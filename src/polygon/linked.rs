@@ -117,6 +117,10 @@ pub struct LinkedPolygon {
     nodes: Vec<Node>,
     slots: Slab<Slot>,
     next_generation: u64,
+    /// Inserts and removals since the arena was built in boundary order (its length for
+    /// a shuffled build): each relinks O(1) nodes out of storage order. See
+    /// [`arena_disorder`](Self::arena_disorder).
+    relinks: usize,
 }
 
 /// Scratch memory for [`LinkedPolygon::sample_positions`], reused across queries so a
@@ -168,7 +172,7 @@ impl LinkedPolygon {
     /// Links the vertices of `polygon`, stored in boundary order. O(n).
     pub fn from_convex(polygon: &ConvexPolygon) -> Self {
         let order: Vec<u32> = (0..polygon.len() as u32).collect();
-        Self::with_storage_order(polygon, &order)
+        Self::with_storage_order(polygon, &order, 0)
     }
 
     /// Links the vertices of `polygon`, stored in a uniformly random order of the
@@ -179,11 +183,11 @@ impl LinkedPolygon {
         for i in (1..order.len()).rev() {
             order.swap(i, rng.random_range(0..=i));
         }
-        Self::with_storage_order(polygon, &order)
+        Self::with_storage_order(polygon, &order, polygon.len())
     }
 
     /// Boundary vertex `i` is stored at position `order[i]`.
-    fn with_storage_order(polygon: &ConvexPolygon, order: &[u32]) -> Self {
+    fn with_storage_order(polygon: &ConvexPolygon, order: &[u32], relinks: usize) -> Self {
         let n = polygon.len();
         let mut nodes = vec![
             Node {
@@ -213,6 +217,7 @@ impl LinkedPolygon {
             nodes,
             slots,
             next_generation: n as u64,
+            relinks,
         }
     }
 
@@ -329,6 +334,7 @@ impl LinkedPolygon {
         });
         self.nodes[a].next = pos;
         self.nodes[b].prev = pos;
+        self.relinks = self.relinks.saturating_add(1);
         Ok(VertexId {
             owner,
             generation,
@@ -362,6 +368,7 @@ impl LinkedPolygon {
             self.nodes[moved.next as usize].prev = r as u32;
             self.slots[moved.slot as usize].pos = r as u32;
         }
+        self.relinks = self.relinks.saturating_add(1);
         Ok(point)
     }
 
@@ -484,6 +491,15 @@ impl LinkedPolygon {
         g
     }
 
+    /// An estimate in [0, 1] of how far the arena's storage order is from boundary order:
+    /// 0 when built in order and only moved since, 1 when shuffled. Each insert or
+    /// removal breaks at most three links out of storage order, so the estimate is
+    /// `min(1, 3 · relinks / len)`. Walks along the links slow down with it (cache
+    /// misses instead of sequential reads), which the store's cost model prices. O(1).
+    pub(crate) fn arena_disorder(&self) -> f64 {
+        (3.0 * self.relinks as f64 / self.len() as f64).min(1.0)
+    }
+
     /// Vertices the arena can hold without reallocating (nodes and handle slots, the
     /// smaller of the two): with dense storage it tracks the largest size the polygon
     /// has had, never the number of edits.
@@ -552,14 +568,13 @@ impl LinkedPolygon {
     /// The polygon as a sorted array, starting at [`first`](Self::first). O(n): one walk
     /// along the links (no handle lookups).
     pub fn to_convex(&self) -> ConvexPolygon {
-        let mut out = Vec::with_capacity(self.len());
         let mut pos = 0;
-        for _ in 0..self.len() {
+        let walk = (0..self.len()).map(|_| {
             let node = &self.nodes[pos];
-            out.push(node.point);
             pos = node.next as usize;
-        }
-        ConvexPolygon::from_ccw_unchecked(out)
+            node.point
+        });
+        ConvexPolygon::from_ccw_unchecked(walk.collect())
     }
 
     /// The point stored at position `pos` (positions are `0..len`, valid until the next edit).

@@ -63,5 +63,5 @@ mod scene;
 pub mod workload;
 
 pub use broad::BoundingBox;
-pub use planner::{CostModel, PlannerStats, Strategy};
+pub use planner::{Arena, CostModel, PlannerStats, Strategy};
 pub use scene::{PolygonId, Scene, SceneError};

@@ -52,65 +52,103 @@ pub const COST_SIZES: usize = 17;
 /// Estimated costs, in nanoseconds, that drive the planner: one table per route,
 /// entry i for polygons of 2^(i + 2) vertices (2^2 ..= 2^18), measured by
 /// [`CostModel::calibrate`]. Between entries costs are interpolated linearly in the
-/// size; beyond the largest, extrapolated along the last segment's power law.
+/// size; beyond the largest, extrapolated along the last segment's power law. Walks
+/// along the links (conversion, the linear test) are measured on arenas in boundary
+/// order and on shuffled arenas, and a polygon is priced between the two by its
+/// arena's disorder (inserts and removals since it was built in order).
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct CostModel {
-    /// Converting one linked polygon of that size (shuffled arena) to an array.
+    /// Converting one linked polygon of that size to an array, shuffled arena.
     pub convert_ns: [f64; COST_SIZES],
-    /// The sampled test (Chazelle–Liu–Magen) on two linked polygons of that size.
+    /// The same, arena in boundary order.
+    pub convert_ordered_ns: [f64; COST_SIZES],
+    /// The sampled test (Chazelle–Liu–Magen) on two linked polygons of that size
+    /// (shuffled arenas; its reads are random anyway).
     pub sampled_ns: [f64; COST_SIZES],
     /// The linear test walking two linked polygons of that size
-    /// ([`LinearLinked`](crate::intersect::LinearLinked)).
+    /// ([`LinearLinked`](crate::intersect::LinearLinked)), shuffled arenas.
     pub linear_ns: [f64; COST_SIZES],
+    /// The same, arenas in boundary order.
+    pub linear_ordered_ns: [f64; COST_SIZES],
     /// The array test on two snapshots of that size: [`Linear`](crate::intersect::Linear)
     /// up to `array_linear_max` vertices, Barba–Langerman above.
     pub array_ns: [f64; COST_SIZES],
     /// The largest size at which the linear array test beats Barba–Langerman; a pair
     /// of snapshots with at most twice this many vertices in all is tested linearly.
     pub array_linear_max: usize,
-    /// Summary, at 2^18 vertices: conversion per vertex.
+    /// Summary, at 2^18 vertices: conversion per vertex (shuffled arena).
     pub convert_ns_per_vertex: f64,
     /// Summary: the median over the sizes of the sampled test's time per √n.
     pub sampled_ns_per_sqrt_n: f64,
-    /// The largest size at which two fresh polygons are converted on their first query
-    /// (converting both costs less than what snapshots save that query); 0 if none.
+    /// The largest size at which two fresh polygons (arenas in boundary order) are
+    /// converted on their first query (converting both costs less than what snapshots
+    /// save that query); 0 if none.
     pub crossover: usize,
 }
 
+/// What the cost model needs to know of a linked polygon: its size and how far its
+/// arena is from boundary order (0 in order, 1 shuffled).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Arena {
+    pub vertices: usize,
+    pub disorder: f64,
+}
+
+impl Arena {
+    /// The polygon's size and arena disorder. O(1).
+    pub fn of(polygon: &LinkedPolygon) -> Arena {
+        Arena {
+            vertices: polygon.len(),
+            disorder: polygon.arena_disorder(),
+        }
+    }
+
+    /// An arena in boundary order.
+    pub fn ordered(vertices: usize) -> Arena {
+        Arena {
+            vertices,
+            disorder: 0.0,
+        }
+    }
+}
+
 impl Default for CostModel {
-    /// `polysect calibrate` on the project's 2-core reference machine, the median of
-    /// five runs entry by entry (docs/store.md).
+    /// `polysect calibrate` on the project's 2-core reference machine while other jobs
+    /// ran: the least of five runs entry by entry, made non-decreasing (docs/store.md).
     fn default() -> Self {
-        CostModel::from_tables(
-            DEFAULT_TABLES.0,
-            DEFAULT_TABLES.1,
-            DEFAULT_TABLES.2,
-            DEFAULT_TABLES.3,
-        )
+        CostModel::from_tables(DEFAULT_TABLES)
     }
 }
 
 type Table = [f64; COST_SIZES];
 
-/// convert, sampled, linear, array tables of the default model.
-const DEFAULT_TABLES: (Table, Table, Table, Table) = (
+/// The tables of the default model, in the order of [`CostModel::from_tables`].
+const DEFAULT_TABLES: [Table; 6] = [
     [
-        26.0, 37.0, 59.0, 105.0, 206.0, 693.0, 1794.0, 44189.0, 73574.0, 1.521e+05, 3.170e+05, 9.024e+05,
-        2.060e+06, 4.317e+06, 9.280e+06, 1.643e+07, 7.446e+07,
+        17.8, 22.6, 38.4, 75.4, 175.1, 323.7, 649.3, 2178.8, 7082.5, 15418.0, 1.106e+05, 5.658e+05,
+        1.327e+06, 2.981e+06, 8.700e+06, 2.420e+07, 7.808e+07,
     ],
     [
-        656.0, 921.0, 1318.0, 1641.0, 2406.0, 2979.0, 4273.0, 6753.0, 9647.0, 13339.0, 19122.0, 21754.0,
-        28164.0, 28586.0, 47904.0, 1.005e+05, 1.706e+05,
+        17.3, 20.8, 30.7, 52.6, 107.6, 209.2, 399.3, 1025.1, 2183.8, 4284.5, 9104.3, 17242.3, 34859.0,
+        68281.2, 1.605e+05, 9.588e+05, 2.908e+06,
     ],
     [
-        33.0, 79.0, 182.0, 564.0, 1294.0, 2389.0, 4920.0, 13093.0, 1.034e+05, 1.497e+05, 3.122e+05,
-        8.211e+05, 2.393e+06, 4.976e+06, 7.747e+06, 8.220e+06, 7.360e+07,
+        614.4, 860.1, 1164.7, 1635.9, 1966.4, 2767.8, 3999.2, 5145.4, 7500.4, 10158.8, 11356.8, 13462.0,
+        14617.0, 20921.2, 28453.5, 42918.0, 56756.5,
     ],
     [
-        25.0, 52.0, 94.0, 125.0, 165.0, 206.0, 218.0, 231.0, 258.0, 244.0, 229.0, 252.0, 225.0, 188.0, 197.0,
-        403.0, 361.0,
+        31.7, 66.4, 132.8, 296.9, 959.0, 2076.3, 4182.8, 9399.5, 21366.7, 45979.6, 1.033e+05, 2.191e+05,
+        5.156e+05, 2.083e+06, 7.823e+06, 4.040e+07, 1.069e+08,
     ],
-);
+    [
+        30.4, 65.6, 129.3, 296.9, 870.7, 2026.6, 4100.0, 8067.1, 17307.1, 31996.7, 67793.9, 1.385e+05,
+        2.820e+05, 4.738e+05, 3.572e+06, 5.090e+06, 1.688e+07,
+    ],
+    [
+        22.6, 44.9, 58.2, 95.9, 110.6, 112.4, 161.1, 161.1, 203.7, 203.7, 203.7, 203.7, 203.7, 203.7, 207.9,
+        207.9, 207.9,
+    ],
+];
 
 /// The size of table entry `i`.
 fn size_of(i: usize) -> usize {
@@ -137,13 +175,24 @@ fn lookup(table: &Table, n: usize) -> f64 {
 }
 
 impl CostModel {
-    /// A model from its four tables (convert, sampled, linear, array; see the fields);
-    /// the summaries and the crossover are derived.
-    pub fn from_tables(convert_ns: Table, sampled_ns: Table, linear_ns: Table, array_ns: Table) -> CostModel {
-        let mut model = CostModel {
+    /// A model from its tables, in this order: conversion (shuffled, ordered), sampled,
+    /// linear walk (shuffled, ordered), array test; `array_linear_max` is 0 (Barba–Langerman
+    /// at every size), the summaries and the crossover are derived.
+    pub fn from_tables(tables: [[f64; COST_SIZES]; 6]) -> CostModel {
+        let [
             convert_ns,
+            convert_ordered_ns,
             sampled_ns,
             linear_ns,
+            linear_ordered_ns,
+            array_ns,
+        ] = tables;
+        let mut model = CostModel {
+            convert_ns,
+            convert_ordered_ns,
+            sampled_ns,
+            linear_ns,
+            linear_ordered_ns,
             array_ns,
             array_linear_max: 0,
             convert_ns_per_vertex: 0.0,
@@ -163,25 +212,34 @@ impl CostModel {
         self.sampled_ns_per_sqrt_n = median(&mut per_sqrt);
         self.crossover = (0..COST_SIZES)
             .map(size_of)
-            .take_while(|&n| 2.0 * self.convert_cost(n) <= self.saving(n, n))
+            .take_while(|&n| {
+                let a = Arena::ordered(n);
+                2.0 * self.convert_cost(a) <= self.saving(a, a)
+            })
             .last()
             .unwrap_or(0);
     }
 
-    /// Estimated cost of converting an n-vertex polygon.
-    pub fn convert_cost(&self, n: usize) -> f64 {
-        lookup(&self.convert_ns, n)
+    /// Between the ordered and the shuffled table by the arena's disorder.
+    fn walk(ordered: &Table, shuffled: &Table, a: Arena) -> f64 {
+        let (o, s) = (lookup(ordered, a.vertices), lookup(shuffled, a.vertices));
+        o + a.disorder.clamp(0.0, 1.0) * (s - o).max(0.0)
     }
 
-    /// Estimated cost of the sampled test on polygons of `n` and `m` vertices (it is
-    /// governed by the larger).
-    pub fn sampled_cost(&self, n: usize, m: usize) -> f64 {
-        lookup(&self.sampled_ns, n.max(m))
+    /// Estimated cost of converting the polygon.
+    pub fn convert_cost(&self, a: Arena) -> f64 {
+        Self::walk(&self.convert_ordered_ns, &self.convert_ns, a)
     }
 
-    /// Estimated cost of the linear test walking linked polygons of `n` and `m` vertices.
-    pub fn linear_cost(&self, n: usize, m: usize) -> f64 {
-        0.5 * (lookup(&self.linear_ns, n) + lookup(&self.linear_ns, m))
+    /// Estimated cost of the sampled test on the two polygons (governed by the larger).
+    pub fn sampled_cost(&self, a: Arena, b: Arena) -> f64 {
+        lookup(&self.sampled_ns, a.vertices.max(b.vertices))
+    }
+
+    /// Estimated cost of the linear test walking the two polygons.
+    pub fn linear_cost(&self, a: Arena, b: Arena) -> f64 {
+        0.5 * (Self::walk(&self.linear_ordered_ns, &self.linear_ns, a)
+            + Self::walk(&self.linear_ordered_ns, &self.linear_ns, b))
     }
 
     /// Whether a pair of snapshots of `n` and `m` vertices is tested linearly rather
@@ -199,44 +257,58 @@ impl CostModel {
         }
     }
 
-    /// Whether the linear walk is the cheaper test on linked polygons of `n` and `m`
-    /// vertices (otherwise the sampled test).
-    pub fn prefers_linear(&self, n: usize, m: usize) -> bool {
-        self.linear_cost(n, m) <= self.sampled_cost(n, m)
+    /// Whether the linear walk is the cheaper test on the two linked polygons
+    /// (otherwise the sampled test).
+    pub fn prefers_linear(&self, a: Arena, b: Arena) -> bool {
+        self.linear_cost(a, b) <= self.sampled_cost(a, b)
     }
 
-    /// Estimated cost of the cheaper test on linked polygons of `n` and `m` vertices.
-    pub fn linked_cost(&self, n: usize, m: usize) -> f64 {
-        self.linear_cost(n, m).min(self.sampled_cost(n, m))
+    /// Estimated cost of the cheaper test on the two linked polygons.
+    pub fn linked_cost(&self, a: Arena, b: Arena) -> f64 {
+        self.linear_cost(a, b).min(self.sampled_cost(a, b))
     }
 
     /// What snapshots of both polygons save one query between them: the cheaper linked
     /// test less the array test (never negative).
-    pub fn saving(&self, n: usize, m: usize) -> f64 {
-        (self.linked_cost(n, m) - self.array_cost(n, m)).max(0.0)
+    pub fn saving(&self, a: Arena, b: Arena) -> f64 {
+        (self.linked_cost(a, b) - self.array_cost(a.vertices, b.vertices)).max(0.0)
     }
 
     /// Measures the model on this machine, for sizes 2^2 ..= 2^18, on generated polygons
-    /// in shuffled arenas (as after a long edit history), half of the pairs intersecting
-    /// and half disjoint. At each size the polygons are drawn from a pool of about 2^18
-    /// vertices in all, so that large sizes are measured out of cache, as in a scene.
-    /// Each figure is the best of five short rounds (large sizes: one cold run), and each
-    /// table is made non-decreasing in the size. Takes two to three seconds.
+    /// linked in boundary order and in shuffled arenas (as after a long edit history),
+    /// half of the pairs intersecting and half disjoint. At each size the polygons are
+    /// drawn from a pool of about 2^17 vertices in all, so that large sizes are measured
+    /// out of cache, as in a scene. Two passes over all sizes, seconds apart, each figure
+    /// the best of five short rounds (large sizes: one cold run), and the better pass kept
+    /// entry by entry, so a burst of other work on the machine spoils at most one pass;
+    /// then each table is smoothed (median of three neighbours) and made non-decreasing
+    /// in the size. Takes five to ten seconds.
     pub fn calibrate<K: Kernel>(kernel: K) -> CostModel {
         let mut rng = SmallRng::seed_from_u64(0xca1b);
-        let mut tables = [[0.0; COST_SIZES]; 5];
+        let mut tables = [[f64::INFINITY; COST_SIZES]; 7];
         let mut ws = QueryWorkspace::default();
-        for i in 0..COST_SIZES {
-            let row = measure_size(kernel, size_of(i), &mut rng, &mut ws);
-            for (table, value) in tables.iter_mut().zip(row) {
-                table[i] = value;
+        for _pass in 0..2 {
+            for i in 0..COST_SIZES {
+                let row = measure_size(kernel, size_of(i), &mut rng, &mut ws);
+                for (table, value) in tables.iter_mut().zip(row) {
+                    table[i] = table[i].min(value);
+                }
             }
         }
         for table in &mut tables {
             monotone(table);
         }
-        let [convert, sampled, linear, barba, linear_array] = tables;
-        let mut model = CostModel::from_tables(convert, sampled, linear, barba);
+        let [
+            convert,
+            convert_ordered,
+            sampled,
+            linear,
+            linear_ordered,
+            barba,
+            linear_array,
+        ] = tables;
+        let mut model =
+            CostModel::from_tables([convert, convert_ordered, sampled, linear, linear_ordered, barba]);
         model.set_array_tables(&barba, &linear_array);
         model
     }
@@ -259,62 +331,86 @@ impl CostModel {
     }
 }
 
-/// Times the five routes at size n: conversion (per polygon), sampled, linear on
-/// linked polygons, Barba–Langerman and linear on arrays (per pair).
-fn measure_size<K: Kernel>(kernel: K, n: usize, rng: &mut SmallRng, ws: &mut QueryWorkspace) -> [f64; 5] {
-    let count = ((1usize << 17) / n).clamp(1, 128);
-    let pairs: Vec<(LinkedPolygon, LinkedPolygon, ConvexPolygon, ConvexPolygon)> = (0..count)
+/// Times the routes at size n: conversion (per polygon; shuffled, then ordered arenas),
+/// sampled, linear on linked polygons (shuffled, ordered), Barba–Langerman and linear on
+/// arrays (per pair).
+fn measure_size<K: Kernel>(kernel: K, n: usize, rng: &mut SmallRng, ws: &mut QueryWorkspace) -> [f64; 7] {
+    let count = ((1usize << 16) / n).clamp(2, 64);
+    let arrays: Vec<(ConvexPolygon, ConvexPolygon)> = (0..count)
         .map(|j| {
             let relation = if j % 2 == 0 {
                 Relation::Disjoint
             } else {
                 Relation::Intersecting
             };
-            let (p, q) = generate::pair(Family::NonUniform, n, relation, rng);
+            generate::pair(Family::NonUniform, n, relation, rng)
+        })
+        .collect();
+    let shuffled: Vec<(LinkedPolygon, LinkedPolygon)> = arrays
+        .iter()
+        .map(|(p, q)| {
             (
-                LinkedPolygon::from_convex_shuffled(&p, rng),
-                LinkedPolygon::from_convex_shuffled(&q, rng),
-                p,
-                q,
+                LinkedPolygon::from_convex_shuffled(p, rng),
+                LinkedPolygon::from_convex_shuffled(q, rng),
             )
         })
         .collect();
-    let per_pair = |t: f64| t / pairs.len() as f64;
-    let t0 = per_pair(best_time(|| {
-        for (p, q, _, _) in &pairs {
-            std::hint::black_box(p.to_convex());
-            std::hint::black_box(q.to_convex());
-        }
-    })) / 2.0;
-    let t1 = per_pair(best_time(|| {
-        for (p, q, _, _) in &pairs {
+    let ordered: Vec<(LinkedPolygon, LinkedPolygon)> = arrays
+        .iter()
+        .map(|(p, q)| (LinkedPolygon::from_convex(p), LinkedPolygon::from_convex(q)))
+        .collect();
+    let per_pair = |t: f64| t / count as f64;
+    let convert = |pairs: &[(LinkedPolygon, LinkedPolygon)]| {
+        per_pair(best_time(|| {
+            for (p, q) in pairs {
+                std::hint::black_box(p.to_convex());
+                std::hint::black_box(q.to_convex());
+            }
+        })) / 2.0
+    };
+    let linear = |pairs: &[(LinkedPolygon, LinkedPolygon)]| {
+        per_pair(best_time(|| {
+            for (p, q) in pairs {
+                std::hint::black_box(linear_test(kernel, p, q));
+            }
+        }))
+    };
+    let sampled = per_pair(best_time(|| {
+        for (p, q) in &shuffled {
             std::hint::black_box(sampled_test(kernel, p, q, ws, rng));
         }
     }));
-    let t2 = per_pair(best_time(|| {
-        for (p, q, _, _) in &pairs {
-            std::hint::black_box(linear_test(kernel, p, q));
-        }
-    }));
-    let t3 = per_pair(best_time(|| {
-        for (_, _, p, q) in &pairs {
+    let barba = per_pair(best_time(|| {
+        for (p, q) in &arrays {
             std::hint::black_box(barba_test(kernel, p, q));
         }
     }));
-    let t4 = per_pair(best_time(|| {
-        for (_, _, p, q) in &pairs {
+    let linear_array = per_pair(best_time(|| {
+        for (p, q) in &arrays {
             std::hint::black_box(linear_array_test(kernel, p, q));
         }
     }));
-    [t0, t1, t2, t3, t4]
+    [
+        convert(&shuffled),
+        convert(&ordered),
+        sampled,
+        linear(&shuffled),
+        linear(&ordered),
+        barba,
+        linear_array,
+    ]
 }
 
-/// Makes a measured table non-decreasing in the size, as every route's cost is: first
-/// each entry is capped by every later one (a round slowed by another process cannot
-/// leave a spike), then raised to every earlier one.
+/// Makes a measured table non-decreasing in the size, as every route's cost is, without
+/// letting one disturbed measurement move the others: each inner entry becomes the
+/// median of itself and its two neighbours (an isolated spike or dip is dropped), then
+/// each entry is raised to every earlier one.
 fn monotone(table: &mut Table) {
-    for i in (0..COST_SIZES - 1).rev() {
-        table[i] = table[i].min(table[i + 1]);
+    let measured = *table;
+    for i in 1..COST_SIZES - 1 {
+        let mut three = [measured[i - 1], measured[i], measured[i + 1]];
+        three.sort_by(f64::total_cmp);
+        table[i] = three[1];
     }
     for i in 1..COST_SIZES {
         table[i] = table[i].max(table[i - 1]);

@@ -1,7 +1,7 @@
 //! [`Scene`]: the store of editable polygons and its query planner.
 
 use super::broad::{BoundingBox, BroadPhase};
-use super::planner::{Account, CostModel, PlannerStats, Strategy};
+use super::planner::{Account, Arena, CostModel, PlannerStats, Strategy};
 use super::route::{QueryWorkspace, Route, array_test, linear_test, sampled_test};
 use crate::kernel::{Exact, Kernel, Point};
 use crate::polygon::{ConvexPolygon, EditError, Identity, LinkedPolygon, PolygonError, VertexId};
@@ -552,7 +552,7 @@ impl<K: Kernel> Scene<K> {
         let (mut convert_ns, mut answer_ns) = (0.0, 0.0);
         for k in &chosen {
             self.entries[*k].plan.convert = true;
-            convert_ns += self.costs.convert_cost(self.entries[*k].polygon.len());
+            convert_ns += self.costs.convert_cost(Arena::of(&self.entries[*k].polygon));
         }
         for route in routes.iter_mut().flatten() {
             if let Route::Sampled(a, b) = *route {
@@ -604,7 +604,7 @@ impl<K: Kernel> Scene<K> {
     fn choose(&self, touched: &[usize], chosen: &mut Vec<usize>) {
         for &k in touched {
             let e = &self.entries[k];
-            let cost = self.costs.convert_cost(e.polygon.len());
+            let cost = self.costs.convert_cost(Arena::of(&e.polygon));
             if !e.plan.convert && e.account.should_convert(cost, e.plan.known_ns, e.plan.known) {
                 chosen.push(k);
             }
@@ -613,8 +613,10 @@ impl<K: Kernel> Scene<K> {
 
     /// What snapshots of both polygons would save one query between them.
     fn saving(&self, a: usize, b: usize) -> f64 {
-        self.costs
-            .saving(self.entries[a].polygon.len(), self.entries[b].polygon.len())
+        self.costs.saving(
+            Arena::of(&self.entries[a].polygon),
+            Arena::of(&self.entries[b].polygon),
+        )
     }
 
     /// The route of a live pair once conversions are chosen, and its estimated cost;
@@ -623,7 +625,11 @@ impl<K: Kernel> Scene<K> {
     /// Warm starts across frames (a certificate kept from the last test of this pair,
     /// checked before any other route) would be decided here, first, as one more route.
     fn finish_route(&mut self, a: usize, b: usize) -> (Route, f64) {
-        let (na, nb) = (self.entries[a].polygon.len(), self.entries[b].polygon.len());
+        let (pa, pb) = (
+            Arena::of(&self.entries[a].polygon),
+            Arena::of(&self.entries[b].polygon),
+        );
+        let (na, nb) = (pa.vertices, pb.vertices);
         let (ha, hb) = (
             self.entries[a].will_have_snapshot(),
             self.entries[b].will_have_snapshot(),
@@ -636,10 +642,10 @@ impl<K: Kernel> Scene<K> {
         if self.strategy == Strategy::Convert {
             self.stats.throwaway_conversions += 2;
             let cost =
-                self.costs.convert_cost(na) + self.costs.convert_cost(nb) + self.costs.array_cost(na, nb);
+                self.costs.convert_cost(pa) + self.costs.convert_cost(pb) + self.costs.array_cost(na, nb);
             return (Route::Throwaway(a, b, linear_arrays), cost);
         }
-        let saving = self.saving(a, b);
+        let saving = self.costs.saving(pa, pb);
         for (k, has_other) in [(a, hb), (b, ha)] {
             if !self.entries[k].will_have_snapshot() {
                 self.entries[k]
@@ -647,12 +653,12 @@ impl<K: Kernel> Scene<K> {
                     .pay(if has_other { saving } else { 0.5 * saving });
             }
         }
-        if self.strategy == Strategy::Planner && self.costs.prefers_linear(na, nb) {
+        if self.strategy == Strategy::Planner && self.costs.prefers_linear(pa, pb) {
             self.stats.linear_tests += 1;
-            return (Route::Linear(a, b), self.costs.linear_cost(na, nb));
+            return (Route::Linear(a, b), self.costs.linear_cost(pa, pb));
         }
         self.stats.sampled_tests += 1;
-        (Route::Sampled(a, b), self.costs.sampled_cost(na, nb))
+        (Route::Sampled(a, b), self.costs.sampled_cost(pa, pb))
     }
 
     /// Answers one planned route; `seed` seeds the sampled test's generator (per pair, so
