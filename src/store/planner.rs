@@ -125,28 +125,28 @@ type Table = [f64; COST_SIZES];
 /// The tables of the default model, in the order of [`CostModel::from_tables`].
 const DEFAULT_TABLES: [Table; 6] = [
     [
-        17.8, 22.6, 38.4, 75.4, 175.1, 323.7, 649.3, 2178.8, 7082.5, 15418.0, 1.106e+05, 5.658e+05,
-        1.327e+06, 2.981e+06, 8.700e+06, 2.420e+07, 7.808e+07,
+        19.0, 23.8, 41.3, 77.5, 163.8, 372.1, 1167.2, 3134.6, 37074.3, 80199.0, 2.783e+05, 5.528e+05,
+        1.136e+06, 3.848e+06, 1.018e+07, 2.209e+07, 3.892e+07,
     ],
     [
-        17.3, 20.8, 30.7, 52.6, 107.6, 209.2, 399.3, 1025.1, 2183.8, 4284.5, 9104.3, 17242.3, 34859.0,
-        68281.2, 1.605e+05, 9.588e+05, 2.908e+06,
+        19.2, 22.4, 32.2, 58.7, 111.3, 227.9, 523.6, 1121.8, 2298.9, 5270.1, 9653.3, 18024.6, 41533.1,
+        88236.8, 1.473e+05, 8.517e+05, 2.204e+06,
     ],
     [
-        614.4, 860.1, 1164.7, 1635.9, 1966.4, 2767.8, 3999.2, 5145.4, 7500.4, 10158.8, 11356.8, 13462.0,
-        14617.0, 20921.2, 28453.5, 42918.0, 56756.5,
+        655.9, 918.2, 1162.1, 1621.3, 2259.1, 3129.1, 4100.4, 6207.4, 8838.7, 11243.6, 12197.5, 17839.2,
+        21177.6, 23571.6, 28400.2, 43022.5, 56768.0,
     ],
     [
-        31.7, 66.4, 132.8, 296.9, 959.0, 2076.3, 4182.8, 9399.5, 21366.7, 45979.6, 1.033e+05, 2.191e+05,
-        5.156e+05, 2.083e+06, 7.823e+06, 4.040e+07, 1.069e+08,
+        36.3, 79.0, 204.7, 588.9, 1180.1, 2382.2, 4786.0, 10669.5, 42297.0, 85948.3, 2.986e+05, 4.265e+05,
+        1.849e+06, 2.579e+06, 5.531e+06, 3.066e+07, 9.600e+07,
     ],
     [
-        30.4, 65.6, 129.3, 296.9, 870.7, 2026.6, 4100.0, 8067.1, 17307.1, 31996.7, 67793.9, 1.385e+05,
-        2.820e+05, 4.738e+05, 3.572e+06, 5.090e+06, 1.688e+07,
+        34.4, 77.4, 183.9, 541.7, 1129.0, 2207.3, 4395.6, 8876.5, 21709.2, 88884.1, 1.071e+05, 2.067e+05,
+        7.318e+05, 8.472e+05, 2.573e+06, 3.049e+06, 1.503e+07,
     ],
     [
-        22.6, 44.9, 58.2, 95.9, 110.6, 112.4, 161.1, 161.1, 203.7, 203.7, 203.7, 203.7, 203.7, 203.7, 207.9,
-        207.9, 207.9,
+        25.2, 59.8, 85.3, 116.9, 158.8, 181.2, 206.9, 233.9, 253.4, 253.4, 253.4, 253.4, 253.4, 253.4, 253.4,
+        253.4, 253.4,
     ],
 ];
 
@@ -277,12 +277,12 @@ impl CostModel {
     /// Measures the model on this machine, for sizes 2^2 ..= 2^18, on generated polygons
     /// linked in boundary order and in shuffled arenas (as after a long edit history),
     /// half of the pairs intersecting and half disjoint. At each size the polygons are
-    /// drawn from a pool of about 2^17 vertices in all, so that large sizes are measured
+    /// drawn from a pool of about 2^18 vertices in all, so that large sizes are measured
     /// out of cache, as in a scene. Two passes over all sizes, seconds apart, each figure
     /// the best of five short rounds (large sizes: one cold run), and the better pass kept
     /// entry by entry, so a burst of other work on the machine spoils at most one pass;
     /// then each table is smoothed (median of three neighbours) and made non-decreasing
-    /// in the size. Takes five to ten seconds.
+    /// in the size. Takes about ten seconds.
     pub fn calibrate<K: Kernel>(kernel: K) -> CostModel {
         let mut rng = SmallRng::seed_from_u64(0xca1b);
         let mut tables = [[f64::INFINITY; COST_SIZES]; 7];
@@ -335,7 +335,7 @@ impl CostModel {
 /// sampled, linear on linked polygons (shuffled, ordered), Barba–Langerman and linear on
 /// arrays (per pair).
 fn measure_size<K: Kernel>(kernel: K, n: usize, rng: &mut SmallRng, ws: &mut QueryWorkspace) -> [f64; 7] {
-    let count = ((1usize << 16) / n).clamp(2, 64);
+    let count = ((1usize << 17) / n).clamp(2, 128);
     let arrays: Vec<(ConvexPolygon, ConvexPolygon)> = (0..count)
         .map(|j| {
             let relation = if j % 2 == 0 {
