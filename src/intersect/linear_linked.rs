@@ -6,7 +6,8 @@
 //! calipers); the first edge with that vertex strictly outside separates the polygons.
 //! Then the same with the roles swapped. The pointer's start, the deepest vertex for
 //! the first edge, is a scan of Q's arena in storage order (a maximum needs no
-//! boundary order), so only the walks follow links. See [`Linear`](super::Linear) for
+//! boundary order), so only the walks follow links, and an arena still in boundary order
+//! (built in order, never relinked) is walked by position arithmetic instead. See [`Linear`](super::Linear) for
 //! why this decides intersection.
 //!
 //! # Complexity
@@ -82,13 +83,22 @@ fn has_separating_edge<K: Kernel, P: Probe>(
             (j, bj) = (i, bi);
         }
     }
+    // Arenas in boundary order are walked by position arithmetic (no dependent loads).
+    let (a_ordered, b_ordered) = (a.in_boundary_order(), b.in_boundary_order());
+    let succ = |ordered: bool, p: &LinkedPolygon, i: usize, len: usize| {
+        if ordered {
+            if i + 1 == len { 0 } else { i + 1 }
+        } else {
+            p.next_at(i)
+        }
+    };
     let (mut pos, mut s) = (0, s0);
     for _ in 0..n {
-        let next = a.next_at(pos);
+        let next = succ(a_ordered, a, pos, n);
         let t = a.point_at(next);
         let mut steps = 0;
         while steps < m {
-            let jn = b.next_at(j);
+            let jn = succ(b_ordered, b, j, m);
             let bn = b.point_at(jn);
             if k.cross(s, t, bj, bn) != Orientation::Ccw {
                 break;
@@ -127,18 +137,23 @@ mod tests {
                     for _ in 0..6 {
                         let (p, q) = generate::pair(family, n, relation, &mut rng);
                         let want = Linear.intersects(&p, &q);
+                        // Shuffled arenas (walked along the links), arenas in boundary
+                        // order (walked by position), and one of each.
                         let lp = LinkedPolygon::from_convex_shuffled(&p, &mut rng);
                         let lq = LinkedPolygon::from_convex_shuffled(&q, &mut rng);
-                        assert_eq!(
-                            LinearLinked.intersects(&lp, &lq),
-                            want,
-                            "{family:?} {relation:?} n {n}"
-                        );
-                        assert_eq!(
-                            LinearLinked.intersects(&lq, &lp),
-                            want,
-                            "{family:?} {relation:?} n {n}"
-                        );
+                        let (op, oq) = (LinkedPolygon::from_convex(&p), LinkedPolygon::from_convex(&q));
+                        for (x, y) in [(&lp, &lq), (&op, &oq), (&lp, &oq), (&op, &lq)] {
+                            assert_eq!(
+                                LinearLinked.intersects(x, y),
+                                want,
+                                "{family:?} {relation:?} n {n}"
+                            );
+                            assert_eq!(
+                                LinearLinked.intersects(y, x),
+                                want,
+                                "{family:?} {relation:?} n {n}"
+                            );
+                        }
                         // The fast kernel terminates (its answer may differ near ties).
                         let _ = LinearLinked.intersects_with(Fast, &lp, &lq);
                         let _ = LinearLinked.intersects_with(Exact, &lp, &lq);

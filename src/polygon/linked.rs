@@ -500,6 +500,21 @@ impl LinkedPolygon {
         (3.0 * self.relinks as f64 / self.len() as f64).min(1.0)
     }
 
+    /// True when position i's successor is position i + 1 (and the last position's is 0):
+    /// walks may then read positions in order instead of following the links. O(1) for
+    /// an arena built in order and only moved or translated since, else O(n) at worst
+    /// (it stops at the first link out of order).
+    pub(crate) fn in_boundary_order(&self) -> bool {
+        if self.relinks == 0 {
+            return true;
+        }
+        let n = self.nodes.len();
+        self.nodes
+            .iter()
+            .enumerate()
+            .all(|(i, node)| node.next as usize == if i + 1 == n { 0 } else { i + 1 })
+    }
+
     /// Vertices the arena can hold without reallocating (nodes and handle slots, the
     /// smaller of the two): with dense storage it tracks the largest size the polygon
     /// has had, never the number of edits.
@@ -565,9 +580,13 @@ impl LinkedPolygon {
         }
     }
 
-    /// The polygon as a sorted array, starting at [`first`](Self::first). O(n): one walk
-    /// along the links (no handle lookups).
+    /// The polygon as a sorted array, starting at [`first`](Self::first). O(n): a copy
+    /// in storage order when the arena is in boundary order (built in order and never
+    /// relinked since: no dependent loads), else one walk along the links.
     pub fn to_convex(&self) -> ConvexPolygon {
+        if self.in_boundary_order() {
+            return ConvexPolygon::from_ccw_unchecked(self.nodes.iter().map(|node| node.point).collect());
+        }
         let mut pos = 0;
         let walk = (0..self.len()).map(|_| {
             let node = &self.nodes[pos];
@@ -643,6 +662,9 @@ impl LinkedPolygon {
         }
         if pos != 0 {
             return Err("the boundary walk does not close".into());
+        }
+        if self.relinks == 0 && (0..n).any(|i| self.next_at(i) != (i + 1) % n) {
+            return Err("no relinks recorded, but the arena is not in boundary order".into());
         }
         self.to_convex().debug_validate()
     }
