@@ -40,8 +40,9 @@ fn random_edit(
 ) -> Result<(), SceneError> {
     let poly = scene.polygon(id)?;
     let v: VertexId = poly.random_vertex(rng);
-    let a = poly.point(v)?;
-    let b = poly.point(poly.next(v)?)?;
+    let edit = |e| SceneError::Edit(id, e);
+    let a = poly.point(v).map_err(edit)?;
+    let b = poly.point(poly.next(v).map_err(edit)?).map_err(edit)?;
     let c = poly.to_convex();
     let (cx, cy) = centroid(&c);
     match rng.random_range(0..4) {
@@ -102,22 +103,22 @@ fn handles_go_stale_and_failed_operations_change_nothing() {
     ));
     assert_eq!(scene.len(), 2);
     scene.remove(a).unwrap();
-    assert_eq!(scene.remove(a).unwrap_err(), SceneError::StalePolygon);
-    assert_eq!(scene.intersects(a, b), Err(SceneError::StalePolygon));
+    assert_eq!(scene.remove(a).unwrap_err(), SceneError::StalePolygon(a));
+    assert_eq!(scene.intersects(a, b), Err(SceneError::StalePolygon(a)));
     // The freed slot is reused; the old handle still refuses.
     let c = scene.insert_points([[0., 0.], [1., 0.], [0., 1.]]).unwrap();
     assert_ne!(a, c);
-    assert_eq!(scene.polygon(a).unwrap_err(), SceneError::StalePolygon);
+    assert_eq!(scene.polygon(a).unwrap_err(), SceneError::StalePolygon(a));
     let first = scene.polygon(c).unwrap().first();
     let before = scene.polygon(c).unwrap().to_convex();
     let err = scene.move_vertex(c, first, Point::new(0.5, 0.5)).unwrap_err();
     assert!(matches!(
         err,
-        SceneError::Edit(EditError::WouldBreakConvexity { .. })
+        SceneError::Edit(id, EditError::WouldBreakConvexity { .. }) if id == c
     ));
     assert_eq!(
         scene.remove_vertex(c, first).unwrap_err(),
-        SceneError::Edit(EditError::TooFewVertices)
+        SceneError::Edit(c, EditError::TooFewVertices)
     );
     assert_eq!(scene.polygon(c).unwrap().to_convex(), before);
     assert_eq!(scene.version(c), Ok(0));

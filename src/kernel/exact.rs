@@ -67,7 +67,7 @@ impl Kernel for Exact {
     }
 
     /// A static filter for `D·A + N·B`, each factor a cross product of differences,
-    /// then the interval filter and the exact fallback (see [`line_meet_filtered`]).
+    /// then the interval filter and the exact fallback (see `line_meet_filtered`).
     #[inline]
     fn line_meet_sign(self, pts: [Point; 6]) -> Sign {
         line_meet_filtered(pts).unwrap_or_else(|| self.sign(&LineMeetSidePoly(pts)))

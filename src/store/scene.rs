@@ -13,38 +13,68 @@ use std::fmt;
 
 /// A handle to a polygon in a [`Scene`]. Carries a generation: after the polygon is
 /// removed, every use is [`SceneError::StalePolygon`], even if its slot is reused.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
+///
+/// Serialises (serde) as `{"key": k, "generation": g}` and reads back the same,
+/// so a handle can be stored and used again with the same scene. Displays as
+/// `#k (generation g)`, the form error messages use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize, serde::Deserialize)]
 pub struct PolygonId {
     key: u32,
     generation: u64,
 }
 
+impl fmt::Display for PolygonId {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "#{} (generation {})", self.key, self.generation)
+    }
+}
+
 /// Why a scene operation failed. A failed operation changes nothing.
+///
+/// Messages name the polygon where there is one (`polygon #3 (generation 5): ...`).
+/// [`Error::source`](std::error::Error::source) returns the underlying [`EditError`] or
+/// [`PolygonError`]; its text is also part of this error's message, so a reporter that
+/// prints the whole chain shows it twice.
 #[derive(Clone, Debug, PartialEq)]
 pub enum SceneError {
     /// The polygon handle is stale (the polygon was removed).
-    StalePolygon,
-    /// A vertex edit was refused.
-    Edit(EditError),
+    StalePolygon(PolygonId),
+    /// A vertex edit of this polygon was refused.
+    Edit(PolygonId, EditError),
     /// A polygon to insert is invalid.
     Polygon(PolygonError),
+}
+
+impl SceneError {
+    /// The polygon the error is about, when there is one (none for an invalid polygon
+    /// that was never inserted).
+    pub fn polygon(&self) -> Option<PolygonId> {
+        match self {
+            SceneError::StalePolygon(id) | SceneError::Edit(id, _) => Some(*id),
+            SceneError::Polygon(_) => None,
+        }
+    }
 }
 
 impl fmt::Display for SceneError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            SceneError::StalePolygon => write!(f, "the polygon handle is stale (the polygon was removed)"),
-            SceneError::Edit(e) => write!(f, "{e}"),
-            SceneError::Polygon(e) => write!(f, "{e}"),
+            SceneError::StalePolygon(id) => {
+                write!(f, "polygon {id} is stale (the polygon was removed)")
+            }
+            SceneError::Edit(id, e) => write!(f, "polygon {id}: {e}"),
+            SceneError::Polygon(e) => write!(f, "invalid polygon: {e}"),
         }
     }
 }
 
-impl std::error::Error for SceneError {}
-
-impl From<EditError> for SceneError {
-    fn from(e: EditError) -> Self {
-        SceneError::Edit(e)
+impl std::error::Error for SceneError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            SceneError::StalePolygon(_) => None,
+            SceneError::Edit(_, e) => Some(e),
+            SceneError::Polygon(e) => Some(e),
+        }
     }
 }
 
@@ -285,7 +315,7 @@ impl<K: Kernel> Scene<K> {
     fn key(&self, id: PolygonId) -> Result<usize, SceneError> {
         match self.entries.get(id.key as usize) {
             Some(e) if e.generation == id.generation => Ok(id.key as usize),
-            _ => Err(SceneError::StalePolygon),
+            _ => Err(SceneError::StalePolygon(id)),
         }
     }
 
@@ -326,7 +356,10 @@ impl<K: Kernel> Scene<K> {
     ) -> Result<VertexId, SceneError> {
         let key = self.key(id)?;
         let e = &mut self.entries[key];
-        let v = e.polygon.insert_after(after, p)?;
+        let v = e
+            .polygon
+            .insert_after(after, p)
+            .map_err(|err| SceneError::Edit(id, err))?;
         e.edited(&mut self.stats);
         self.grow_box(key, p);
         Ok(v)
@@ -336,7 +369,7 @@ impl<K: Kernel> Scene<K> {
     pub fn remove_vertex(&mut self, id: PolygonId, v: VertexId) -> Result<Point, SceneError> {
         let key = self.key(id)?;
         let e = &mut self.entries[key];
-        let old = e.polygon.remove(v)?;
+        let old = e.polygon.remove(v).map_err(|err| SceneError::Edit(id, err))?;
         e.edited(&mut self.stats);
         if e.bbox.touches_boundary(old) {
             e.bbox_tight = false;
@@ -348,7 +381,10 @@ impl<K: Kernel> Scene<K> {
     pub fn move_vertex(&mut self, id: PolygonId, v: VertexId, p: Point) -> Result<Point, SceneError> {
         let key = self.key(id)?;
         let e = &mut self.entries[key];
-        let old = e.polygon.move_vertex(v, p)?;
+        let old = e
+            .polygon
+            .move_vertex(v, p)
+            .map_err(|err| SceneError::Edit(id, err))?;
         e.edited(&mut self.stats);
         if e.bbox.touches_boundary(old) {
             e.bbox_tight = false;
@@ -382,7 +418,9 @@ impl<K: Kernel> Scene<K> {
     pub fn translate(&mut self, id: PolygonId, dx: f64, dy: f64) -> Result<(), SceneError> {
         let key = self.key(id)?;
         let e = &mut self.entries[key];
-        e.polygon.translate(dx, dy)?;
+        e.polygon
+            .translate(dx, dy)
+            .map_err(|err| SceneError::Edit(id, err))?;
         e.version += 1;
         if let Some(s) = &mut e.snapshot {
             s.translate_unchecked(dx, dy);
