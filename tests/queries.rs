@@ -775,3 +775,97 @@ fn sampled_queries_do_sublinear_work() {
         );
     }
 }
+
+// ---------- containment in simple polygons ----------
+
+/// The winding number of the closed chain `v` around x by quadrant counting (exact:
+/// comparisons and `orient`), an independent reference for the crossing count; 0 when x
+/// lies on the boundary is not needed (boundary points are tested apart).
+fn winding(v: &[Point], x: Point) -> i64 {
+    let quadrant = |p: Point| match (p.x > x.x, p.y > x.y) {
+        (true, false) if p.y == x.y => 0,
+        (true, false) => 3,
+        (true, true) => 0,
+        (false, true) => 1,
+        (false, false) if p.x == x.x => 3,
+        (false, false) => 2,
+    };
+    let mut total = 0i64;
+    for i in 0..v.len() {
+        let (a, b) = (v[i], v[(i + 1) % v.len()]);
+        let (qa, qb) = (quadrant(a), quadrant(b));
+        let mut d = (qb - qa + 4) % 4;
+        if d == 3 {
+            d = -1;
+        } else if d == 2 {
+            // Opposite quadrants: the side of x decides the way round.
+            d = if Exact.orient(a, b, x) == Orientation::Ccw {
+                2
+            } else {
+                -2
+            };
+        }
+        total += d;
+    }
+    total / 4
+}
+
+fn contains_simple_brute(p: &SimplePolygon, x: Point) -> bool {
+    let v = p.vertices();
+    (0..v.len()).any(|i| polysect::kernel::point_on_segment(Exact, v[i], v[(i + 1) % v.len()], x))
+        || winding(v, x) != 0
+}
+
+#[test]
+fn simple_polygon_containment_equals_the_winding_number() {
+    let mut rng = SmallRng::seed_from_u64(SEED + 10);
+    let mut inside = 0;
+    for _ in 0..rounds() {
+        for method in [SimpleMethod::SpacePartition, SimpleMethod::Star] {
+            for dist in [
+                PointDistribution::Uniform { min: 0.0, max: 100.0 },
+                PointDistribution::Grid { size: 12 },
+            ] {
+                for n in [3, 6, 20, 100] {
+                    let p = random_simple_polygon(method, dist, n, &mut rng).unwrap();
+                    let mut points: Vec<Point> = Vec::new();
+                    for &v in p.vertices() {
+                        points.extend([
+                            v,
+                            Point::new(v.x.next_up(), v.y),
+                            Point::new(v.x, v.y.next_down()),
+                        ]);
+                    }
+                    for i in 0..p.len() {
+                        let (a, b) = p.edge(i);
+                        points.push(Point::new(a.x / 2.0 + b.x / 2.0, a.y / 2.0 + b.y / 2.0));
+                    }
+                    for _ in 0..200 {
+                        // Grid and half-grid points hit vertices, edges and vertex heights.
+                        let (gx, gy) = (rng.random_range(-2..30), rng.random_range(-2..30));
+                        points.push(Point::new(gx as f64 / 2.0, gy as f64 / 2.0));
+                        points.push(Point::new(
+                            rng.random_range(-5.0..105.0),
+                            rng.random_range(-5.0..105.0),
+                        ));
+                    }
+                    for q in [p.clone(), p.reversed()] {
+                        for &x in &points {
+                            let want = contains_simple_brute(&q, x);
+                            inside += usize::from(want);
+                            assert_eq!(q.contains_point(x), want, "{x:?} in {:?}", q.vertices());
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(inside > 1000, "{inside} points inside");
+    // Convex simple polygons agree with the convex query.
+    for (what, c) in family_polygons(&mut rng) {
+        let s = SimplePolygon::new(c.vertices().iter().copied()).unwrap();
+        for x in probe_points(&c, &mut rng) {
+            assert_eq!(s.contains_point(x), c.contains_point(x), "{what} {x:?}");
+        }
+    }
+}

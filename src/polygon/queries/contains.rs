@@ -14,6 +14,13 @@
 //!   it lies on the segment a–v, that is (v − x)·(v − a) ≥ 0;
 //! * otherwise x is inside iff it is not strictly right of the edge v→w.
 //!
+//! # On a simple polygon
+//! [`SimplePolygon::contains_point`] counts crossings, O(n): a point on an edge is
+//! inside; otherwise the edges that straddle the horizontal line through x (half-open:
+//! one endpoint strictly above, the other not) are counted when they pass to the right of
+//! x, which is the side of x relative to the edge (`orient`, read by the edge's
+//! direction). An odd count is inside. No intersection point is constructed.
+//!
 //! # On a linked polygon
 //! There is nothing to binary-search, so the query samples (module docs of
 //! [`queries`](super)): of r = ⌈√n⌉ random vertices, it keeps the one not strictly
@@ -40,8 +47,8 @@
 //! rounding distance of the boundary may be misjudged.
 
 use super::{fresh_rng, sample_count};
-use crate::kernel::{Exact, Kernel, Orientation, Point, Sign};
-use crate::polygon::{ConvexPolygon, LinkedPolygon};
+use crate::kernel::{Exact, Kernel, Orientation, Point, Sign, point_on_segment};
+use crate::polygon::{ConvexPolygon, LinkedPolygon, SimplePolygon};
 use rand::Rng;
 
 /// The answer once the exit edge v→w of the ray a→x is known (module docs).
@@ -229,5 +236,66 @@ impl LinkedPolygon {
             self.point_at(self.next_at(best)),
             x,
         )
+    }
+}
+
+impl SimplePolygon {
+    /// Whether `point` lies in the polygon (the region its boundary encloses), boundary
+    /// included, decided exactly by counting crossings.
+    ///
+    /// # Complexity
+    /// O(n) for n vertices: one `orient` per edge (two for the edges that straddle the
+    /// point's height). No allocation.
+    ///
+    /// # Degeneracies
+    /// A closed set: vertices and points on edges are inside. Horizontal edges, vertices
+    /// at the point's height and collinear runs are handled by the half-open rule (an
+    /// edge counts when exactly one endpoint lies strictly above the point). A NaN or
+    /// infinite point is not inside.
+    ///
+    /// # Precision
+    /// Exact ([`Exact`] kernel): only `orient` and coordinate comparisons.
+    ///
+    /// ```
+    /// use polysect::SimplePolygon;
+    /// // An L shape: the notch (1.5, 1.5) is outside, the inner corner (1, 1) on the boundary.
+    /// let l = SimplePolygon::new([[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0], [1.0, 2.0], [0.0, 2.0]])?;
+    /// assert!(l.contains_point([0.5, 1.5]));
+    /// assert!(l.contains_point([1.0, 1.0]));
+    /// assert!(!l.contains_point([1.5, 1.5]));
+    /// # Ok::<(), polysect::SimplePolygonError>(())
+    /// ```
+    pub fn contains_point(&self, point: impl Into<Point>) -> bool {
+        self.contains_point_with(Exact, point)
+    }
+
+    /// [`contains_point`](Self::contains_point) with the predicates of `kernel`.
+    ///
+    /// ```
+    /// use polysect::{Fast, SimplePolygon};
+    /// let t = SimplePolygon::new([[0.0, 0.0], [0.0, 4.0], [4.0, 0.0]])?; // clockwise
+    /// assert!(t.contains_point_with(Fast, [1.0, 1.0]));
+    /// # Ok::<(), polysect::SimplePolygonError>(())
+    /// ```
+    pub fn contains_point_with<K: Kernel>(&self, kernel: K, point: impl Into<Point>) -> bool {
+        let x = point.into();
+        if !x.is_finite() {
+            return false;
+        }
+        let mut inside = false;
+        for i in 0..self.len() {
+            let (a, b) = self.edge(i);
+            if point_on_segment(kernel, a, b, x) {
+                return true;
+            }
+            if (a.y > x.y) != (b.y > x.y) {
+                // Not on the edge, so not on its line at this height: a strict side.
+                let left = kernel.orient(a, b, x) == Orientation::Ccw;
+                if (b.y > a.y) == left {
+                    inside = !inside;
+                }
+            }
+        }
+        inside
     }
 }

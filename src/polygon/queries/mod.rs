@@ -4,7 +4,7 @@
 //!
 //! | query | [`ConvexPolygon`](crate::ConvexPolygon) | [`LinkedPolygon`](crate::LinkedPolygon) | [`SimplePolygon`](crate::SimplePolygon) | precision |
 //! |---|---|---|---|---|
-//! | point containment (closed) | `contains_point`: O(log n) | `contains_point`: expected O(√n) | | exact (a predicate) |
+//! | point containment (closed) | `contains_point`: O(log n) | `contains_point`: expected O(√n) | `contains_point`: O(n) | exact (a predicate) |
 //! | extreme vertex in a direction | `extreme_vertex`: O(log n) | `extreme_vertex`: expected O(√n) | | exact (a predicate) |
 //! | area, centroid | `area`, `centroid`: O(n) | `area`, `centroid`: O(n) | `area`, `signed_area`, `centroid`: O(n) | constructed: compensated sums |
 //!
