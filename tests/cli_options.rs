@@ -368,4 +368,14 @@ fn render_writes_svg_only() {
     );
     assert_eq!(code, 0);
     assert!(out.starts_with("<svg") && out.trim_end().ends_with("</svg>"));
+    // A name without an extension (a device, a pipe) and .SVG are fine.
+    for name in ["/dev/null", "-"] {
+        let (code, _, err) = run(&["render", "--out", name], b"");
+        assert_eq!(code, 0, "{name}: {err}");
+    }
+    let upper = temp("PAIRS.SVG");
+    let (code, _, err) = run(&["render", "--out", upper.to_str().unwrap()], b"");
+    assert_eq!(code, 0, "{err}");
+    assert!(std::fs::read_to_string(&upper).unwrap().starts_with("<svg"));
+    let _ = std::fs::remove_file(&upper);
 }

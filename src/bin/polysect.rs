@@ -163,8 +163,10 @@ enum Command {
         /// Seed (any unsigned 64-bit integer) of the scene and the workloads.
         #[arg(long, default_value_t = 7)]
         seed: u64,
-        /// Where to write the SVG picture of the scene (a .svg file; the demo writes SVG
-        /// only, convert it with e.g. `rsvg-convert scene.svg -o scene.png`).
+        /// Where to write the SVG picture of the scene: a .svg file, or a name without an
+        /// extension such as /dev/null (the demo writes SVG only; a name ending in
+        /// another extension is refused; convert with e.g. `rsvg-convert scene.svg -o
+        /// scene.png`).
         #[arg(long, default_value = "polysect-demo.svg")]
         svg: String,
     },
@@ -174,8 +176,9 @@ enum Command {
     Render {
         /// Input file (JSON Lines); standard input when absent or "-".
         file: Option<String>,
-        /// Output file: a .svg file, or "-" for standard output (render writes SVG only;
-        /// convert it with e.g. `rsvg-convert pairs.svg -o pairs.png`).
+        /// Output file: a .svg file, a name without an extension, or "-" for standard
+        /// output (render writes SVG only; a name ending in another extension is
+        /// refused; convert with e.g. `rsvg-convert pairs.svg -o pairs.png`).
         #[arg(long, default_value = "polysect-pairs.svg")]
         out: String,
         /// At most this many pairs are drawn, 1 to 10000 (a warning says when the input
@@ -550,12 +553,14 @@ fn list() -> io::Result<()> {
     out.flush()
 }
 
-/// Checks that `path` names an SVG output ("-": standard output), before any work.
+/// Checks, before any work, that `path` may receive SVG text: "-" (standard output), a
+/// name ending in .svg, or one without an extension (`/dev/null`, `/dev/stdout`). A name
+/// ending in another extension (`x.png`) would get SVG text under a false name.
 fn svg_output(command: &'static str, option: &str, path: &str) -> Result<(), Failure> {
     let is_svg = path == "-"
         || std::path::Path::new(path)
             .extension()
-            .is_some_and(|e| e.eq_ignore_ascii_case("svg"));
+            .is_none_or(|e| e.eq_ignore_ascii_case("svg"));
     if is_svg {
         return Ok(());
     }
