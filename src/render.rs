@@ -522,6 +522,63 @@ mod tests {
         assert!(!out.contains("NaN") && !out.contains("inf"), "{out}");
     }
 
+    /// Simple pairs are marked where the boundaries meet, exactly as the all-pairs
+    /// reference finds them; q is red exactly when the regions meet.
+    #[test]
+    fn crossing_marks_equal_the_brute_force() {
+        use crate::crossings::Brute;
+        use crate::generate::simple::{PointDistribution, SimpleMethod, random_simple_polygon};
+        use rand::SeedableRng;
+        use rand::rngs::SmallRng;
+        let mut rng = SmallRng::seed_from_u64(23);
+        let (mut marked, mut apart) = (0, 0);
+        for round in 0..300 {
+            let method = [SimpleMethod::SpacePartition, SimpleMethod::Star][round % 2];
+            let dist = [
+                PointDistribution::Uniform { min: 0.0, max: 100.0 },
+                PointDistribution::Grid { size: 8 },
+            ][round / 2 % 2];
+            let n = [3, 5, 12, 40][round / 4 % 4];
+            let p = random_simple_polygon(method, dist, n, &mut rng).unwrap();
+            let q = random_simple_polygon(method, dist, 3 + round % 9, &mut rng).unwrap();
+            for mode in [RenderMode::Auto, RenderMode::Crossings] {
+                let panel = pair_panel(1, p.vertices().to_vec(), q.vertices().to_vec(), mode);
+                let convex = ConvexPolygon::new(p.vertices().iter().copied()).is_ok()
+                    && ConvexPolygon::new(q.vertices().iter().copied()).is_ok();
+                let want = Brute.crossings(&p, &q);
+                let hit = panel.polygons[1].1 == Style::Highlight;
+                if mode == RenderMode::Crossings || !convex {
+                    assert_eq!(panel.marks, want, "{:?} {:?}", p.vertices(), q.vertices());
+                    marked += usize::from(!want.is_empty());
+                }
+                if want.is_empty() {
+                    apart += 1;
+                    // Apart boundaries: the regions meet iff one holds the other's vertex.
+                    let inside = |a: &SimplePolygon, b: &SimplePolygon| {
+                        b.vertices().iter().all(|&v| a.contains_point(v))
+                    };
+                    assert_eq!(
+                        hit,
+                        inside(&p, &q) || inside(&q, &p),
+                        "{:?} {:?}",
+                        p.vertices(),
+                        q.vertices()
+                    );
+                } else {
+                    assert!(hit);
+                }
+            }
+        }
+        assert!(marked > 100 && apart > 20, "{marked} marked, {apart} apart");
+        // A polygon against itself: every edge is shared, so every vertex is marked.
+        let p = SimplePolygon::new([[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [2.0, 1.0], [0.0, 4.0]]).unwrap();
+        let panel = pair_panel(1, p.vertices().to_vec(), p.vertices().to_vec(), RenderMode::Auto);
+        let mut corners = p.vertices().to_vec();
+        corners.sort_unstable_by(|a, b| a.lex_cmp(*b));
+        assert_eq!(panel.marks, corners);
+        assert_eq!(panel.polygons[1].1, Style::Highlight);
+    }
+
     #[test]
     fn wrap_keeps_lines_short_and_marks_cuts() {
         let text =
