@@ -35,6 +35,8 @@
 #![forbid(unsafe_code)]
 
 pub mod crossings;
+// The measurements behind `polysect bench`: the tool's, not an API to build on.
+#[doc(hidden)]
 pub mod experiments;
 #[doc(hidden)]
 pub mod fuzzing;

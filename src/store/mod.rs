@@ -54,6 +54,8 @@ mod broad;
 mod interop;
 mod planner;
 mod scene;
+// The demo's and the benches' workloads: the tool's, not an API to build on.
+#[doc(hidden)]
 pub mod workload;
 
 pub use broad::BoundingBox;
