@@ -66,9 +66,12 @@ pub enum Swatch {
 /// One framed picture: polygons, marked points, a caption, or an error message.
 #[derive(Clone, Debug, Default)]
 pub struct Panel {
+    /// The polygons, as vertex lists in order (either orientation), drawn in this order
+    /// so later ones lie on top.
     pub polygons: Vec<(Vec<Point>, Style)>,
     /// Points drawn as black dots on top (crossing points).
     pub marks: Vec<Point>,
+    /// Text below the panel, wrapped to two lines at most (cut with "…" beyond).
     pub caption: String,
     /// When set, the panel shows this message (wrapped) instead of polygons.
     pub error: Option<String>,
