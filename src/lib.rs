@@ -35,6 +35,8 @@
 #![forbid(unsafe_code)]
 
 pub mod crossings;
+// The measurements behind `polysect bench`: the tool's, not an API to build on.
+#[doc(hidden)]
 pub mod experiments;
 #[doc(hidden)]
 pub mod fuzzing;
@@ -54,6 +56,13 @@ pub mod store;
 pub struct ReadmeDoctests;
 
 pub use kernel::{Exact, Fast, Kernel, Orientation, Point, Precision, Sign};
+
+/// The `rand` crate (0.9) whose types appear in this crate's signatures: sampled
+/// queries take any `R: rand::Rng`, and [`LinkedPolygon::from_convex_shuffled`] a
+/// generator to shuffle with. Use this re-export (`polysect::rand::SeedableRng`,
+/// `polysect::rand::rngs::SmallRng`) to get the same version without naming it in
+/// your own `Cargo.toml`.
+pub use rand;
 
 pub use polygon::{ConvexPolygon, EditError, LinkedPolygon, PolygonError, VertexId};
 pub use polygon::{SimplePolygon, SimplePolygonError};

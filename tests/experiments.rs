@@ -128,6 +128,51 @@ fn every_experiment_writes_csv_and_svg() {
 
     let (header, rows) = read_csv(&dir.join("clm_factor.csv"));
     assert_eq!(column(&header, &rows, "factor"), ["0.5", "1"]);
+
+    // Tables: every time cell carries its unit (the headers no longer promise ns).
+    assert!(!report.summary.contains("median ns"), "{}", report.summary);
+    let scaling = report
+        .summary
+        .split("## ")
+        .find(|section| section.starts_with("scaling"))
+        .expect("a scaling section");
+    let scaling_rows: Vec<&str> = scaling
+        .lines()
+        .filter(|l| l.starts_with("| linear") || l.starts_with("| barba"))
+        .collect();
+    assert!(!scaling_rows.is_empty());
+    for row in scaling_rows {
+        for cell in row.split('|').skip(2).filter(|c| !c.trim().is_empty()) {
+            for time in cell.split('/') {
+                let time = time.trim();
+                assert!(
+                    ["ns", "µs", "ms", "s"]
+                        .iter()
+                        .any(|u| time.ends_with(&format!(" {u}")))
+                        || time == "–",
+                    "{time:?} in {row}"
+                );
+            }
+        }
+    }
+    // Plots: axis labels name values, not field names; log ticks are round numbers.
+    let trade = fs::read_to_string(dir.join("trade.svg")).unwrap();
+    assert!(trade.contains("n = 16") && !trade.contains("trade_n"));
+    for svg in report.files.iter().filter(|f| f.ends_with(".svg")) {
+        let text = fs::read_to_string(dir.join(svg)).unwrap();
+        for label in text
+            .split("<text")
+            .skip(1)
+            .filter_map(|t| t.split_once('>')?.1.split('<').next())
+        {
+            let number = label.trim_end_matches(['k', 'M', 'G']);
+            if number.parse::<f64>().is_ok() {
+                let digits: String = number.chars().filter(char::is_ascii_digit).collect();
+                let significant = digits.trim_start_matches('0').trim_end_matches('0').len();
+                assert!(significant <= 3, "{svg}: tick label {label:?}");
+            }
+        }
+    }
     let _ = fs::remove_dir_all(&dir);
 }
 

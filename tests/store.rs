@@ -40,8 +40,9 @@ fn random_edit(
 ) -> Result<(), SceneError> {
     let poly = scene.polygon(id)?;
     let v: VertexId = poly.random_vertex(rng);
-    let a = poly.point(v)?;
-    let b = poly.point(poly.next(v)?)?;
+    let edit = |e| SceneError::Edit(id, e);
+    let a = poly.point(v).map_err(edit)?;
+    let b = poly.point(poly.next(v).map_err(edit)?).map_err(edit)?;
     let c = poly.to_convex();
     let (cx, cy) = centroid(&c);
     match rng.random_range(0..4) {
@@ -102,22 +103,22 @@ fn handles_go_stale_and_failed_operations_change_nothing() {
     ));
     assert_eq!(scene.len(), 2);
     scene.remove(a).unwrap();
-    assert_eq!(scene.remove(a).unwrap_err(), SceneError::StalePolygon);
-    assert_eq!(scene.intersects(a, b), Err(SceneError::StalePolygon));
+    assert_eq!(scene.remove(a).unwrap_err(), SceneError::StalePolygon(a));
+    assert_eq!(scene.intersects(a, b), Err(SceneError::StalePolygon(a)));
     // The freed slot is reused; the old handle still refuses.
     let c = scene.insert_points([[0., 0.], [1., 0.], [0., 1.]]).unwrap();
     assert_ne!(a, c);
-    assert_eq!(scene.polygon(a).unwrap_err(), SceneError::StalePolygon);
+    assert_eq!(scene.polygon(a).unwrap_err(), SceneError::StalePolygon(a));
     let first = scene.polygon(c).unwrap().first();
     let before = scene.polygon(c).unwrap().to_convex();
     let err = scene.move_vertex(c, first, Point::new(0.5, 0.5)).unwrap_err();
     assert!(matches!(
         err,
-        SceneError::Edit(EditError::WouldBreakConvexity { .. })
+        SceneError::Edit(id, EditError::WouldBreakConvexity { .. }) if id == c
     ));
     assert_eq!(
         scene.remove_vertex(c, first).unwrap_err(),
-        SceneError::Edit(EditError::TooFewVertices)
+        SceneError::Edit(c, EditError::TooFewVertices)
     );
     assert_eq!(scene.polygon(c).unwrap().to_convex(), before);
     assert_eq!(scene.version(c), Ok(0));
@@ -153,7 +154,7 @@ fn foreign_handles_are_refused_by_every_method() {
     };
     let before = snapshot(&scene);
     for foreign in [o1, c1] {
-        let e = Err(SceneError::ForeignPolygon);
+        let e = Err(SceneError::ForeignPolygon(foreign));
         assert_eq!(scene.polygon(foreign).map(|_| ()), e);
         assert_eq!(scene.bounding_box(foreign).map(|_| ()), e);
         assert_eq!(scene.version(foreign).map(|_| ()), e);
@@ -171,7 +172,7 @@ fn foreign_handles_are_refused_by_every_method() {
         assert_eq!(scene.intersecting(foreign).map(|_| ()), e);
         assert_eq!(
             scene.intersects_batch(&[(s1, s2), (s1, foreign)]),
-            vec![Ok(true), Err(SceneError::ForeignPolygon)]
+            vec![Ok(true), Err(SceneError::ForeignPolygon(foreign))]
         );
         assert_eq!(scene.remove(foreign).map(|_| ()), e);
     }
@@ -184,7 +185,7 @@ fn foreign_handles_are_refused_by_every_method() {
         vertex_of(&other, o1),
         vertex_of(&copy, c1),
     ] {
-        let e = Err(SceneError::Edit(EditError::ForeignHandle));
+        let e = Err(SceneError::Edit(s1, EditError::ForeignHandle));
         assert_eq!(scene.insert_vertex(s1, v, Point::new(2., -1.)).map(|_| ()), e);
         assert_eq!(scene.remove_vertex(s1, v).map(|_| ()), e);
         assert_eq!(scene.move_vertex(s1, v, Point::new(-1., -1.)).map(|_| ()), e);
@@ -192,7 +193,7 @@ fn foreign_handles_are_refused_by_every_method() {
     }
     assert_eq!(snapshot(&scene), before, "refused calls change nothing");
     // The clone refuses the original's handles too; its own work.
-    assert_eq!(copy.polygon(s1).map(|_| ()), Err(SceneError::ForeignPolygon));
+    assert_eq!(copy.polygon(s1).map(|_| ()), Err(SceneError::ForeignPolygon(s1)));
     // A polygon's own vertex handles keep working through the scene and after removal.
     let mut poly = LinkedPolygon::from_points(square).unwrap();
     let mine = poly.first();
@@ -421,7 +422,10 @@ fn parallel_batches_equal_sequential_queries_for_any_thread_count() {
         .iter()
         .map(|&(a, b)| sequential_scene.intersects(a, b))
         .collect();
-    assert_eq!(sequential.last(), Some(&Err(SceneError::StalePolygon)));
+    assert!(matches!(
+        sequential.last(),
+        Some(Err(SceneError::StalePolygon(_)))
+    ));
     let mut plan = None;
     for threads in [1, 2, 3] {
         let pool = rayon::ThreadPoolBuilder::new()
@@ -431,7 +435,11 @@ fn parallel_batches_equal_sequential_queries_for_any_thread_count() {
         let (mut scene, ids) = build();
         let pairs = handles(&ids);
         let batch = pool.install(|| scene.intersects_batch(&pairs));
-        assert_eq!(batch, sequential, "{threads} threads");
+        // Errors name handles of their own scene: compare them as messages.
+        let message = |r: &Vec<Result<bool, SceneError>>| -> Vec<Result<bool, String>> {
+            r.iter().map(|a| a.clone().map_err(|e| e.to_string())).collect()
+        };
+        assert_eq!(message(&batch), message(&sequential), "{threads} threads");
         // The batch is planned as a whole (it may convert where sequential queries
         // would not), but the plan never depends on the thread count.
         let stats = scene.stats();

@@ -26,7 +26,9 @@ mod demo;
     long_about = "Dynamic convex polygons with sublinear intersection queries.\n\n\
         Exit codes: 0 when every input line was answered (error lines included) or the \
         reader closed the output pipe early; 1 when input or output failed (a file that \
-        cannot be read, an unwritable output); 2 for a usage error."
+        cannot be read, an unwritable output); 2 for a usage error (an unknown name, a \
+        value out of range, options that do not fit together); 3 when `check \
+        --verify-expected` found an answer that disagrees with its line's \"expected\"."
 )]
 struct Cli {
     #[command(subcommand)]
@@ -35,65 +37,90 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Answer "do P and Q intersect?" for JSON Lines pairs {"p": [[x,y],...], "q": [...]}.
+    /// Answer "do P and Q intersect?" for JSON Lines pairs {"p": [[x,y],...], "q": [...]}
+    /// (closed polygons: touching counts).
     Check {
-        /// Input file (JSON Lines); standard input when absent.
+        /// Input file (JSON Lines); standard input when absent or "-".
         file: Option<String>,
-        /// Algorithm: auto, or one of the names `polysect list` prints.
+        /// Algorithm: auto (= barba), linear, barba, dobkin, chazelle-dobkin, clm or convert.
         #[arg(long, default_value = "auto", value_parser = parse_algorithm)]
         algorithm: AlgorithmArg,
+        /// Kernel of the predicates: exact (exact for every finite input) or fast
+        /// (plain f64, may misjudge near-touching input).
         #[arg(long, default_value = "exact", value_parser = parse_precision)]
         precision: Precision,
-        /// Seed of the sampled tests (clm, convert); from the operating system when absent.
+        /// Seed (any unsigned 64-bit integer) of the sampled tests (clm, convert), for
+        /// reproducible runs; from the operating system when absent.
         #[arg(long)]
         seed: Option<u64>,
+        /// Compare each answer with the line's "expected" field (true or false, as
+        /// `polysect gen` writes it): replies get "agrees": true|false, a line without
+        /// "expected" is an error line, a summary goes to standard error, and the exit
+        /// code is 3 when an answer disagrees.
+        #[arg(long)]
+        verify_expected: bool,
     },
     /// Drive one scene of editable polygons with JSON Lines operations
     /// ({"op": "add"|"drop"|"insert"|"remove"|"move"|"translate"|"intersects"|"pairs"|"vertices", ...}),
     /// one reply line per input line.
     Scene {
-        /// Input file (JSON Lines); standard input when absent.
+        /// Input file (JSON Lines); standard input when absent or "-".
         file: Option<String>,
         /// How queries are answered: planner, sampled, convert or cached.
         #[arg(long, default_value = "planner", value_parser = parse_strategy)]
         strategy: Strategy,
-        /// Kernel of the queries (edits are always validated exactly).
+        /// Kernel of the queries: exact or fast (edits are always validated exactly).
         #[arg(long, default_value = "exact", value_parser = parse_precision)]
         precision: Precision,
-        /// Add a certificate to each `intersects` answer.
+        /// Add a certificate to each `intersects` answer (not offered by this build yet:
+        /// a usage error).
         #[arg(long)]
         certificate: bool,
-        /// Seed of the sampled test; from the operating system when absent.
+        /// Seed (any unsigned 64-bit integer) of the sampled test; from the operating
+        /// system when absent.
         #[arg(long)]
         seed: Option<u64>,
     },
     /// Report where the boundaries of simple polygons meet, for JSON Lines pairs
-    /// {"p": [[x,y],...], "q": [...]}: writes {"points": [[x,y],...]} per line.
+    /// {"p": [[x,y],...], "q": [...]}: writes {"points": [[x,y],...]} per line (a shared
+    /// edge gives its two endpoints).
+    ///
+    /// The points are the distinct points where the two boundaries meet: proper
+    /// crossings, touchings (a vertex on an edge, a shared vertex), and where edges
+    /// overlap along a line, the two endpoints of each overlap (a shared edge gives its
+    /// two endpoints, not the points between them).
     Crossings {
-        /// Input file (JSON Lines); standard input when absent.
+        /// Input file (JSON Lines); standard input when absent or "-".
         file: Option<String>,
         /// Algorithm: sweep (Žalik's sweep line) or brute (all edge pairs).
         #[arg(long, default_value = "sweep", value_parser = parse_crossing_algorithm)]
         algorithm: CrossingAlgorithm,
+        /// Kernel of the predicates: exact or fast.
         #[arg(long, default_value = "exact", value_parser = parse_precision)]
         precision: Precision,
     },
-    /// Write generated pairs as JSON Lines in the `check` input format.
+    /// Write generated pairs as JSON Lines in the `check` input format, each with
+    /// "expected": the exact reference's answer (`check --verify-expected` compares it).
     Gen {
-        /// Generator family.
+        /// Generator family: rotated, ellipse, non-uniform, shared-vertex,
+        /// vertex-on-edge, shared-edge, overlapping-edges, nested or one-ulp-gap.
         #[arg(long, default_value = "rotated", value_parser = parse_family)]
         family: Family,
-        /// Vertices per polygon (about; ellipse hulls may drop a few).
-        #[arg(long, default_value_t = 16)]
-        n: usize,
+        /// Vertices per polygon, 3 to 16777216 (about: ellipse hulls may drop a few,
+        /// lattice families round to what their lattice allows).
+        #[arg(long, default_value_t = 16, value_parser = clap::value_parser!(u64).range(3..=MAX_GEN_N))]
+        n: u64,
         /// Number of pairs.
         #[arg(long, default_value_t = 10)]
-        count: usize,
+        count: u64,
+        /// Which answer the pairs get: any (the family's random placement),
+        /// intersecting or disjoint.
         #[arg(long, value_enum, default_value_t = RelationArg::Any)]
         relation: RelationArg,
         /// Vertex order written: counter-clockwise, clockwise, or random per polygon.
         #[arg(long, value_enum, default_value_t = OrderArg::Ccw)]
         order: OrderArg,
+        /// Seed (any unsigned 64-bit integer): the same seed writes the same pairs.
         #[arg(long, default_value_t = 1)]
         seed: u64,
     },
@@ -107,10 +134,11 @@ enum Command {
         /// Fewer sizes and shorter loops (under a minute).
         #[arg(long)]
         quick: bool,
-        /// Output directory.
+        /// Output directory (created if missing).
         #[arg(long, default_value = "bench-out")]
         out: PathBuf,
-        /// Seed of the generated inputs.
+        /// Seed (any unsigned 64-bit integer) of the generated inputs; a fixed default
+        /// when absent.
         #[arg(long)]
         seed: Option<u64>,
         /// No progress bar.
@@ -120,33 +148,47 @@ enum Command {
     /// List the algorithms, precisions and generator families.
     List,
     /// Run a scene of editable polygons through mixed edit/query workloads under every
-    /// strategy, check every answer, and draw a small scene as SVG (the default command).
+    /// strategy, check every answer, and draw the scene as SVG (the default command).
     Demo {
-        /// Polygons in the scene.
-        #[arg(long, default_value_t = 48)]
-        polygons: usize,
-        /// Largest polygon size, as a power of two (sizes are log-uniform from 2^3).
-        #[arg(long, default_value_t = 18)]
+        /// Polygons in the scene, 1 to 4096.
+        #[arg(long, default_value_t = 48, value_parser = clap::value_parser!(u64).range(1..=4096))]
+        polygons: u64,
+        /// Largest polygon size, as a power of two, 3 to 24 (sizes are log-uniform
+        /// from 2^3 to 2^MAX_LOG2).
+        #[arg(long, default_value_t = 18, value_parser = clap::value_parser!(u32).range(3..=24))]
         max_log2: u32,
-        /// Operations per workload.
-        #[arg(long, default_value_t = 1000)]
-        steps: usize,
+        /// Operations per workload, 1 to 10000000.
+        #[arg(long, default_value_t = 1000, value_parser = clap::value_parser!(u64).range(1..=10_000_000))]
+        steps: u64,
+        /// Seed (any unsigned 64-bit integer) of the scene and the workloads.
         #[arg(long, default_value_t = 7)]
         seed: u64,
-        /// Where to write the SVG picture of a small scene.
+        /// Where to write the SVG picture of the scene: a .svg file, or a name without an
+        /// extension such as /dev/null (the demo writes SVG only; a name ending in
+        /// another extension is refused; convert with e.g. `rsvg-convert scene.svg -o
+        /// scene.png`).
         #[arg(long, default_value = "polysect-demo.svg")]
         svg: String,
     },
-    /// Draw JSON Lines pairs (the `check` input format) as SVG panels with their answers.
+    /// Draw JSON Lines pairs (the `check` input format) as SVG panels: convex pairs with
+    /// their answer (q red when it intersects p, teal when not), other simple pairs with
+    /// the points where their boundaries meet, invalid lines as error panels.
     Render {
-        /// Input file (JSON Lines); standard input when absent.
+        /// Input file (JSON Lines); standard input when absent or "-".
         file: Option<String>,
-        /// Output SVG file.
+        /// Output file: a .svg file, a name without an extension, or "-" for standard
+        /// output (render writes SVG only; a name ending in another extension is
+        /// refused; convert with e.g. `rsvg-convert pairs.svg -o pairs.png`).
         #[arg(long, default_value = "polysect-pairs.svg")]
         out: String,
-        /// At most this many pairs are drawn.
-        #[arg(long, default_value_t = 24)]
-        limit: usize,
+        /// At most this many pairs are drawn, 1 to 10000 (a warning says when the input
+        /// has more).
+        #[arg(long, default_value_t = 24, value_parser = clap::value_parser!(u64).range(1..=10_000))]
+        limit: u64,
+        /// Draw every pair as simple polygons with the points where their boundaries
+        /// meet, convex pairs too.
+        #[arg(long)]
+        crossings: bool,
     },
     /// Measure the planner's cost model (conversion vs sampling crossover) on this machine.
     Calibrate,
@@ -161,6 +203,9 @@ enum Command {
         bind: IpAddr,
     },
 }
+
+/// The largest `gen --n`: 2^24 vertices per polygon (about 1.5 GB while generating).
+const MAX_GEN_N: u64 = 1 << 24;
 
 #[derive(Clone, Copy)]
 enum AlgorithmArg {
@@ -236,14 +281,21 @@ fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(e) => return clap_exit(e),
     };
-    let result = match cli.command {
-        None => demo::run(48, 18, 1000, 7, "polysect-demo.svg"),
+    let result: Result<(), Failure> = match cli.command {
+        None => demo_command(48, 18, 1000, 7, "polysect-demo.svg"),
         Some(Command::Check {
             file,
             algorithm,
             precision,
             seed,
-        }) => check(file.as_deref(), algorithm.resolve(), precision, seed),
+            verify_expected,
+        }) => check(
+            file.as_deref(),
+            algorithm.resolve(),
+            precision,
+            seed,
+            verify_expected,
+        ),
         Some(Command::Scene {
             file,
             strategy,
@@ -256,23 +308,13 @@ fn main() -> ExitCode {
                 seed,
                 certificate,
             };
-            match scene(file.as_deref(), precision, options) {
-                Err(Failure::Usage(message)) => {
-                    let _ = writeln!(
-                        io::stderr(),
-                        "error: {message}\n\nFor more information, try 'polysect scene --help'."
-                    );
-                    return ExitCode::from(2);
-                }
-                Err(Failure::Io(e)) => Err(e),
-                Ok(()) => Ok(()),
-            }
+            scene(file.as_deref(), precision, options)
         }
         Some(Command::Crossings {
             file,
             algorithm,
             precision,
-        }) => crossings(file.as_deref(), algorithm, precision),
+        }) => crossings(file.as_deref(), algorithm, precision).map_err(Failure::Io),
         Some(Command::Gen {
             family,
             n,
@@ -280,33 +322,49 @@ fn main() -> ExitCode {
             relation,
             order,
             seed,
-        }) => gen_pairs(family, n, count, relation, order, seed),
+        }) => gen_pairs(family, n as usize, count, relation, order, seed).map_err(Failure::Io),
         Some(Command::Bench {
             experiments,
             quick,
             out,
             seed,
             no_progress,
-        }) => bench(&experiments, quick, out, seed, !no_progress),
-        Some(Command::List) => list(),
+        }) => bench(&experiments, quick, out, seed, !no_progress).map_err(Failure::Io),
+        Some(Command::List) => list().map_err(Failure::Io),
         Some(Command::Demo {
             polygons,
             max_log2,
             steps,
             seed,
             svg,
-        }) => demo::run(polygons, max_log2, steps, seed, &svg),
-        Some(Command::Render { file, out, limit }) => render(file.as_deref(), &out, limit),
-        Some(Command::Calibrate) => calibrate(),
-        Some(Command::Serve { port, bind }) => serve(bind, port),
+        }) => demo_command(polygons as usize, max_log2, steps as usize, seed, &svg),
+        Some(Command::Render {
+            file,
+            out,
+            limit,
+            crossings,
+        }) => render(file.as_deref(), &out, limit as usize, crossings),
+        Some(Command::Calibrate) => calibrate().map_err(Failure::Io),
+        Some(Command::Serve { port, bind }) => serve(bind, port).map_err(Failure::Io),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
         // The reader closed the pipe: it has what it wanted; stop quietly.
-        Err(e) if e.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
-        Err(e) => {
+        Err(Failure::Io(e)) if e.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+        Err(Failure::Io(e)) => {
             let _ = writeln!(io::stderr(), "polysect: {e}");
             ExitCode::from(1)
+        }
+        Err(Failure::Usage { command, message }) => {
+            let _ = writeln!(
+                io::stderr(),
+                "error: {message}\n\nFor more information, try 'polysect {command} --help'."
+            );
+            ExitCode::from(2)
+        }
+        Err(Failure::Disagreed(message)) => {
+            let _ = writeln!(io::stderr(), "polysect: {message}");
+            ExitCode::from(3)
         }
     }
 }
@@ -331,9 +389,21 @@ fn clap_exit(e: clap::Error) -> ExitCode {
     ExitCode::from(2)
 }
 
+/// Why a command failed, and so its exit code.
 enum Failure {
-    Usage(String),
+    /// Exit 2: a usage error found after parsing (options that do not fit together,
+    /// an output name render cannot write, a run that would not fit in memory).
+    Usage { command: &'static str, message: String },
+    /// Exit 1: input or output failed (0 when the reader closed the output pipe).
     Io(io::Error),
+    /// Exit 3: `check --verify-expected` found answers that disagree with "expected".
+    Disagreed(String),
+}
+
+impl From<io::Error> for Failure {
+    fn from(e: io::Error) -> Self {
+        Failure::Io(e)
+    }
 }
 
 fn open_input(file: Option<&str>) -> io::Result<Box<dyn Read>> {
@@ -374,14 +444,26 @@ fn check(
     algorithm: Algorithm,
     precision: Precision,
     seed: Option<u64>,
-) -> io::Result<()> {
+    verify_expected: bool,
+) -> Result<(), Failure> {
     let mut rng = match seed {
         Some(seed) => SmallRng::seed_from_u64(seed),
         None => SmallRng::from_rng(&mut rand::rng()),
     };
-    protocol::check::check(open_input(file)?, output(), |p, q| {
-        algorithm.run_rng(precision, p, q, &mut rng).0
-    })
+    let answer = |p: &ConvexPolygon, q: &ConvexPolygon| algorithm.run_rng(precision, p, q, &mut rng).0;
+    if !verify_expected {
+        return Ok(protocol::check::check(open_input(file)?, output(), answer)?);
+    }
+    let tally = protocol::check::check_expected(open_input(file)?, output(), answer)?;
+    let summary = format!(
+        "{} answer(s) compared with \"expected\", {} disagree; {} line(s) without an answer",
+        tally.compared, tally.disagreed, tally.errors
+    );
+    if tally.disagreed > 0 {
+        return Err(Failure::Disagreed(summary));
+    }
+    let _ = writeln!(io::stderr(), "polysect: {summary}");
+    Ok(())
 }
 
 fn scene(file: Option<&str>, precision: Precision, options: SceneOptions) -> Result<(), Failure> {
@@ -396,7 +478,10 @@ fn run_session<K: Kernel>(
     session: Result<SceneSession<K>, protocol::scene::OptionError>,
     file: Option<&str>,
 ) -> Result<(), Failure> {
-    let mut session = session.map_err(|e| Failure::Usage(e.to_string()))?;
+    let mut session = session.map_err(|e| Failure::Usage {
+        command: "scene",
+        message: e.to_string(),
+    })?;
     let input = open_input(file).map_err(Failure::Io)?;
     session.run(input, output()).map_err(Failure::Io)
 }
@@ -408,7 +493,7 @@ fn crossings(file: Option<&str>, algorithm: CrossingAlgorithm, precision: Precis
 fn gen_pairs(
     family: Family,
     n: usize,
-    count: usize,
+    count: u64,
     relation: RelationArg,
     order: OrderArg,
     seed: u64,
@@ -468,42 +553,74 @@ fn list() -> io::Result<()> {
     out.flush()
 }
 
-fn render(file: Option<&str>, out_path: &str, limit: usize) -> io::Result<()> {
-    use polysect::render::{Panel, Style, svg};
-    let mut panels = Vec::new();
-    protocol::check::for_each_pair(open_input(file)?, |line_no, pair| {
-        if panels.len() >= limit {
-            return false;
-        }
-        let panel = match pair {
-            Ok((p, q)) => {
-                let hit = Algorithm::Linear.intersects(Precision::Exact, &p, &q);
-                let style = if hit { Style::Highlight } else { Style::Other };
-                Panel {
-                    polygons: vec![(p.into_vertices(), Style::Plain), (q.into_vertices(), style)],
-                    caption: format!("line {line_no}: {}", if hit { "intersect" } else { "disjoint" }),
-                }
-            }
-            Err(message) => Panel {
-                polygons: vec![],
-                caption: format!(
-                    "line {line_no}: error: {}",
-                    message
-                        .split_once(": ")
-                        .map_or(message.as_str(), |(_, m)| m)
-                        .chars()
-                        .take(40)
-                        .collect::<String>()
-                ),
-            },
-        };
-        panels.push(panel);
-        panels.len() < limit
-    })?;
-    std::fs::write(out_path, svg(&panels, 4))
-        .map_err(|e| io::Error::new(e.kind(), format!("cannot write {out_path}: {e}")))?;
-    let _ = writeln!(io::stderr(), "wrote {} panel(s) to {out_path}", panels.len());
+/// Checks, before any work, that `path` may receive SVG text: "-" (standard output), a
+/// name ending in .svg, or one without an extension (`/dev/null`, `/dev/stdout`). A name
+/// ending in another extension (`x.png`) would get SVG text under a false name.
+fn svg_output(command: &'static str, option: &str, path: &str) -> Result<(), Failure> {
+    let is_svg = path == "-"
+        || std::path::Path::new(path)
+            .extension()
+            .is_none_or(|e| e.eq_ignore_ascii_case("svg"));
+    if is_svg {
+        return Ok(());
+    }
+    Err(Failure::Usage {
+        command,
+        message: format!(
+            "{option} {path}: polysect writes SVG only; name a .svg file (or - for standard output) \
+             and convert it, e.g. `rsvg-convert picture.svg -o picture.png`"
+        ),
+    })
+}
+
+fn write_svg(path: &str, svg: &str) -> io::Result<()> {
+    if path == "-" {
+        let mut out = io::stdout().lock();
+        out.write_all(svg.as_bytes())?;
+        return out.flush();
+    }
+    std::fs::write(path, svg).map_err(|e| io::Error::new(e.kind(), format!("cannot write {path}: {e}")))
+}
+
+fn render(file: Option<&str>, out_path: &str, limit: usize, crossings: bool) -> Result<(), Failure> {
+    use polysect::render::{RenderMode, render_pairs};
+    svg_output("render", "--out", out_path)?;
+    let mode = if crossings {
+        RenderMode::Crossings
+    } else {
+        RenderMode::Auto
+    };
+    let picture = render_pairs(open_input(file)?, mode, limit)?;
+    write_svg(out_path, &picture.svg)?;
+    let mut err = io::stderr().lock();
+    if picture.more {
+        let _ = writeln!(
+            err,
+            "polysect: render stopped at its limit of {limit} pairs; the rest of the input was not \
+             read (--limit N draws more)"
+        );
+    }
+    if out_path != "-" {
+        let _ = writeln!(err, "wrote {} panel(s) to {out_path}", picture.drawn);
+    }
     Ok(())
+}
+
+fn demo_command(polygons: usize, max_log2: u32, steps: usize, seed: u64, svg: &str) -> Result<(), Failure> {
+    svg_output("demo", "--svg", svg)?;
+    let need = demo::estimated_bytes(polygons, max_log2);
+    if need > demo::MEMORY_LIMIT {
+        return Err(Failure::Usage {
+            command: "demo",
+            message: format!(
+                "--polygons {polygons} --max-log2 {max_log2} would need about {:.1} GB (polygons of up to \
+                 2^{max_log2} vertices); the demo stops at {:.0} GB: lower either",
+                need as f64 / 1e9,
+                demo::MEMORY_LIMIT as f64 / 1e9
+            ),
+        });
+    }
+    Ok(demo::run(polygons, max_log2, steps, seed, svg)?)
 }
 
 /// Listens, prints the URL, and serves until SIGINT or SIGTERM (then exits with 0).
@@ -571,8 +688,8 @@ fn bench(
         experiments
     };
     let start = Instant::now();
-    let report = experiments::run(experiments, &config)
-        .map_err(|e| io::Error::new(e.kind(), format!("cannot write to {}: {e}", config.out.display())))?;
+    // Its errors name the file or directory that failed.
+    let report = experiments::run(experiments, &config)?;
     let mut out = io::stdout().lock();
     writeln!(out, "{}", report.summary)?;
     writeln!(

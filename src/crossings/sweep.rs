@@ -1,4 +1,5 @@
-//! [`Sweep`]: Žalik's sweep line with two lists of pierced edges (seed 003).
+//! [`Sweep`]: Žalik's sweep line with two lists of pierced edges (sources in
+//! `docs/crossings.md`).
 //!
 //! # Algorithm
 //! The k = n + m vertices of both polygons are the events, sorted
@@ -24,7 +25,7 @@
 //! makes touchings, vertex-on-vertex contacts and overlaps come out complete.
 //!
 //! The lists are vectors with a position index per edge: insertion appends,
-//! removal swaps the last entry in (O(1), where the seed's linked lists take O(r)).
+//! removal swaps the last entry in (O(1), where the report's linked lists take O(r)).
 //! Each entry keeps its edge's y-range in a column of its own, and a candidate
 //! whose y-range misses the new edge's is skipped with two comparisons on 16
 //! contiguous bytes (x-ranges overlap by construction).
@@ -33,7 +34,7 @@
 //! O(k log k) to sort plus O(Σ r) pair tests, r being the length of the other
 //! polygon's list at each insertion; worst case O(n·m) (every edge of P spanning
 //! the x-range of every edge of Q, e.g. two combs of long nearly horizontal
-//! teeth). On the seed's random polygons r is a small fraction of n. Memory O(k).
+//! teeth). On the report's random polygons r is a small fraction of n. Memory O(k).
 //!
 //! # Degeneracies and precision
 //! As for the module: predicates come from the caller's kernel, touchings and

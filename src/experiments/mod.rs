@@ -194,7 +194,7 @@ pub struct Report {
 /// # Errors
 /// When the output directory or a file cannot be written.
 pub fn run(experiments: &[Experiment], config: &Config) -> io::Result<Report> {
-    fs::create_dir_all(&config.out)?;
+    fs::create_dir_all(&config.out).map_err(naming(&config.out, "cannot create the directory"))?;
     let mut report = Report::default();
     for &e in experiments {
         let r = match e {
@@ -246,10 +246,17 @@ impl Csv {
     }
 
     pub(crate) fn write(&self, dir: &Path, name: &str, report: &mut Report) -> io::Result<()> {
-        fs::write(dir.join(name), &self.text)?;
+        let path = dir.join(name);
+        fs::write(&path, &self.text).map_err(naming(&path, "cannot write"))?;
         report.files.push(name.to_string());
         Ok(())
     }
+}
+
+/// Adds the path to an I/O error: `cannot write out/x.csv: No space left on device`.
+pub(crate) fn naming(path: &Path, what: &'static str) -> impl FnOnce(io::Error) -> io::Error {
+    let path = path.display().to_string();
+    move |e| io::Error::new(e.kind(), format!("{what} {path}: {e}"))
 }
 
 /// Formats a time in nanoseconds with 4 significant digits.

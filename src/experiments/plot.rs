@@ -54,23 +54,40 @@ fn err(e: impl std::fmt::Display) -> io::Error {
     io::Error::other(e.to_string())
 }
 
-/// A short number: 3 significant digits, SI suffix for large and small values.
+/// A short number: 3 significant digits, SI suffix for large values, trailing zeros
+/// dropped (`316k`, `1.5M`, `0.00123`, `12.5`).
 fn short(v: f64) -> String {
     let a = v.abs();
-    if a == 0.0 {
-        "0".into()
-    } else if a >= 1e9 {
-        format!("{:.3}G", v / 1e9)
-    } else if a >= 1e6 {
-        format!("{:.3}M", v / 1e6)
-    } else if a >= 1e3 {
-        format!("{:.3}k", v / 1e3)
-    } else if a >= 1.0 {
-        format!("{v:.3}")
-    } else {
-        format!("{v:.3e}")
+    if a == 0.0 || !a.is_finite() {
+        return if a == 0.0 { "0".into() } else { format!("{v}") };
     }
-    .replace(".000", "")
+    let (scaled, suffix) = if a >= 1e9 {
+        (v / 1e9, "G")
+    } else if a >= 1e6 {
+        (v / 1e6, "M")
+    } else if a >= 1e3 {
+        (v / 1e3, "k")
+    } else {
+        (v, "")
+    };
+    let magnitude = scaled.abs().log10().floor() as i32;
+    let decimals = (2 - magnitude).max(0) as usize;
+    let mut text = format!("{scaled:.decimals$}");
+    if text.contains('.') {
+        text = text.trim_end_matches('0').trim_end_matches('.').to_string();
+    }
+    text + suffix
+}
+
+/// The label of a tick at `exponent` on a log axis: the power itself when the tick sits
+/// on a whole exponent, nothing between (ticks between decades would read `316k`).
+fn log_tick(exponent: f64, power: impl Fn(i32) -> String) -> String {
+    let k = exponent.round();
+    if (exponent - k).abs() < 1e-6 {
+        power(k as i32)
+    } else {
+        String::new()
+    }
 }
 
 /// Draws `series` into the SVG file `path` (640×400).
@@ -125,19 +142,25 @@ pub fn draw(path: &Path, chart: &Chart<'_>, series: &[Series]) -> io::Result<()>
         .map_err(err)?;
     let x_fmt = |x: &f64| {
         if chart.log2_x {
-            format!("2^{x:.0}")
+            log_tick(*x, |k| format!("2^{k}"))
         } else {
             short(*x)
         }
     };
     let y_fmt = |y: &f64| {
         if chart.log_y {
-            short(10f64.powf(*y))
+            log_tick(*y, |k| short(10f64.powi(k)))
         } else {
             short(*y)
         }
     };
+    // On log axes, about one tick per whole exponent, so that most ticks sit on one.
+    let whole = |lo: f64, hi: f64| ((hi - lo).floor() as usize + 1).clamp(2, 12);
+    let x_ticks = if chart.log2_x { whole(x0, x1) } else { 10 };
+    let y_ticks = if chart.log_y { whole(y0, y1) } else { 10 };
     c.configure_mesh()
+        .x_labels(x_ticks)
+        .y_labels(y_ticks)
         .x_desc(chart.x_label)
         .y_desc(chart.y_label)
         .x_label_formatter(&x_fmt)
@@ -176,4 +199,22 @@ pub fn draw(path: &Path, chart: &Chart<'_>, series: &[Series]) -> io::Result<()>
             .map_err(err)?;
     }
     root.present().map_err(err)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{log_tick, short};
+
+    #[test]
+    fn tick_labels_are_short_and_round() {
+        assert_eq!(short(316_227.766), "316k");
+        assert_eq!(short(1_500_000.0), "1.5M");
+        assert_eq!(short(1000.0), "1k");
+        assert_eq!(short(12.5), "12.5");
+        assert_eq!(short(0.001234), "0.00123");
+        assert_eq!(short(-2.0), "-2");
+        assert_eq!(log_tick(5.0, |k| short(10f64.powi(k))), "100k");
+        assert_eq!(log_tick(5.5, |k| short(10f64.powi(k))), "");
+        assert_eq!(log_tick(12.0000001, |k| format!("2^{k}")), "2^12");
+    }
 }

@@ -201,7 +201,8 @@ pub(crate) fn draw(
     chart: &Chart<'_>,
     series: &[Series],
 ) -> io::Result<()> {
-    plot::draw(&config.out.join(name), chart, series)?;
+    let path = config.out.join(name);
+    plot::draw(&path, chart, series).map_err(super::naming(&path, "cannot write"))?;
     report.files.push(name.to_string());
     Ok(())
 }
@@ -300,8 +301,8 @@ pub(crate) fn run(config: &Config) -> io::Result<Report> {
     Ok(report)
 }
 
-/// A markdown table: median ns per query for each algorithm (rows) at each n (columns),
-/// intersecting / disjoint.
+/// A markdown table: median time per query for each algorithm (rows) at each n
+/// (columns), intersecting / disjoint, each cell with its unit.
 pub(crate) fn table(points: &[Point], families: &[Family]) -> String {
     let mut out = String::new();
     for &family in families {
@@ -320,7 +321,7 @@ pub(crate) fn table(points: &[Point], families: &[Family]) -> String {
             }
         }
         out.push_str(&format!(
-            "{family}: median ns per query, intersecting / disjoint\n\n| algorithm |"
+            "{family}: median time per query (ns, µs or ms as marked), intersecting / disjoint\n\n| algorithm |"
         ));
         for n in &ns_list {
             out.push_str(&format!(" 2^{} |", n.trailing_zeros()));
@@ -356,13 +357,42 @@ pub(crate) fn table(points: &[Point], families: &[Family]) -> String {
     out
 }
 
-/// A time in ns, µs or ms with 3 significant digits.
+/// A time given in ns, written in ns, µs, ms or s with its unit and 3 significant
+/// digits (`812 ns`, `1.25 µs`, `43.1 ms`).
 pub(crate) fn short_ns(t: f64) -> String {
-    if t >= 1e6 {
-        format!("{:.3} ms", t / 1e6)
+    if !t.is_finite() {
+        return "–".into();
+    }
+    let (v, unit) = if t >= 1e9 {
+        (t / 1e9, "s")
+    } else if t >= 1e6 {
+        (t / 1e6, "ms")
     } else if t >= 1e3 {
-        format!("{:.3} µs", t / 1e3)
+        (t / 1e3, "µs")
     } else {
-        format!("{t:.1} ns")
+        (t, "ns")
+    };
+    let decimals = if v >= 100.0 {
+        0
+    } else if v >= 10.0 {
+        1
+    } else {
+        2
+    };
+    format!("{v:.decimals$} {unit}")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::short_ns;
+
+    #[test]
+    fn times_carry_their_unit_and_three_digits() {
+        assert_eq!(short_ns(812.3), "812 ns");
+        assert_eq!(short_ns(1.5), "1.50 ns");
+        assert_eq!(short_ns(1_254.0), "1.25 µs");
+        assert_eq!(short_ns(43_120_000.0), "43.1 ms");
+        assert_eq!(short_ns(2.5e9), "2.50 s");
+        assert_eq!(short_ns(f64::NAN), "–");
     }
 }

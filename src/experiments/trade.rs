@@ -335,12 +335,14 @@ pub(crate) fn run(config: &Config) -> io::Result<Report> {
             vec![(rate, cells[0][ai].median_ns)],
         ));
     }
-    std::fs::write(config.out.join("trade.md"), &md)?;
+    let path = config.out.join("trade.md");
+    std::fs::write(&path, &md).map_err(super::naming(&path, "cannot write"))?;
     report.files.push("trade.md".into());
+    let y_label = format!("ns per query (random ellipses, n = {})", config.trade_n);
     let chart = Chart {
         title: "time on random ellipses vs wrong answers on all cases",
         x_label: "wrong answers, all cases (%)",
-        y_label: "ns per query (random, n = trade_n)",
+        y_label: &y_label,
         log2_x: false,
         log_y: true,
         scatter: true,

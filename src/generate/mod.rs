@@ -19,7 +19,7 @@ pub mod simple;
 
 use crate::intersect::{ArrayIntersection, Linear};
 use crate::kernel::Point;
-use crate::polygon::{ConvexPolygon, convex_hull};
+use crate::polygon::{ConvexPolygon, PolygonError, convex_hull};
 use rand::Rng;
 use std::f64::consts::TAU;
 use std::fmt;
@@ -186,15 +186,57 @@ pub fn ellipse_polygon<R: Rng + ?Sized>(
     }
 }
 
-/// A regular n-gon of the given radius centred at the origin, first vertex at angle 0.
+/// A regular n-gon of the given radius centred at the origin, first vertex at angle 0
+/// (vertex i at angle 2πi/n, coordinates rounded). Panics on bad parameters; see
+/// [`try_regular_polygon`] for the checked form.
+///
+/// # Panics
+/// When [`try_regular_polygon`] returns an error: `n < 3`, a zero, NaN or infinite
+/// radius, or a radius so small (or an `n` so large) that the rounded vertices are no
+/// longer strictly convex.
+///
+/// ```
+/// use polysect::generate::regular_polygon;
+/// let hexagon = regular_polygon(6, 2.0);
+/// assert_eq!(hexagon.len(), 6);
+/// assert!(hexagon.contains_point([1.9, 0.0]));
+/// ```
+#[track_caller]
 pub fn regular_polygon(n: usize, radius: f64) -> ConvexPolygon {
-    let pts: Vec<Point> = (0..n.max(3))
-        .map(|i| {
-            let t = TAU * i as f64 / n.max(3) as f64;
-            Point::new(radius * t.cos(), radius * t.sin())
-        })
-        .collect();
-    ConvexPolygon::new(pts).expect("a regular polygon is convex")
+    match try_regular_polygon(n, radius) {
+        Ok(p) => p,
+        Err(e) => panic!("regular_polygon({n}, {radius:?}): {e}"),
+    }
+}
+
+/// A regular n-gon of the given radius centred at the origin, first vertex at angle 0,
+/// validated like every polygon. O(n). Where rounding merges or straightens vertices
+/// (a subnormal radius, a huge n) cleaning drops them, so the result can have fewer
+/// than n vertices: [`ConvexPolygon::len`] tells.
+///
+/// # Errors
+/// [`PolygonError::TooFewVertices`] for `n < 3` or a zero radius (every vertex at the
+/// origin), [`PolygonError::NonFinite`] for a NaN or infinite radius, and any other
+/// validation error when rounding makes the vertices collinear or reflex (a subnormal
+/// radius, or an `n` so large that neighbouring turns round flat). A negative radius
+/// is a half-turn of the polygon of radius |r|. Memory: 16 bytes a vertex for the
+/// points plus the polygon itself.
+///
+/// ```
+/// use polysect::generate::try_regular_polygon;
+/// use polysect::PolygonError;
+/// assert_eq!(try_regular_polygon(4, 1.0)?.len(), 4);
+/// assert_eq!(try_regular_polygon(2, 1.0), Err(PolygonError::TooFewVertices { distinct: 2 }));
+/// assert_eq!(try_regular_polygon(5, 0.0), Err(PolygonError::TooFewVertices { distinct: 1 }));
+/// assert!(matches!(try_regular_polygon(5, f64::NAN), Err(PolygonError::NonFinite { .. })));
+/// # Ok::<(), PolygonError>(())
+/// ```
+pub fn try_regular_polygon(n: usize, radius: f64) -> Result<ConvexPolygon, PolygonError> {
+    let pts = (0..n).map(|i| {
+        let t = TAU * i as f64 / n as f64;
+        Point::new(radius * t.cos(), radius * t.sin())
+    });
+    ConvexPolygon::new(pts)
 }
 
 /// A generated pair from `family` with about `n` vertices per polygon, steered by `relation`.

@@ -1,6 +1,6 @@
-//! Random simple polygons (seed 003, section 6.1): point sets drawn from a uniform,
+//! Random simple polygons, as in the crossings experiments (`docs/crossings.md`): point sets drawn from a uniform,
 //! normal or integer-grid distribution, joined into a simple polygon by **space
-//! partitioning** (the seed's Algorithm 1, after Auer and Held) or by an angular sort
+//! partitioning** (after Auer and Held) or by an angular sort
 //! into a **star-shaped** polygon.
 //!
 //! # Space partitioning
@@ -36,13 +36,13 @@ use std::str::FromStr;
 /// How many point sets a generator draws before giving up.
 pub const MAX_ATTEMPTS: usize = 200;
 
-/// The distribution of the vertices (seed 003's two data sets, plus a grid for
+/// The distribution of the vertices (the crossings experiments' two data sets, plus a grid for
 /// degenerate tests).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum PointDistribution {
-    /// x and y uniform in [min, max) (seed 003, Table 6.1: min = 0, max = Δ).
+    /// x and y uniform in [min, max) (the crossings experiments: min = 0, max = Δ).
     Uniform { min: f64, max: f64 },
-    /// x and y normal with the given mean and standard deviation (Table 6.2: μ = 0),
+    /// x and y normal with the given mean and standard deviation (the crossings experiments: μ = 0),
     /// by the Box–Muller transform.
     Normal { mean: f64, sigma: f64 },
     /// x and y uniform integers in [0, size): many equal x, collinear triples,
@@ -118,7 +118,7 @@ impl PointDistribution {
 /// How the points are joined into a polygon.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum SimpleMethod {
-    /// Space partitioning (seed 003, Algorithm 1).
+    /// Space partitioning (after Auer and Held).
     SpacePartition,
     /// Angular sort around the distribution's centre.
     Star,

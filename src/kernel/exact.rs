@@ -67,7 +67,7 @@ impl Kernel for Exact {
     }
 
     /// A static filter for `D·A + N·B`, each factor a cross product of differences,
-    /// then the interval filter and the exact fallback (see [`line_meet_filtered`]).
+    /// then the interval filter and the exact fallback (see `line_meet_filtered`).
     #[inline]
     fn line_meet_sign(self, pts: [Point; 6]) -> Sign {
         line_meet_filtered(pts).unwrap_or_else(|| self.sign(&LineMeetSidePoly(pts)))
@@ -162,6 +162,7 @@ fn sign_slow<P: Polynomial>(poly: &P) -> Sign {
 
 /// True when every value is zero or has magnitude in [2^-400, 2^400], the range in
 /// which Shewchuk's adaptive predicates are exact (no intermediate overflow or underflow).
+#[doc(hidden)]
 #[inline]
 pub fn in_adaptive_range(values: &[f64]) -> bool {
     values.iter().all(|&v| {
@@ -183,6 +184,7 @@ impl Polynomial for OrientPoly {
 
 /// A closed interval of reals, with every operation rounded outward by one ulp,
 /// so the true value of a polynomial always lies inside the computed interval.
+#[doc(hidden)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Interval {
     pub lo: f64,
@@ -251,6 +253,7 @@ impl Ring for Interval {
 
 /// An exact dyadic rational `mantissa · 2^exponent` with a big-integer mantissa:
 /// every finite `f64` is one, and `+ - *` on them are exact.
+#[doc(hidden)]
 #[derive(Clone, Debug, PartialEq)]
 pub struct Dyadic {
     mantissa: BigInt,

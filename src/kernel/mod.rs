@@ -22,6 +22,7 @@
 //! real answer (collinear, parallel, perpendicular), never an error.
 
 pub mod exact;
+mod point_serde;
 mod segment;
 
 pub use exact::Exact;
@@ -34,7 +35,10 @@ use std::str::FromStr;
 
 /// A point (or vector) in the plane. Every finite `f64` coordinate is valid;
 /// constructors that validate input reject NaN and infinities.
-#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
+///
+/// Serialised (serde) as `[x, y]`, the form the command line reads and writes;
+/// deserialised from `[x, y]` or `{"x": x, "y": y}`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Point {
     pub x: f64,
     pub y: f64,
@@ -317,7 +321,7 @@ impl Kernel for Fast {
 }
 
 /// The run-time name of a kernel (the CLI's `--precision`). Algorithms are
-/// generic over [`Kernel`]; [`Precision::dispatch`]-style matches pick the instance.
+/// generic over [`Kernel`]; a `match` on a `Precision` picks the instance.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Precision {
     /// The [`Fast`] kernel.
@@ -354,9 +358,92 @@ impl FromStr for Precision {
     }
 }
 
+/// Vector arithmetic on points, in plain `f64`: each coordinate rounded to nearest. These
+/// construct new coordinates, so they are not exact; geometric decisions belong to a
+/// [`Kernel`] predicate on the original points (`orient(a, b, c)`, not the sign of a
+/// cross product of `b - a` and `c - a`).
+///
+/// ```
+/// use polysect::Point;
+/// let (a, b) = (Point::new(1.0, 2.0), Point::new(0.5, -1.0));
+/// assert_eq!(a + b, Point::new(1.5, 1.0));
+/// assert_eq!(a - b, Point::new(0.5, 3.0));
+/// assert_eq!(-a, Point::new(-1.0, -2.0));
+/// assert_eq!(a * 2.0, Point::new(2.0, 4.0));
+/// assert_eq!(a.to_string(), "(1, 2)");
+/// ```
+impl Add for Point {
+    type Output = Point;
+    #[inline]
+    fn add(self, o: Point) -> Point {
+        Point::new(self.x + o.x, self.y + o.y)
+    }
+}
+
+impl Sub for Point {
+    type Output = Point;
+    #[inline]
+    fn sub(self, o: Point) -> Point {
+        Point::new(self.x - o.x, self.y - o.y)
+    }
+}
+
+impl std::ops::Neg for Point {
+    type Output = Point;
+    #[inline]
+    fn neg(self) -> Point {
+        Point::new(-self.x, -self.y)
+    }
+}
+
+/// Scaling by a number: `p * s` multiplies both coordinates by `s` (rounded).
+impl Mul<f64> for Point {
+    type Output = Point;
+    #[inline]
+    fn mul(self, s: f64) -> Point {
+        Point::new(self.x * s, self.y * s)
+    }
+}
+
+/// `(x, y)`, each coordinate in the shortest form that parses back to the same `f64`:
+/// plain decimals between 10^-5 and 10^16 (`(4.5, 2)`), scientific notation beyond
+/// (`(1.7976931348623157e308, 5e-324)`), so huge and tiny values stay short. A
+/// precision (`{:.2}`) applies to both coordinates.
+impl fmt::Display for Point {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let one = |f: &mut fmt::Formatter<'_>, v: f64| match f.precision() {
+            Some(digits) => write!(f, "{v:.digits$}"),
+            None if v == 0.0 || !v.is_finite() || (1e-5..1e16).contains(&v.abs()) => write!(f, "{v}"),
+            None => write!(f, "{v:e}"),
+        };
+        f.write_str("(")?;
+        one(f, self.x)?;
+        f.write_str(", ")?;
+        one(f, self.y)?;
+        f.write_str(")")
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn display_is_short_for_every_magnitude() {
+        assert_eq!(Point::new(4.5, 2.0).to_string(), "(4.5, 2)");
+        assert_eq!(
+            Point::new(f64::MAX, -5e-324).to_string(),
+            "(1.7976931348623157e308, -5e-324)"
+        );
+        assert_eq!(Point::new(1e16, 1e-5).to_string(), "(1e16, 0.00001)");
+        assert_eq!(Point::new(f64::NAN, f64::NEG_INFINITY).to_string(), "(NaN, -inf)");
+        assert_eq!(format!("{:.2}", Point::new(1.0 / 3.0, 2.0)), "(0.33, 2.00)");
+        for v in [0.1, 1e300, 3e-320, 123456.789, -0.0] {
+            let s = Point::new(v, v).to_string();
+            let x: f64 = s[1..s.find(',').unwrap()].parse().unwrap();
+            assert_eq!(x.to_bits(), v.to_bits(), "{s}");
+        }
+    }
 
     #[test]
     fn cross_and_dot_signs() {

@@ -1,4 +1,4 @@
-//! Closed segment–segment tests without division (seed 002): orientation signs
+//! Closed segment–segment tests without division (orientation and bounding box): orientation signs
 //! decide whether the segments straddle each other's lines, and exact coordinate
 //! comparisons decide the collinear cases.
 //!

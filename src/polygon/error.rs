@@ -29,11 +29,9 @@ pub enum PolygonError {
 impl fmt::Display for PolygonError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            PolygonError::NonFinite { index, point } => write!(
-                f,
-                "vertex {index} has a non-finite coordinate ({}, {})",
-                point.x, point.y
-            ),
+            PolygonError::NonFinite { index, point } => {
+                write!(f, "vertex {index} has a non-finite coordinate {point}")
+            }
             PolygonError::TooFewVertices { distinct } => write!(
                 f,
                 "a polygon needs at least 3 distinct vertices, found {distinct}"
@@ -88,6 +86,9 @@ pub enum EditError {
     RoundingBreaksConvexity { point: Point },
 }
 
+/// Points print in their shortest round-trip form, with an exponent for huge and tiny
+/// coordinates (see [`Point`]'s `Display`): a translation by `f64::MAX` reads
+/// `(1.7976931348623157e308, 0)`, not a 309-digit number.
 impl fmt::Display for EditError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
@@ -96,22 +97,17 @@ impl fmt::Display for EditError {
                 f,
                 "the vertex handle belongs to another polygon, not to the one being queried or edited"
             ),
-            EditError::NonFinite { point } => {
-                write!(f, "point ({}, {}) has a non-finite coordinate", point.x, point.y)
+            EditError::NonFinite { point } => write!(f, "point {point} has a non-finite coordinate"),
+            EditError::WouldBreakConvexity { point } => {
+                write!(f, "placing a vertex at {point} would make the polygon non-convex")
             }
-            EditError::WouldBreakConvexity { point } => write!(
-                f,
-                "placing a vertex at ({}, {}) would make the polygon non-convex",
-                point.x, point.y
-            ),
             EditError::TooFewVertices => {
                 write!(f, "a polygon keeps at least 3 vertices; removal refused")
             }
             EditError::RoundingBreaksConvexity { point } => write!(
                 f,
-                "translation refused: rounding moves the vertex to ({}, {}) and the polygon would \
-                 no longer be strictly convex",
-                point.x, point.y
+                "translation refused: rounding moves the vertex to {point} and the polygon would \
+                 no longer be strictly convex"
             ),
         }
     }

@@ -897,10 +897,7 @@ mod tests {
     fn serde_round_trip_validates() {
         let p = square();
         let text = serde_json::to_string(&p).unwrap();
-        assert_eq!(
-            text,
-            r#"[{"x":0.0,"y":0.0},{"x":4.0,"y":0.0},{"x":4.0,"y":4.0},{"x":0.0,"y":4.0}]"#
-        );
+        assert_eq!(text, "[[0.0,0.0],[4.0,0.0],[4.0,4.0],[0.0,4.0]]");
         let back: LinkedPolygon = serde_json::from_str(&text).unwrap();
         assert_eq!(back.to_convex(), p.to_convex());
         let bad = r#"[{"x":0,"y":0},{"x":4,"y":0},{"x":4,"y":4},{"x":2,"y":1},{"x":0,"y":4}]"#;

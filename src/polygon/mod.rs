@@ -2,7 +2,9 @@
 //! editable convex polygons as arena-backed doubly linked lists ([`LinkedPolygon`]),
 //! simple (possibly non-convex) polygons in either orientation ([`SimplePolygon`],
 //! validated by an exact O(n log n) sweep), and the convex hull of a point set
-//! ([`convex_hull`]).
+//! ([`convex_hull`]). Everyday queries on one polygon (point containment, the extreme
+//! vertex in a direction, area, centroid) are methods of these types, indexed in
+//! [`queries`].
 //!
 //! # Orientation and cleaning
 //! Input may come clockwise or counter-clockwise, from any start vertex. The two
@@ -18,6 +20,7 @@ mod convex;
 mod error;
 mod hull;
 mod linked;
+pub mod queries;
 mod simple;
 
 pub use convex::ConvexPolygon;

@@ -35,11 +35,9 @@ pub enum SimplePolygonError {
 impl fmt::Display for SimplePolygonError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            SimplePolygonError::NonFinite { index, point } => write!(
-                f,
-                "vertex {index} has a non-finite coordinate ({}, {})",
-                point.x, point.y
-            ),
+            SimplePolygonError::NonFinite { index, point } => {
+                write!(f, "vertex {index} has a non-finite coordinate {point}")
+            }
             SimplePolygonError::TooFewVertices { distinct } => write!(
                 f,
                 "a polygon needs at least 3 distinct vertices, found {distinct}"

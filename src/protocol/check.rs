@@ -93,6 +93,84 @@ pub fn check<R: Read, W: Write>(
     })
 }
 
+/// What [`check_expected`] found.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Tally {
+    /// Lines answered and compared with their `"expected"` field.
+    pub compared: u64,
+    /// Of those, the answers that differ from `"expected"`.
+    pub disagreed: u64,
+    /// Lines answered with an error instead (bad JSON, invalid polygon, no `"expected"`).
+    pub errors: u64,
+}
+
+/// The `check` protocol comparing each answer with the line's `"expected"` field (a
+/// boolean, as `polysect gen` writes it): the reply is `{"intersects": A, "agrees":
+/// A == expected}`; a line without `"expected"`, or with a non-boolean one, is an error
+/// line. `polysect check --verify-expected`.
+///
+/// # Errors
+/// Only I/O errors; bad lines get error lines (and are counted in [`Tally::errors`]).
+///
+/// ```
+/// use polysect::intersect::{ArrayIntersection, Barba};
+/// let input = br#"{"expected": true, "p": [[0,0],[1,0],[0,1]], "q": [[1,0],[2,0],[2,1]]}
+/// {"expected": true, "p": [[0,0],[1,0],[0,1]], "q": [[5,5],[6,5],[5,6]]}
+/// {"p": [[0,0],[1,0],[0,1]], "q": [[5,5],[6,5],[5,6]]}
+/// "#;
+/// let mut out = Vec::new();
+/// let tally = polysect::protocol::check::check_expected(&input[..], &mut out, |p, q| Barba.intersects(p, q))?;
+/// let out = String::from_utf8(out).unwrap();
+/// let lines: Vec<&str> = out.lines().collect();
+/// assert_eq!(lines[0], r#"{"intersects": true, "agrees": true}"#);
+/// assert_eq!(lines[1], r#"{"intersects": false, "agrees": false}"#);
+/// assert!(lines[2].contains("missing field `expected`"));
+/// assert_eq!((tally.compared, tally.disagreed, tally.errors), (2, 1, 1));
+/// # Ok::<(), std::io::Error>(())
+/// ```
+pub fn check_expected<R: Read, W: Write>(
+    input: R,
+    output: W,
+    mut answer: impl FnMut(&ConvexPolygon, &ConvexPolygon) -> bool,
+) -> io::Result<Tally> {
+    let mut ch = Channel::new(input, output);
+    let mut tally = Tally::default();
+    serve(&mut ch, parse_expected, |(pair, expected)| {
+        let outcome = (|| {
+            let expected =
+                expected.ok_or("missing field `expected` (--verify-expected compares the answer with it)")?;
+            let (p, q) = convex_pair(pair)?;
+            Ok::<_, String>((answer(&p, &q), expected))
+        })();
+        match outcome {
+            Ok((got, expected)) => {
+                tally.compared += 1;
+                tally.disagreed += u64::from(got != expected);
+                Ok(format!("\"intersects\": {got}, \"agrees\": {}", got == expected))
+            }
+            Err(message) => Err(message),
+        }
+    })?;
+    // Lines that failed to parse never reached the closure above.
+    tally.errors = ch.line_number() - tally.compared;
+    Ok(tally)
+}
+
+/// Reads one line's object: the two vertex lists and the optional `"expected"`.
+fn parse_expected<R: Read, W: Write>(ch: &mut Channel<R, W>) -> Result<(PairLine, Option<bool>), Stop> {
+    let mut pair = PairLine::default();
+    let mut expected = None;
+    ch.object(SHAPE, &["p", "q", "expected"], |ch, key| {
+        match key {
+            0 => pair.p = ch.points("p")?,
+            1 => pair.q = ch.points("q")?,
+            _ => expected = ch.boolean("expected")?,
+        }
+        Ok(())
+    })?;
+    Ok((pair, expected))
+}
+
 /// Runs the `crossings` protocol: one reply line per input line, `{"points": [[x, y],
 /// ...]}` from `answer` on two simple polygons, or an error line.
 ///
@@ -137,14 +215,15 @@ fn one_line(line: &[u8], run: impl FnOnce(&[u8], &mut Vec<u8>) -> io::Result<()>
     text
 }
 
-/// Reads `check` lines and hands each line's number and its two validated polygons
-/// (or the error message) to `each`, until the input ends or `each` returns false.
+/// Reads `check` lines and hands each line's number and its two vertex lists, as given
+/// (not validated: the caller decides which polygon type they must be), or the line's
+/// error message, to `each`, until the input ends or `each` returns false.
 ///
 /// # Errors
 /// Only I/O errors of `input`.
 pub fn for_each_pair<R: Read>(
     input: R,
-    mut each: impl FnMut(u64, Result<(ConvexPolygon, ConvexPolygon), String>) -> bool,
+    mut each: impl FnMut(u64, Result<(Vec<Point>, Vec<Point>), String>) -> bool,
 ) -> io::Result<()> {
     let mut ch = Channel::new(input, io::sink());
     let mut line = 0;
@@ -152,7 +231,7 @@ pub fn for_each_pair<R: Read>(
         line += 1;
         Ok(each(
             line,
-            parsed.and_then(|pair| convex_pair(pair).map_err(|m| format!("line {line}: {m}"))),
+            parsed.and_then(|pair| pair.lists().map_err(|m| format!("line {line}: {m}"))),
         ))
     })
 }

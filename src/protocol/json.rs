@@ -632,6 +632,21 @@ impl<R: Read, W: Write> Channel<R, W> {
         Ok(String::from_utf8(s).ok())
     }
 
+    /// `true` or `false`. `None` after a recorded error (the value is consumed).
+    pub(crate) fn boolean(&mut self, field: &str) -> Result<Option<bool>, Stop> {
+        let b = self.ws()?;
+        let at = self.column();
+        match b {
+            b't' => self.literal(b"true").map(|()| Some(true)),
+            b'f' => self.literal(b"false").map(|()| Some(false)),
+            _ => {
+                let m = format!("`{field}` must be true or false, found {}", kind(b));
+                self.wrong_type(at, b, m)?;
+                Ok(None)
+            }
+        }
+    }
+
     /// A non-negative integer written as an integer token. `None` after a recorded
     /// error (the value is consumed).
     pub(crate) fn integer(&mut self, field: &str) -> Result<Option<u64>, Stop> {

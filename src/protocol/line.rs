@@ -169,6 +169,11 @@ impl<R: Read, W: Write> Channel<R, W> {
         }
     }
 
+    /// The number of the current line (from 1), or of the last one after the input ended.
+    pub(crate) fn line_number(&self) -> u64 {
+        self.line
+    }
+
     pub(crate) fn has_error(&self) -> bool {
         self.error.is_some()
     }

@@ -358,7 +358,7 @@ impl<K: Kernel> SceneSession<K> {
                 let (pid, v) = self.vertex(&name, vertex)?;
                 self.scene
                     .remove_vertex(pid, v)
-                    .map_err(|e| format!("remove refused: {e}"))?;
+                    .map_err(|e| format!("remove refused: {}", reason(&e)))?;
                 if let Some(named) = self.polygons.get_mut(&name) {
                     named.vertices.remove(&vertex);
                 }
@@ -371,7 +371,7 @@ impl<K: Kernel> SceneSession<K> {
                 let (pid, v) = self.vertex(&name, vertex)?;
                 self.scene
                     .move_vertex(pid, v, to)
-                    .map_err(|e| format!("move refused: {e}"))?;
+                    .map_err(|e| format!("move refused: {}", reason(&e)))?;
                 Ok(OK.into())
             }
             "translate" => {
@@ -380,8 +380,8 @@ impl<K: Kernel> SceneSession<K> {
                 let pid = self.named(&name)?.id;
                 self.scene.translate(pid, by.x, by.y).map_err(|e| match e {
                     // Its message starts with "translation refused".
-                    SceneError::Edit(EditError::RoundingBreaksConvexity { .. }) => e.to_string(),
-                    _ => format!("translate refused: {e}"),
+                    SceneError::Edit(_, EditError::RoundingBreaksConvexity { .. }) => reason(&e),
+                    _ => format!("translate refused: {}", reason(&e)),
                 })?;
                 Ok(OK.into())
             }
@@ -439,7 +439,7 @@ impl<K: Kernel> SceneSession<K> {
         let new = self
             .scene
             .insert_vertex(pid, v, point)
-            .map_err(|e| format!("insert refused: {e}"))?;
+            .map_err(|e| format!("insert refused: {}", reason(&e)))?;
         let named = self
             .polygons
             .get_mut(name)
@@ -523,6 +523,15 @@ const OK: &str = "\"ok\": true";
 /// A name for a message: as a JSON string, shortened when long.
 fn quoted(name: &str) -> String {
     json_string(&shown(name.as_bytes()))
+}
+
+/// Why the store refused an edit, in the session's terms: the edit's own message,
+/// without the store's polygon handle (the session names polygons by the caller's names).
+fn reason(e: &SceneError) -> String {
+    match e {
+        SceneError::Edit(_, edit) => edit.to_string(),
+        other => other.to_string(),
+    }
 }
 
 #[cfg(test)]

@@ -625,11 +625,14 @@ impl Simulation {
     }
 }
 
+/// The page names polygons by index: the reason is the edit's own message, without the
+/// store's handle.
 fn refused(e: SceneError) -> EditFailure {
     match e {
-        SceneError::Edit(crate::EditError::StaleHandle) | SceneError::StalePolygon => {
+        SceneError::Edit(_, crate::EditError::StaleHandle) | SceneError::StalePolygon(_) => {
             EditFailure::Invalid(e.to_string())
         }
+        SceneError::Edit(_, reason) => EditFailure::Refused(reason.to_string()),
         e => EditFailure::Refused(e.to_string()),
     }
 }

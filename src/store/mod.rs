@@ -64,6 +64,8 @@ mod interop;
 mod planner;
 mod route;
 mod scene;
+// The demo's and the benches' workloads: the tool's, not an API to build on.
+#[doc(hidden)]
 pub mod workload;
 
 pub use broad::BoundingBox;

@@ -15,42 +15,82 @@ use std::fmt;
 /// removed, every use is [`SceneError::StalePolygon`], even if its slot is reused. It also
 /// carries the scene's identity: given to any other scene (a clone included), every use
 /// is [`SceneError::ForeignPolygon`]. Handles of one scene order by slot.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
+///
+/// Serialises (serde) as `{"scene": s, "key": k, "generation": g}` and reads back the
+/// same, so a handle can be stored and used again with the same scene while the process
+/// runs. Scene identities count up within a process, so a handle read back in another
+/// process is not meaningful there (it may name that process's scene with the same
+/// identity). Displays as `#k (generation g)`, the form error messages use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize, serde::Deserialize)]
 pub struct PolygonId {
     scene: u64,
     key: u32,
     generation: u64,
 }
 
+impl fmt::Display for PolygonId {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "#{} (generation {})", self.key, self.generation)
+    }
+}
+
 /// Why a scene operation failed. A failed operation changes nothing.
+///
+/// Messages name the polygon where there is one (`polygon #3 (generation 5): ...`).
+/// [`Error::source`](std::error::Error::source) returns the underlying [`EditError`] or
+/// [`PolygonError`]; its text is also part of this error's message, so a reporter that
+/// prints the whole chain shows it twice.
 #[derive(Clone, Debug, PartialEq)]
 pub enum SceneError {
     /// The polygon handle is stale (the polygon was removed).
-    StalePolygon,
+    /// The polygon handle is stale (the polygon was removed).
+    StalePolygon(PolygonId),
     /// The polygon handle belongs to another scene (or to another copy of this one).
-    ForeignPolygon,
-    /// A vertex edit was refused.
-    Edit(EditError),
+    ForeignPolygon(PolygonId),
+    /// A vertex edit of this polygon was refused.
+    Edit(PolygonId, EditError),
     /// A polygon to insert is invalid.
     Polygon(PolygonError),
+}
+
+impl SceneError {
+    /// The polygon the error is about, when there is one (none for an invalid polygon
+    /// that was never inserted).
+    pub fn polygon(&self) -> Option<PolygonId> {
+        match self {
+            SceneError::StalePolygon(id) | SceneError::ForeignPolygon(id) | SceneError::Edit(id, _) => {
+                Some(*id)
+            }
+            SceneError::Polygon(_) => None,
+        }
+    }
 }
 
 impl fmt::Display for SceneError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            SceneError::StalePolygon => write!(f, "the polygon handle is stale (the polygon was removed)"),
-            SceneError::ForeignPolygon => write!(f, "the polygon handle belongs to another scene"),
-            SceneError::Edit(e) => write!(f, "{e}"),
-            SceneError::Polygon(e) => write!(f, "{e}"),
+            SceneError::StalePolygon(id) => {
+                write!(f, "polygon {id} is stale (the polygon was removed)")
+            }
+            SceneError::ForeignPolygon(id) => {
+                write!(
+                    f,
+                    "polygon {id} belongs to another scene (or another copy of this one)"
+                )
+            }
+            SceneError::Edit(id, e) => write!(f, "polygon {id}: {e}"),
+            SceneError::Polygon(e) => write!(f, "invalid polygon: {e}"),
         }
     }
 }
 
-impl std::error::Error for SceneError {}
-
-impl From<EditError> for SceneError {
-    fn from(e: EditError) -> Self {
-        SceneError::Edit(e)
+impl std::error::Error for SceneError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            SceneError::StalePolygon(_) | SceneError::ForeignPolygon(_) => None,
+            SceneError::Edit(_, e) => Some(e),
+            SceneError::Polygon(e) => Some(e),
+        }
     }
 }
 
@@ -321,11 +361,11 @@ impl<K: Kernel> Scene<K> {
     #[inline]
     fn key(&self, id: PolygonId) -> Result<usize, SceneError> {
         if id.scene != self.identity.get() {
-            return Err(SceneError::ForeignPolygon);
+            return Err(SceneError::ForeignPolygon(id));
         }
         match self.entries.get(id.key as usize) {
             Some(e) if e.generation == id.generation => Ok(id.key as usize),
-            _ => Err(SceneError::StalePolygon),
+            _ => Err(SceneError::StalePolygon(id)),
         }
     }
 
@@ -375,7 +415,10 @@ impl<K: Kernel> Scene<K> {
     ) -> Result<VertexId, SceneError> {
         let key = self.key(id)?;
         let e = &mut self.entries[key];
-        let v = e.polygon.insert_after(after, p)?;
+        let v = e
+            .polygon
+            .insert_after(after, p)
+            .map_err(|err| SceneError::Edit(id, err))?;
         e.edited(&mut self.stats);
         self.grow_box(key, p);
         Ok(v)
@@ -389,7 +432,7 @@ impl<K: Kernel> Scene<K> {
     pub fn remove_vertex(&mut self, id: PolygonId, v: VertexId) -> Result<Point, SceneError> {
         let key = self.key(id)?;
         let e = &mut self.entries[key];
-        let old = e.polygon.remove(v)?;
+        let old = e.polygon.remove(v).map_err(|err| SceneError::Edit(id, err))?;
         e.edited(&mut self.stats);
         if e.bbox.touches_boundary(old) {
             e.bbox_tight = false;
@@ -405,7 +448,10 @@ impl<K: Kernel> Scene<K> {
     pub fn move_vertex(&mut self, id: PolygonId, v: VertexId, p: Point) -> Result<Point, SceneError> {
         let key = self.key(id)?;
         let e = &mut self.entries[key];
-        let old = e.polygon.move_vertex(v, p)?;
+        let old = e
+            .polygon
+            .move_vertex(v, p)
+            .map_err(|err| SceneError::Edit(id, err))?;
         e.edited(&mut self.stats);
         if e.bbox.touches_boundary(old) {
             e.bbox_tight = false;
@@ -462,11 +508,16 @@ impl<K: Kernel> Scene<K> {
                     (e.rounding_margin - delta) / (1.0 + 2.0 * delta) * (1.0 - 4.0 * f64::EPSILON);
             } else {
                 let boundary = e.snapshot.as_ref().map(|s| s.vertices());
-                e.rounding_margin = e.polygon.translate_finite(dx, dy, boundary)?;
+                e.rounding_margin = e
+                    .polygon
+                    .translate_finite(dx, dy, boundary)
+                    .map_err(|err| SceneError::Edit(id, err))?;
             }
             e.bbox = shifted;
         } else {
-            e.polygon.translate(dx, dy)?;
+            e.polygon
+                .translate(dx, dy)
+                .map_err(|err| SceneError::Edit(id, err))?;
             e.rounding_margin = 0.0;
             // A loose box reaching past the polygon overflowed: take the true box.
             e.bbox = BoundingBox::of(e.polygon.iter().map(|(_, p)| p)).expect("a polygon has vertices");
@@ -906,7 +957,7 @@ mod tests {
                 let want = copy.translate(dx, dy);
                 assert_eq!(
                     got,
-                    want.clone().map_err(SceneError::Edit),
+                    want.clone().map_err(|e| SceneError::Edit(id, e)),
                     "shape {s} step {step}"
                 );
                 if want.is_err() {
