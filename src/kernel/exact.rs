@@ -1,26 +1,45 @@
 //! The exact kernel: correct signs for every finite `f64` input.
 //!
 //! # Layers
-//! 1. **Filter.** The predicate is evaluated in `f64` together with a bound on its
-//!    rounding error; when the result is farther from zero than the bound, its sign
-//!    is the exact sign. `orient` uses Shewchuk's static bound
-//!    (`(3 + 16ε)ε · (|l| + |r|)`, plus `f64::MIN_POSITIVE` to absorb underflow);
-//!    other predicates are evaluated in [`Interval`] arithmetic with outward
-//!    rounding by one ulp per operation. On random input this layer decides
-//!    essentially every call.
-//! 2. **Adaptive.** `orient` falls back to Shewchuk's adaptive `orient2d` (the
-//!    `robust` crate), whose expansion arithmetic is exact as long as no
-//!    intermediate product overflows or underflows. That holds when every non-zero
-//!    coordinate has magnitude in [2^-400, 2^400] ([`in_adaptive_range`]): every
-//!    difference and expansion component is then a multiple of 2^-453 and every
-//!    product a multiple of 2^-906 (above the subnormal range) and below 2^804.
-//! 3. **Exact fallback.** Outside that range (huge, tiny or subnormal coordinates,
-//!    or mixtures of magnitudes), and for predicates other than `orient` whenever the
-//!    filter cannot decide, the polynomial is evaluated on the exact dyadic values
+//! 1. **Static filter.** The predicate is evaluated in `f64` together with a bound on
+//!    its rounding error; when the result is farther from zero than the bound, its sign
+//!    is the exact sign. `orient`, `cross` and `dot` (two products of differences) use
+//!    Shewchuk's bound `(3 + 16ε)ε · |l ± r|` plus `f64::MIN_POSITIVE` to absorb
+//!    underflow; [`Kernel::cross_products_sign`] (degree 4) uses `12ε·(P₀P₁ + P₂P₃)`
+//!    with Pᵢ the magnitude of factor i's two products (derivation at
+//!    `cross_products_filtered`). On ordinary input this layer decides essentially
+//!    every call, and it is written so that the sign it returns depends only on the
+//!    floating-point value (the certificate is a separate, always-predicted branch):
+//!    the algorithms' unpredictable branches then wait no longer than under
+//!    [`Fast`](super::Fast).
+//! 2. **Out of line, when the filter cannot decide:**
+//!    * *Structural zeros.* Coincident points (a repeated point in `orient`, a zero
+//!      vector in `cross` or `dot`, one segment crossed with itself) answer zero
+//!      without arithmetic. Algorithms ask such questions on every input (a chain's
+//!      end against itself), so they must not cost more.
+//!    * *Rescaling.* Every predicate here is a homogeneous polynomial, so scaling all
+//!      of one call's inputs by the same power of two keeps its sign. The inputs are
+//!      scaled (by exponent arithmetic: exact) so that the largest magnitude lies in
+//!      [1, 2), unless that would push the smallest non-zero one below the normal
+//!      range, and the static filter runs again. Well-conditioned calls on
+//!      coordinates near 2^±600, near `f64::MAX` or subnormal are decided here, at a
+//!      few times the cost of the first filter; only calls whose own inputs span more
+//!      than 2^1022 in magnitude cannot be rescaled.
+//!    * *Adaptive.* `orient`, and `cross` and `dot` when their coordinate differences
+//!      are exact, go to Shewchuk's adaptive `orient2d` (the `robust` crate), whose
+//!      expansion arithmetic is exact as long as no intermediate product overflows or
+//!      underflows. That holds when every non-zero (scaled) coordinate has magnitude
+//!      in [2^-400, 2^400] ([`in_adaptive_range`]): every difference and expansion
+//!      component is then a multiple of 2^-453 and every product a multiple of
+//!      2^-906 (above the subnormal range) and below 2^804. Degree-4 predicates and
+//!      [`Kernel::sign`] try [`Interval`] arithmetic with outward rounding instead.
+//! 3. **Exact fallback.** Everything still undecided (nearly degenerate calls whose
+//!    inputs span more than 2^400, nearly parallel `cross` with inexact differences,
+//!    nearly degenerate degree-4 calls) is evaluated on the exact dyadic values
 //!    `m · 2^e` of the inputs with big integers ([`Dyadic`]). No finite input is
 //!    refused and none is misjudged; the cost is paid only by near-degenerate calls.
 
-use super::{Kernel, LineMeetSidePoly, Orientation, Point, Polynomial, Ring, Sign};
+use super::{CrossPoly, CrossProductsPoly, DotPoly, Kernel, Orientation, Point, Polynomial, Ring, Sign};
 use num_bigint::BigInt;
 use num_traits::{Signed, Zero};
 use std::ops::{Add, Mul, Sub};
@@ -31,7 +50,7 @@ const ADAPTIVE_MIN: f64 = f64::from_bits((1023 - 400) << 52); // 2^-400
 const ADAPTIVE_MAX: f64 = f64::from_bits((1023 + 400) << 52); // 2^400
 
 /// Exact predicates for every finite input; the default kernel. See the module docs
-/// for the three layers.
+/// for the layers.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Exact;
 
@@ -40,15 +59,16 @@ impl Kernel for Exact {
 
     #[inline]
     fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
-        let left = (a.x - c.x) * (b.y - c.y);
-        let right = (a.y - c.y) * (b.x - c.x);
-        match filtered(left, right, left - right) {
+        match orient_filtered(a, b, c) {
             Some(s) => s.into(),
             None => orient_slow(a, b, c),
         }
     }
 
-    #[inline]
+    /// The interval filter, then the exact fallback. Kept out of line: the kernel's
+    /// own predicates never come here on ordinary input, and inlining an interval
+    /// evaluation into an algorithm's loop costs it registers and code size.
+    #[inline(never)]
     fn sign<P: Polynomial>(self, poly: &P) -> Sign {
         match poly.eval::<Interval>().certain_sign() {
             Some(s) => s,
@@ -59,96 +79,380 @@ impl Kernel for Exact {
     /// Same shape as `orient` (two products of differences), so the same static filter.
     #[inline]
     fn cross(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
-        let left = (b.x - a.x) * (d.y - c.y);
-        let right = (b.y - a.y) * (d.x - c.x);
-        filtered(left, right, left - right)
-            .unwrap_or_else(|| sign_slow(&super::CrossPoly(a, b, c, d)))
-            .into()
-    }
-
-    /// A static filter for `D·A + N·B`, each factor a cross product of differences,
-    /// then the interval filter and the exact fallback (see [`line_meet_filtered`]).
-    #[inline]
-    fn line_meet_sign(self, pts: [Point; 6]) -> Sign {
-        line_meet_filtered(pts).unwrap_or_else(|| self.sign(&LineMeetSidePoly(pts)))
+        match cross_filtered(a, b, c, d) {
+            Some(s) => s.into(),
+            None => cross_slow(a, b, c, d).into(),
+        }
     }
 
     /// Same shape as `orient` with a sum instead of a difference: the same static filter.
     #[inline]
     fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
-        let left = (b.x - a.x) * (d.x - c.x);
-        let right = (b.y - a.y) * (d.y - c.y);
-        filtered(left, right, left + right).unwrap_or_else(|| sign_slow(&super::DotPoly(a, b, c, d)))
+        match dot_filtered(a, b, c, d) {
+            Some(s) => s,
+            None => dot_slow(a, b, c, d),
+        }
+    }
+
+    /// A static filter (see `cross_products_filtered`), then rescaling, intervals and
+    /// the exact fallback out of line.
+    #[inline(always)]
+    fn cross_products_sign(self, factors: [[Point; 4]; 4]) -> Sign {
+        match cross_products_filtered(&factors) {
+            Some(s) => s,
+            None => cross_products_slow(factors),
+        }
     }
 }
 
-/// The static filter of [`Exact::line_meet_sign`]: `S = D·A + N·B` with
-/// `D = (b−a)×(d−c)`, `N = (c−a)×(d−c)`, `A = (f−e)×(a−e)`, `B = (f−e)×(b−a)`,
-/// evaluated in `f64`. With u = 2^-53, every difference carries a relative error
-/// ≤ u, each cross product an absolute error ≤ 4.01u·P (P its permanent, the sum of
-/// the two products' magnitudes), each product of two of them ≤ 9.1u·P₁P₂ and the
-/// sum adds u·|S|, so |S̃ − S| ≤ 10.2u·(P_D·P_A + P_N·P_B); we use 12u. The bound is
-/// trusted only when every computed difference is 0 or has magnitude in
-/// [2^-250, 2^250]: then no product overflows, products of differences never
-/// underflow, and an underflow in a product of two cross products (at most 2^-1074)
-/// is far below the 1.8u·2^-1000 left over in the bound; otherwise, and when |S̃| is
-/// within the bound, `None`.
-#[inline]
-fn line_meet_filtered([a, b, c, d, e, f]: [Point; 6]) -> Option<Sign> {
-    const U: f64 = f64::EPSILON / 2.0;
-    const LO: f64 = f64::from_bits((1023 - 250) << 52); // 2^-250
-    const HI: f64 = f64::from_bits((1023 + 250) << 52); // 2^250
-    let cross = |ux: f64, uy: f64, vx: f64, vy: f64| {
-        let (l, r) = (ux * vy, uy * vx);
-        (l - r, l.abs() + r.abs())
+/// Shewchuk's static filter for `det = l − r` (or `l + r` with `sum = l − r`), `l` and
+/// `r` each a product of two differences of inputs: the sign of `det` when it is
+/// certain, `None` otherwise (including overflow and NaN).
+///
+/// The bound is `ORIENT_ERR · |sum| + f64::MIN_POSITIVE` with `sum = l + r` for a
+/// difference. When `l` and `r` have the same sign, `|sum| = |l| + |r|` is Shewchuk's
+/// `detsum` and his analysis applies; the added `f64::MIN_POSITIVE` covers the
+/// absolute error (at most 2^-1075 each) of products that underflow. When they have
+/// opposite signs (or one is zero) there is no cancellation: rounding keeps the sign
+/// of each difference and product, so the sign of `det` is the exact sign whenever
+/// `|det|` exceeds the possible underflow error, and `|sum| ≤ |det|` makes the test
+/// no stricter than that. Overflow makes `det` or the bound infinite or NaN, and the
+/// comparison fails.
+///
+/// The returned sign depends on `det` alone; the comparison with the bound is a
+/// separate branch that is always taken the same way on ordinary input.
+#[inline(always)]
+fn two_products_filtered(det: f64, sum: f64) -> Option<Sign> {
+    if det.abs() > two_products_bound(sum) {
+        Some(nonzero_sign(det))
+    } else {
+        None
+    }
+}
+
+/// The error bound of [`two_products_filtered`].
+#[inline(always)]
+fn two_products_bound(sum: f64) -> f64 {
+    ORIENT_ERR * sum.abs() + f64::MIN_POSITIVE
+}
+
+/// The sign of a value known to be non-zero (one comparison instead of two).
+#[inline(always)]
+fn nonzero_sign(x: f64) -> Sign {
+    if x > 0.0 { Sign::Positive } else { Sign::Negative }
+}
+
+#[inline(always)]
+fn orient_filtered(a: Point, b: Point, c: Point) -> Option<Sign> {
+    let left = (a.x - c.x) * (b.y - c.y);
+    let right = (a.y - c.y) * (b.x - c.x);
+    two_products_filtered(left - right, left + right)
+}
+
+#[inline(always)]
+fn cross_filtered(a: Point, b: Point, c: Point, d: Point) -> Option<Sign> {
+    let left = (b.x - a.x) * (d.y - c.y);
+    let right = (b.y - a.y) * (d.x - c.x);
+    two_products_filtered(left - right, left + right)
+}
+
+#[inline(always)]
+fn dot_filtered(a: Point, b: Point, c: Point, d: Point) -> Option<Sign> {
+    let left = (b.x - a.x) * (d.x - c.x);
+    let right = (b.y - a.y) * (d.y - c.y);
+    two_products_filtered(left + right, left - right)
+}
+
+/// One factor `(b − a) × (d − c)` of [`Kernel::cross_products_sign`]: its value and
+/// the magnitude `|l| + |r|` of its two products.
+#[inline(always)]
+fn cross_and_magnitude([a, b, c, d]: [Point; 4]) -> (f64, f64) {
+    let (l, r) = ((b.x - a.x) * (d.y - c.y), (b.y - a.y) * (d.x - c.x));
+    (l - r, l.abs() + r.abs())
+}
+
+/// The static filter of [`Kernel::cross_products_sign`]: `S = C₀·C₁ + C₂·C₃` in `f64`.
+///
+/// With u = 2^-53 and no overflow or underflow: each difference carries a relative
+/// error ≤ u, each product of two differences ≤ γ₃ (γₖ = ku/(1 − ku)), so each factor
+/// `C̃ᵢ` is within (γ₃ + u(1 + γ₃))·Pᵢ ≤ 4.01u·Pᵢ of `Cᵢ`, with Pᵢ = |lᵢ| + |rᵢ| the
+/// magnitude of its products and |C̃ᵢ| ≤ 1.01·Pᵢ; each product `C̃ᵢC̃ⱼ`, rounded, is
+/// within 9.1u·PᵢPⱼ of `CᵢCⱼ`, and the final sum adds u·|S̃|. So
+/// |S̃ − S| ≤ 10.2u·(P₀P₁ + P₂P₃), and the computed magnitudes differ from the true ones
+/// by a factor of at most 1 + 12u; the bound used is 12u times the computed sum.
+///
+/// Validity: every computed Pᵢ ≥ 2^-969, so an underflowing product of differences
+/// (absolute error ≤ 2^-1075) adds at most u²·Pᵢ to its factor; the computed sum Σ of
+/// magnitudes lies in [2^-960, 2^1020], so an underflowing product of factors adds at
+/// most 2^-114·Σ, nothing overflowed (a non-finite difference or product makes some Pᵢ
+/// or Σ infinite or NaN) and |S̃| ≤ 2^1021. Both extras fit in the 1.8u·Σ left over.
+/// Otherwise, and when |S̃| is within the bound, `None`.
+#[inline(always)]
+fn cross_products_filtered(factors: &[[Point; 4]; 4]) -> Option<Sign> {
+    let (s, bound) = cross_products_bounded(factors);
+    if s.abs() > bound {
+        Some(nonzero_sign(s))
+    } else {
+        None
+    }
+}
+
+/// `S̃` and the error bound of [`cross_products_filtered`]; the bound is infinite when
+/// the validity conditions fail.
+#[inline(always)]
+fn cross_products_bounded(factors: &[[Point; 4]; 4]) -> (f64, f64) {
+    const TINY_FACTOR: f64 = f64::from_bits((1023 - 969) << 52); // 2^-969
+    const TINY_SUM: f64 = f64::from_bits((1023 - 960) << 52); // 2^-960
+    const HUGE_SUM: f64 = f64::from_bits((1023 + 1020) << 52); // 2^1020
+    let (c0, p0) = cross_and_magnitude(factors[0]);
+    let (c1, p1) = cross_and_magnitude(factors[1]);
+    let (c2, p2) = cross_and_magnitude(factors[2]);
+    let (c3, p3) = cross_and_magnitude(factors[3]);
+    let s = c0 * c1 + c2 * c3;
+    let sum = p0 * p1 + p2 * p3;
+    let valid = (p0 >= TINY_FACTOR)
+        & (p1 >= TINY_FACTOR)
+        & (p2 >= TINY_FACTOR)
+        & (p3 >= TINY_FACTOR)
+        & (TINY_SUM..=HUGE_SUM).contains(&sum);
+    let bound = if valid {
+        12.0 * (f64::EPSILON / 2.0) * sum
+    } else {
+        f64::INFINITY
     };
-    let (bax, bay, dcx, dcy) = (b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y);
-    let (fex, fey, cax, cay, aex, aey) = (f.x - e.x, f.y - e.y, c.x - a.x, c.y - a.y, a.x - e.x, a.y - e.y);
-    let diffs = [bax, bay, dcx, dcy, fex, fey, cax, cay, aex, aey];
-    if !diffs.iter().all(|&v| v == 0.0 || (LO..=HI).contains(&v.abs())) {
+    (s, bound)
+}
+
+/// The inputs of one predicate call scaled by a common power of two so that the
+/// largest magnitude lies in [1, 2), when that is exact for every input (the smallest
+/// non-zero magnitude stays in the normal range). Also says whether every non-zero
+/// scaled input lies in Shewchuk's exact range [2^-400, 2^400].
+struct Rescaled<const N: usize> {
+    points: [Point; N],
+    adaptive: bool,
+}
+
+/// The binary exponent of a finite `x > 0`: `x ∈ [2^e, 2^(e+1))`, subnormals included.
+#[inline]
+fn exponent(x: f64) -> i32 {
+    let bits = x.to_bits();
+    let biased = ((bits >> 52) & 0x7ff) as i32;
+    if biased == 0 {
+        -1074 + (63 - bits.leading_zeros() as i32)
+    } else {
+        biased - 1023
+    }
+}
+
+/// 2^k for k in the normal exponent range [-1022, 1023].
+#[inline]
+fn pow2(k: i32) -> f64 {
+    debug_assert!((-1022..=1023).contains(&k));
+    f64::from_bits(((k + 1023) as u64) << 52)
+}
+
+/// The power of two k that puts the largest magnitude among `values` in [1, 2), and
+/// the exponent the smallest non-zero magnitude then has; `None` when every value is
+/// zero, some value is not finite, or scaling by 2^k would be inexact (the smallest
+/// non-zero magnitude would leave the normal range: the values span more than 2^1022).
+fn scaling_exponent(values: impl Iterator<Item = f64>) -> Option<(i32, i32)> {
+    let (mut hi, mut lo) = (0.0f64, f64::INFINITY);
+    for v in values {
+        let m = v.abs();
+        if m > hi || m.is_nan() {
+            hi = m;
+        }
+        if m != 0.0 && m < lo {
+            lo = m;
+        }
+    }
+    if hi == 0.0 || !hi.is_finite() {
         return None;
     }
-    let (den, pd) = cross(bax, bay, dcx, dcy);
-    let (num, pn) = cross(cax, cay, dcx, dcy);
-    let (side_a, pa) = cross(fex, fey, aex, aey);
-    let (side_dir, pb) = cross(fex, fey, bax, bay);
-    let s = den * side_a + num * side_dir;
-    let bound = 12.0 * U * (pd * pa + pn * pb);
-    if s > bound {
-        Some(Sign::Positive)
-    } else if -s > bound {
-        Some(Sign::Negative)
-    } else {
-        None
+    let k = -exponent(hi);
+    let lo_scaled = exponent(lo) + k;
+    (lo_scaled >= -1022).then_some((k, lo_scaled))
+}
+
+/// `x · 2^k` for k ∈ [-1023, 1074] (see [`scaling_exponent`]), by two factors that are
+/// normal powers of two: exact when the result is normal. Scaling down, the first
+/// product stays above the final one; scaling up, below it.
+#[inline]
+fn scaled_by(x: f64, k: i32) -> f64 {
+    x * pow2(k / 2) * pow2(k - k / 2)
+}
+
+impl<const N: usize> Rescaled<N> {
+    /// `None` when every input is zero, some input is not finite, or scaling would be
+    /// inexact (the inputs span more than 2^1022 in magnitude).
+    fn new(points: [Point; N]) -> Option<Rescaled<N>> {
+        let (k, lo) = scaling_exponent(points.iter().flat_map(|p| [p.x, p.y]))?;
+        Some(Rescaled {
+            points: points.map(|p| Point::new(scaled_by(p.x, k), scaled_by(p.y, k))),
+            adaptive: lo >= -400,
+        })
     }
 }
 
-/// Shewchuk's static filter for `l ± r`, each a product of two differences: the sign
-/// of `det` when it is certain, `None` otherwise (including overflow and NaN).
-#[inline]
-fn filtered(left: f64, right: f64, det: f64) -> Option<Sign> {
-    let bound = ORIENT_ERR * (left.abs() + right.abs()) + f64::MIN_POSITIVE;
-    if det > bound {
-        Some(Sign::Positive)
-    } else if -det > bound {
-        Some(Sign::Negative)
-    } else {
-        None
+/// The sign of the signed area of the closed polygon through `points` (twice the
+/// area: Σ xᵢ·yᵢ₊₁ − xᵢ₊₁·yᵢ, positive for counter-clockwise), exactly, for every
+/// finite input: no overflow at any magnitude, no rounding at any size.
+///
+/// The points are scaled by a power of two so that the largest magnitude lies in
+/// [1, 2) (exact unless they span more than 2^1022) and summed in `f64` with an error
+/// bound (recursive summation of n terms: at most γₙ₊₂ times the sum of the terms'
+/// product magnitudes, plus 2^-1074 per underflowing product; we use twice that);
+/// only when the sum is within the bound, or scaling is inexact, are the terms summed
+/// exactly with big integers. O(n) either way; the exact sum costs more per term.
+/// Fewer than three points have area zero.
+///
+/// # Panics
+/// On NaN or infinite coordinates.
+pub fn area_sign(points: &[Point]) -> Sign {
+    let n = points.len();
+    if n < 3 {
+        return Sign::Zero;
     }
+    let edges = || (0..n).map(|i| (points[i], points[(i + 1) % n]));
+    if let Some((k, _)) = scaling_exponent(points.iter().flat_map(|p| [p.x, p.y])) {
+        let s = |p: Point| Point::new(scaled_by(p.x, k), scaled_by(p.y, k));
+        let (mut sum, mut magnitude) = (0.0f64, 0.0f64);
+        for (a, b) in edges() {
+            let (a, b) = (s(a), s(b));
+            let (l, r) = (a.x * b.y, a.y * b.x);
+            sum += l - r;
+            magnitude += l.abs() + r.abs();
+        }
+        let u = f64::EPSILON / 2.0;
+        let count = n as f64;
+        let bound = 2.0 * ((count + 2.0) * u * magnitude + 2.0 * count * f64::from_bits(1));
+        if sum.abs() > bound {
+            return Sign::of(sum);
+        }
+    } else {
+        assert!(points.iter().all(|p| p.is_finite()), "area of non-finite points");
+    }
+    let f = Dyadic::from_f64;
+    edges()
+        .map(|(a, b)| f(a.x) * f(b.y) - f(a.y) * f(b.x))
+        .fold(f(0.0), |acc, t| acc + t)
+        .certain_sign()
+        .expect("dyadic arithmetic is exact")
 }
 
 #[cold]
 #[inline(never)]
 fn orient_slow(a: Point, b: Point, c: Point) -> Orientation {
-    if in_adaptive_range(&[a.x, a.y, b.x, b.y, c.x, c.y]) {
-        let det = robust::orient2d(
-            robust::Coord { x: a.x, y: a.y },
-            robust::Coord { x: b.x, y: b.y },
-            robust::Coord { x: c.x, y: c.y },
-        );
-        Sign::of(det).into()
-    } else {
-        sign_slow(&OrientPoly(a, b, c)).into()
+    if a == b || a == c || b == c {
+        return Orientation::Collinear;
+    }
+    if let Some(r) = Rescaled::new([a, b, c]) {
+        let [a, b, c] = r.points;
+        if let Some(s) = orient_filtered(a, b, c) {
+            return s.into();
+        }
+        if r.adaptive {
+            return robust_orient(a, b, c).into();
+        }
+    }
+    sign_slow(&OrientPoly(a, b, c)).into()
+}
+
+/// Shewchuk's adaptive `orient2d`; exact when every non-zero coordinate is in
+/// [2^-400, 2^400].
+#[inline]
+fn robust_orient(a: Point, b: Point, c: Point) -> Sign {
+    Sign::of(robust::orient2d(
+        robust::Coord { x: a.x, y: a.y },
+        robust::Coord { x: b.x, y: b.y },
+        robust::Coord { x: c.x, y: c.y },
+    ))
+}
+
+/// `x − y` when the floating-point difference is exact (Knuth's two-difference has
+/// no error term), `None` otherwise.
+#[inline]
+fn exact_difference(x: f64, y: f64) -> Option<f64> {
+    let d = x - y;
+    let y_virtual = x - d;
+    let x_virtual = d + y_virtual;
+    let error = (x - x_virtual) + (y_virtual - y);
+    (error == 0.0).then_some(d)
+}
+
+/// The directions `b − a` and `d − c` of a scaled call, when both are exact and
+/// Shewchuk's predicate is exact on them (as coordinates).
+fn exact_directions(r: &Rescaled<4>) -> Option<(Point, Point)> {
+    if !r.adaptive {
+        return None;
+    }
+    let [a, b, c, d] = r.points;
+    Some((
+        Point::new(exact_difference(b.x, a.x)?, exact_difference(b.y, a.y)?),
+        Point::new(exact_difference(d.x, c.x)?, exact_difference(d.y, c.y)?),
+    ))
+}
+
+#[cold]
+#[inline(never)]
+fn cross_slow(a: Point, b: Point, c: Point, d: Point) -> Sign {
+    if a == b || c == d || (a == c && b == d) || (a == d && b == c) {
+        return Sign::Zero;
+    }
+    if let Some(r) = Rescaled::new([a, b, c, d]) {
+        let [sa, sb, sc, sd] = r.points;
+        if let Some(s) = cross_filtered(sa, sb, sc, sd) {
+            return s;
+        }
+        // u × v = orient(u, v, 0): exact when u and v are.
+        if let Some((u, v)) = exact_directions(&r) {
+            return robust_orient(u, v, Point::new(0.0, 0.0));
+        }
+    }
+    sign_slow(&CrossPoly(a, b, c, d))
+}
+
+#[cold]
+#[inline(never)]
+fn dot_slow(a: Point, b: Point, c: Point, d: Point) -> Sign {
+    if a == b || c == d {
+        return Sign::Zero;
+    }
+    if let Some(r) = Rescaled::new([a, b, c, d]) {
+        let [sa, sb, sc, sd] = r.points;
+        if let Some(s) = dot_filtered(sa, sb, sc, sd) {
+            return s;
+        }
+        // u · v = (u.x, −u.y) × (v.y, v.x) = orient((u.x, −u.y), (v.y, v.x), 0).
+        if let Some((u, v)) = exact_directions(&r) {
+            return robust_orient(Point::new(u.x, -u.y), Point::new(v.y, v.x), Point::new(0.0, 0.0));
+        }
+    }
+    sign_slow(&DotPoly(a, b, c, d))
+}
+
+#[cold]
+#[inline(never)]
+fn cross_products_slow(factors: [[Point; 4]; 4]) -> Sign {
+    // A factor whose two points of a pair coincide is exactly zero.
+    let zero = |[a, b, c, d]: [Point; 4]| a == b || c == d;
+    let [f0, f1, f2, f3] = factors;
+    if (zero(f0) || zero(f1)) && (zero(f2) || zero(f3)) {
+        return Sign::Zero;
+    }
+    let flat: [Point; 16] = std::array::from_fn(|i| factors[i / 4][i % 4]);
+    let scaled =
+        Rescaled::new(flat).map(|r| std::array::from_fn(|i| std::array::from_fn(|j| r.points[4 * i + j])));
+    let factors = scaled.unwrap_or(factors);
+    if scaled.is_some()
+        && let Some(s) = cross_products_filtered(&factors)
+    {
+        return s;
+    }
+    let poly = CrossProductsPoly(factors);
+    match poly.eval::<Interval>().certain_sign() {
+        Some(s) => s,
+        None => sign_slow(&poly),
     }
 }
 
@@ -335,176 +639,4 @@ impl Ring for Dyadic {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::kernel::Fast;
-    use rand::rngs::SmallRng;
-    use rand::{Rng, SeedableRng};
-
-    /// The static filter of `line_meet_sign` never claims a wrong sign: random
-    /// points, nearly parallel lines, crossings on or one ulp off the third line,
-    /// tiny and huge magnitudes, all against exact dyadic evaluation.
-    #[test]
-    fn line_meet_filter_never_claims_a_wrong_sign() {
-        let mut rng = SmallRng::seed_from_u64(0x11ee);
-        let mut decided = 0;
-        for i in 0..40_000 {
-            let scale = [1.0, 1e-60, 1e60, 1e-140][(i / 4) % 4];
-            let mut r = || {
-                Point::new(
-                    rng.random_range(-1.0..1.0) * scale,
-                    rng.random_range(-1.0..1.0) * scale,
-                )
-            };
-            let (a, b, c, e) = (r(), r(), r(), r());
-            let mut d = r();
-            if i % 3 == 0 {
-                // Nearly parallel to ab.
-                d = Point::new(c.x + (b.x - a.x) * 1.5, c.y + (b.y - a.y) * 1.5 + scale * 1e-12);
-            }
-            // f chosen so that ef passes (nearly) through the crossing of ab and cd.
-            let den = (b.x - a.x) * (d.y - c.y) - (b.y - a.y) * (d.x - c.x);
-            let num = (c.x - a.x) * (d.y - c.y) - (c.y - a.y) * (d.x - c.x);
-            let t = num / den;
-            let x = Point::new(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y));
-            let mut f = if i % 2 == 0 { x } else { r() };
-            if i % 4 == 1 {
-                f = Point::new(x.x.next_up(), x.y);
-            }
-            if !f.is_finite() {
-                continue;
-            }
-            let pts = [a, b, c, d, e, f];
-            if let Some(sign) = line_meet_filtered(pts) {
-                decided += 1;
-                assert_eq!(sign, sign_slow(&LineMeetSidePoly(pts)), "{pts:?}");
-            }
-        }
-        assert!(decided > 5_000, "the filter decides too little: {decided}");
-    }
-
-    fn exact_orient(a: Point, b: Point, c: Point) -> Orientation {
-        sign_slow(&OrientPoly(a, b, c)).into()
-    }
-
-    #[test]
-    fn decompose_is_exact() {
-        for x in [
-            0.0,
-            -0.0,
-            1.0,
-            -1.5,
-            f64::MAX,
-            f64::MIN_POSITIVE,
-            5e-324,
-            -5e-324,
-            1e300,
-            0.1,
-        ] {
-            let (m, e) = decompose(x);
-            assert_eq!(
-                (m as f64) * 2f64.powi(e as i32 / 2) * 2f64.powi(e as i32 - e as i32 / 2),
-                x
-            );
-        }
-    }
-
-    #[test]
-    fn range_limits_are_powers_of_two() {
-        assert_eq!(ADAPTIVE_MIN, 2f64.powi(-400));
-        assert_eq!(ADAPTIVE_MAX, 2f64.powi(400));
-    }
-
-    #[test]
-    fn orient_matches_exact_fallback_near_collinear_and_at_extremes() {
-        let mut rng = SmallRng::seed_from_u64(0x5eed_0001);
-        let scales = [
-            1.0,
-            2f64.powi(-1000),
-            2f64.powi(960),
-            2f64.powi(-1070),
-            2f64.powi(500),
-        ];
-        let mut fast_wrong = 0;
-        for i in 0..20_000 {
-            let s = scales[i % scales.len()];
-            // Points on a line y = t·x with a one-ulp perturbation, at a large offset.
-            let off = if i % 2 == 0 { 0.0 } else { 2f64.powi(40) };
-            let t: f64 = rng.random_range(-2.0..2.0);
-            let xs: [f64; 3] = [rng.random(), rng.random(), rng.random()];
-            let mut p: Vec<Point> = xs
-                .iter()
-                .map(|&x| Point::new((x + off) * s, (t * x + off) * s))
-                .collect();
-            if rng.random_bool(0.5) {
-                p[2].y = p[2].y.next_up();
-            }
-            let want = exact_orient(p[0], p[1], p[2]);
-            assert_eq!(Exact.orient(p[0], p[1], p[2]), want, "{p:?}");
-            assert_eq!(Exact.orient(p[1], p[0], p[2]), want.reverse());
-            if Fast.orient(p[0], p[1], p[2]) != want {
-                fast_wrong += 1;
-            }
-        }
-        // The fast kernel is measurably wrong on this family; the exact one never is.
-        println!("fast kernel wrong on near-collinear triples: {fast_wrong} of 20000");
-        assert!(
-            fast_wrong > 100,
-            "expected the fast kernel to fail often, got {fast_wrong}"
-        );
-    }
-
-    #[test]
-    fn orient_on_subnormals_and_mixed_magnitudes() {
-        let tiny = 5e-324;
-        let a = Point::new(0.0, 0.0);
-        let b = Point::new(tiny, tiny);
-        let c = Point::new(2.0 * tiny, 2.0 * tiny);
-        assert_eq!(Exact.orient(a, b, c), Orientation::Collinear);
-        let c2 = Point::new(2.0 * tiny, 3.0 * tiny);
-        assert_eq!(Exact.orient(a, b, c2), Orientation::Ccw);
-        // The fast kernel underflows to zero here.
-        assert_eq!(Fast.orient(a, b, c2), Orientation::Collinear);
-        let big = f64::MAX;
-        let p = Point::new(-big, -big);
-        let q = Point::new(big, big);
-        let r = Point::new(0.0, 0.0);
-        assert_eq!(Exact.orient(p, q, r), Orientation::Collinear);
-        assert_eq!(Exact.orient(p, q, Point::new(0.0, tiny)), Orientation::Ccw);
-        assert_eq!(Exact.orient(p, q, Point::new(tiny, 0.0)), Orientation::Cw);
-    }
-
-    #[test]
-    fn interval_filter_never_claims_a_wrong_sign() {
-        let mut rng = SmallRng::seed_from_u64(7);
-        for i in 0..5_000 {
-            let e: i32 = rng.random_range(-1070..1000);
-            let s = 2f64.powi(e);
-            let mut pts: Vec<Point> = (0..4)
-                .map(|_| Point::new(rng.random::<f64>() * s, rng.random::<f64>() * s))
-                .collect();
-            if i % 3 == 0 {
-                // Exactly parallel directions, then nudged by one ulp half of the time.
-                pts[3] = Point::new(pts[2].x + (pts[1].x - pts[0].x), pts[2].y + (pts[1].y - pts[0].y));
-                if i % 2 == 0 {
-                    pts[3].y = pts[3].y.next_up();
-                }
-            }
-            let poly = super::super::CrossPoly(pts[0], pts[1], pts[2], pts[3]);
-            let exact = poly.eval::<Dyadic>().certain_sign();
-            if let Some(s) = poly.eval::<Interval>().certain_sign() {
-                assert_eq!(Some(s), exact);
-            }
-            assert_eq!(Some(Exact.sign(&poly)), exact);
-            assert_eq!(
-                Some(Exact.cross(pts[0], pts[1], pts[2], pts[3])),
-                exact.map(Orientation::from)
-            );
-            let dot = super::super::DotPoly(pts[0], pts[1], pts[2], pts[3]);
-            assert_eq!(
-                Some(Exact.dot(pts[0], pts[1], pts[2], pts[3])),
-                dot.eval::<Dyadic>().certain_sign()
-            );
-        }
-    }
-}
+mod tests;
