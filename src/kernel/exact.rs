@@ -57,12 +57,17 @@ pub struct Exact;
 impl Kernel for Exact {
     const NAME: &'static str = "exact";
 
+    /// The static filter, written so that the answer is the comparison `l > r` of the
+    /// two products (as under [`Fast`](super::Fast)) and the certificate a separate
+    /// branch; then `orient_slow`.
     #[inline]
     fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
-        match orient_filtered(a, b, c) {
-            Some(s) => s.into(),
-            None => orient_slow(a, b, c),
+        let (mut left, mut right) = orient_products(a, b, c);
+        if !certain(left - right, left) {
+            (left, right) = as_products(orient_slow(a, b, c));
         }
+        // `left − right` has the sign of the exact orientation.
+        Sign::of(left - right).into()
     }
 
     /// The interval filter, then the exact fallback. Kept out of line: the kernel's
@@ -79,18 +84,28 @@ impl Kernel for Exact {
     /// Same shape as `orient` (two products of differences), so the same static filter.
     #[inline]
     fn cross(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
-        match cross_filtered(a, b, c, d) {
-            Some(s) => s.into(),
-            None => cross_slow(a, b, c, d).into(),
+        let (left, right) = cross_products(a, b, c, d);
+        if !certain(left - right, left) {
+            return cross_slow(a, b, c, d).into();
+        }
+        if left > right {
+            Orientation::Ccw
+        } else {
+            Orientation::Cw
         }
     }
 
     /// Same shape as `orient` with a sum instead of a difference: the same static filter.
     #[inline]
     fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
-        match dot_filtered(a, b, c, d) {
-            Some(s) => s,
-            None => dot_slow(a, b, c, d),
+        let (left, right) = dot_products(a, b, c, d);
+        if !certain(left + right, left) {
+            return dot_slow(a, b, c, d);
+        }
+        if left > -right {
+            Sign::Positive
+        } else {
+            Sign::Negative
         }
     }
 
@@ -105,35 +120,56 @@ impl Kernel for Exact {
     }
 }
 
-/// Shewchuk's static filter for `det = l − r` (or `l + r` with `sum = l − r`), `l` and
-/// `r` each a product of two differences of inputs: the sign of `det` when it is
+/// The static filter for `det = l − r` or `det = l + r`, `l` and `r` each a product of
+/// two differences of inputs (`orient`, `cross`, `dot`): the sign of `det` when it is
 /// certain, `None` otherwise (including overflow and NaN).
 ///
-/// The bound is `ORIENT_ERR · |sum| + f64::MIN_POSITIVE` with `sum = l + r` for a
-/// difference. When `l` and `r` have the same sign, `|sum| = |l| + |r|` is Shewchuk's
-/// `detsum` and his analysis applies; the added `f64::MIN_POSITIVE` covers the
-/// absolute error (at most 2^-1075 each) of products that underflow. When they have
-/// opposite signs (or one is zero) there is no cancellation: rounding keeps the sign
-/// of each difference and product, so the sign of `det` is the exact sign whenever
-/// `|det|` exceeds the possible underflow error, and `|sum| ≤ |det|` makes the test
-/// no stricter than that. Overflow makes `det` or the bound infinite or NaN, and the
-/// comparison fails.
-///
-/// The returned sign depends on `det` alone; the comparison with the bound is a
-/// separate branch that is always taken the same way on ordinary input.
+/// The test is `|det| > C·|l| + 2·f64::MIN_POSITIVE` (see [`certain`]).
 #[inline(always)]
-fn two_products_filtered(det: f64, sum: f64) -> Option<Sign> {
-    if det.abs() > two_products_bound(sum) {
+fn two_products_filtered(det: f64, l: f64) -> Option<Sign> {
+    if certain(det, l) {
         Some(nonzero_sign(det))
     } else {
         None
     }
 }
 
-/// The error bound of [`two_products_filtered`].
+/// True when the sign of `det` (`l ∓ r`, computed in `f64`) is certain; it is then
+/// non-zero.
+///
+/// Shewchuk's static filter certifies the sign when `|det| ≥ ε₀·fl(|l| + |r|)` with
+/// ε₀ = (3 + 16u)u, u = 2^-53 (`ORIENT_ERR`), whenever `l` and `r` have the same sign;
+/// with opposite signs there is no cancellation and rounding keeps every sign. Products
+/// that underflow add at most 2^-1075 each, which `f64::MIN_POSITIVE` absorbs. We bound
+/// `|r|` by one product instead of adding both: `|r| ≤ |l| + |l ∓ r|` and
+/// `|l ∓ r| ≤ (1 + u)|det|`, so Shewchuk's condition holds when
+/// `|det|·(1 − ε₀(1 + u)²) ≥ 2ε₀(1 + u)·|l| + MIN`, which the computed test with
+/// `C = 2ε₀(1 + 2^-30)` and `2·MIN` implies (the margin covers the test's own two
+/// roundings). One addition fewer than `|l| + |r|` on every call of the hot
+/// predicates. Overflow makes `det` or the bound infinite or NaN, and the comparison
+/// fails.
 #[inline(always)]
-fn two_products_bound(sum: f64) -> f64 {
-    ORIENT_ERR * sum.abs() + f64::MIN_POSITIVE
+fn certain(det: f64, l: f64) -> bool {
+    det.abs() > two_products_bound(l)
+}
+
+/// The right-hand side of [`certain`].
+#[inline(always)]
+fn two_products_bound(l: f64) -> f64 {
+    const C: f64 = 2.0 * ORIENT_ERR * (1.0 + 1.0 / (1u64 << 30) as f64);
+    C * l.abs() + 2.0 * f64::MIN_POSITIVE
+}
+
+/// Two numbers whose difference has the sign `s`: the slow paths' answers take the
+/// place of the two products, so that the fast and the slow path end in the same
+/// comparison instead of merging enum values.
+#[inline(always)]
+fn as_products(s: Sign) -> (f64, f64) {
+    match s {
+        Sign::Negative => (0.0, 1.0),
+        Sign::Zero => (0.0, 0.0),
+        Sign::Positive => (1.0, 0.0),
+    }
 }
 
 /// The sign of a value known to be non-zero (one comparison instead of two).
@@ -142,25 +178,40 @@ fn nonzero_sign(x: f64) -> Sign {
     if x > 0.0 { Sign::Positive } else { Sign::Negative }
 }
 
+/// The two products of `orient`: (a − c) × (b − c) = left − right.
+#[inline(always)]
+fn orient_products(a: Point, b: Point, c: Point) -> (f64, f64) {
+    ((a.x - c.x) * (b.y - c.y), (a.y - c.y) * (b.x - c.x))
+}
+
+/// The two products of `cross`: (b − a) × (d − c) = left − right.
+#[inline(always)]
+fn cross_products(a: Point, b: Point, c: Point, d: Point) -> (f64, f64) {
+    ((b.x - a.x) * (d.y - c.y), (b.y - a.y) * (d.x - c.x))
+}
+
+/// The two products of `dot`: (b − a) · (d − c) = left + right.
+#[inline(always)]
+fn dot_products(a: Point, b: Point, c: Point, d: Point) -> (f64, f64) {
+    ((b.x - a.x) * (d.x - c.x), (b.y - a.y) * (d.y - c.y))
+}
+
 #[inline(always)]
 fn orient_filtered(a: Point, b: Point, c: Point) -> Option<Sign> {
-    let left = (a.x - c.x) * (b.y - c.y);
-    let right = (a.y - c.y) * (b.x - c.x);
-    two_products_filtered(left - right, left + right)
+    let (left, right) = orient_products(a, b, c);
+    two_products_filtered(left - right, left)
 }
 
 #[inline(always)]
 fn cross_filtered(a: Point, b: Point, c: Point, d: Point) -> Option<Sign> {
-    let left = (b.x - a.x) * (d.y - c.y);
-    let right = (b.y - a.y) * (d.x - c.x);
-    two_products_filtered(left - right, left + right)
+    let (left, right) = cross_products(a, b, c, d);
+    two_products_filtered(left - right, left)
 }
 
 #[inline(always)]
 fn dot_filtered(a: Point, b: Point, c: Point, d: Point) -> Option<Sign> {
-    let left = (b.x - a.x) * (d.x - c.x);
-    let right = (b.y - a.y) * (d.y - c.y);
-    two_products_filtered(left + right, left - right)
+    let (left, right) = dot_products(a, b, c, d);
+    two_products_filtered(left + right, left)
 }
 
 /// One factor `(b − a) × (d − c)` of [`Kernel::cross_products_sign`]: its value and
@@ -179,30 +230,28 @@ fn cross_and_magnitude([a, b, c, d]: [Point; 4]) -> (f64, f64) {
 /// magnitude of its products and |C̃ᵢ| ≤ 1.01·Pᵢ; each product `C̃ᵢC̃ⱼ`, rounded, is
 /// within 9.1u·PᵢPⱼ of `CᵢCⱼ`, and the final sum adds u·|S̃|. So
 /// |S̃ − S| ≤ 10.2u·(P₀P₁ + P₂P₃), and the computed magnitudes differ from the true ones
-/// by a factor of at most 1 + 12u; the bound used is 12u times the computed sum.
+/// by a factor of at most 1 + 12u; the bound used is 12u times the computed sum Σ.
 ///
-/// Validity: every computed Pᵢ ≥ 2^-969, so an underflowing product of differences
-/// (absolute error ≤ 2^-1075) adds at most u²·Pᵢ to its factor; the computed sum Σ of
-/// magnitudes lies in [2^-960, 2^1020], so an underflowing product of factors adds at
-/// most 2^-114·Σ, nothing overflowed (a non-finite difference or product makes some Pᵢ
-/// or Σ infinite or NaN) and |S̃| ≤ 2^1021. Both extras fit in the 1.8u·Σ left over.
-/// Otherwise, and when |S̃| is within the bound, `None`.
+/// Validity: every computed Pᵢ ≥ 2^-480, so an underflowing product of differences
+/// (absolute error ≤ 2^-1075) adds at most u²·Pᵢ to its factor, and Σ ≥ 2^-960, so an
+/// underflowing product of factors adds at most 2^-114·Σ; Σ ≤ 2^1020, so nothing
+/// overflowed (a non-finite difference or product makes some Pᵢ or Σ infinite or
+/// NaN, and the comparisons fail) and |S̃| ≤ 2^1021. Both extras fit in the 1.8u·Σ
+/// left over. Otherwise, and when |S̃| is within the bound, `None`.
 #[inline(always)]
 fn cross_products_filtered(factors: &[[Point; 4]; 4]) -> Option<Sign> {
-    let (s, bound) = cross_products_bounded(factors);
-    if s.abs() > bound {
+    let (s, bound, valid) = cross_products_bounded(factors);
+    if s.abs() > bound && valid {
         Some(nonzero_sign(s))
     } else {
         None
     }
 }
 
-/// `S̃` and the error bound of [`cross_products_filtered`]; the bound is infinite when
-/// the validity conditions fail.
+/// `S̃`, the error bound of [`cross_products_filtered`] and whether the bound is valid.
 #[inline(always)]
-fn cross_products_bounded(factors: &[[Point; 4]; 4]) -> (f64, f64) {
-    const TINY_FACTOR: f64 = f64::from_bits((1023 - 969) << 52); // 2^-969
-    const TINY_SUM: f64 = f64::from_bits((1023 - 960) << 52); // 2^-960
+fn cross_products_bounded(factors: &[[Point; 4]; 4]) -> (f64, f64, bool) {
+    const TINY_FACTOR: f64 = f64::from_bits((1023 - 480) << 52); // 2^-480
     const HUGE_SUM: f64 = f64::from_bits((1023 + 1020) << 52); // 2^1020
     let (c0, p0) = cross_and_magnitude(factors[0]);
     let (c1, p1) = cross_and_magnitude(factors[1]);
@@ -210,17 +259,12 @@ fn cross_products_bounded(factors: &[[Point; 4]; 4]) -> (f64, f64) {
     let (c3, p3) = cross_and_magnitude(factors[3]);
     let s = c0 * c1 + c2 * c3;
     let sum = p0 * p1 + p2 * p3;
-    let valid = (p0 >= TINY_FACTOR)
-        & (p1 >= TINY_FACTOR)
-        & (p2 >= TINY_FACTOR)
-        & (p3 >= TINY_FACTOR)
-        & (TINY_SUM..=HUGE_SUM).contains(&sum);
-    let bound = if valid {
-        12.0 * (f64::EPSILON / 2.0) * sum
-    } else {
-        f64::INFINITY
-    };
-    (s, bound)
+    // Plain comparisons rather than `f64::min`: a NaN magnitude makes `sum` NaN, which
+    // fails the range test anyway.
+    let min = |x: f64, y: f64| if x < y { x } else { y };
+    let valid = min(min(p0, p1), min(p2, p3)) >= TINY_FACTOR && sum <= HUGE_SUM;
+    let bound = 12.0 * (f64::EPSILON / 2.0) * sum;
+    (s, bound, valid)
 }
 
 /// The inputs of one predicate call scaled by a common power of two so that the
@@ -342,20 +386,20 @@ pub fn area_sign(points: &[Point]) -> Sign {
 
 #[cold]
 #[inline(never)]
-fn orient_slow(a: Point, b: Point, c: Point) -> Orientation {
+fn orient_slow(a: Point, b: Point, c: Point) -> Sign {
     if a == b || a == c || b == c {
-        return Orientation::Collinear;
+        return Sign::Zero;
     }
     if let Some(r) = Rescaled::new([a, b, c]) {
         let [a, b, c] = r.points;
         if let Some(s) = orient_filtered(a, b, c) {
-            return s.into();
+            return s;
         }
         if r.adaptive {
-            return robust_orient(a, b, c).into();
+            return robust_orient(a, b, c);
         }
     }
-    sign_slow(&OrientPoly(a, b, c)).into()
+    sign_slow(&OrientPoly(a, b, c))
 }
 
 /// Shewchuk's adaptive `orient2d`; exact when every non-zero coordinate is in
