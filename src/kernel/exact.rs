@@ -57,17 +57,17 @@ pub struct Exact;
 impl Kernel for Exact {
     const NAME: &'static str = "exact";
 
-    /// The static filter, written so that the answer is the comparison `l > r` of the
-    /// two products (as under [`Fast`](super::Fast)) and the certificate a separate
-    /// branch; then `orient_slow`.
+    /// The static filter, written so that the answer is the sign of the computed
+    /// determinant (as under [`Fast`](super::Fast)) and the certificate a separate
+    /// branch; an uncertain determinant is replaced by ±1 or 0 from `orient_slow`.
     #[inline]
     fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
-        let (mut left, mut right) = orient_products(a, b, c);
-        if !certain(left - right, left) {
-            (left, right) = as_products(orient_slow(a, b, c));
+        let (left, right) = orient_products(a, b, c);
+        let mut det = left - right;
+        if !certain(det, left) {
+            det = as_value(orient_slow(a, b, c));
         }
-        // `left − right` has the sign of the exact orientation.
-        Sign::of(left - right).into()
+        Sign::of(det).into()
     }
 
     /// The interval filter, then the exact fallback. Kept out of line: the kernel's
@@ -85,28 +85,22 @@ impl Kernel for Exact {
     #[inline]
     fn cross(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
         let (left, right) = cross_products(a, b, c, d);
-        if !certain(left - right, left) {
-            return cross_slow(a, b, c, d).into();
+        let mut det = left - right;
+        if !certain(det, left) {
+            det = as_value(cross_slow(a, b, c, d));
         }
-        if left > right {
-            Orientation::Ccw
-        } else {
-            Orientation::Cw
-        }
+        Sign::of(det).into()
     }
 
     /// Same shape as `orient` with a sum instead of a difference: the same static filter.
     #[inline]
     fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
         let (left, right) = dot_products(a, b, c, d);
-        if !certain(left + right, left) {
-            return dot_slow(a, b, c, d);
+        let mut det = left + right;
+        if !certain(det, left) {
+            det = as_value(dot_slow(a, b, c, d));
         }
-        if left > -right {
-            Sign::Positive
-        } else {
-            Sign::Negative
-        }
+        Sign::of(det)
     }
 
     /// A static filter (see `cross_products_filtered`), then rescaling, intervals and
@@ -160,15 +154,15 @@ fn two_products_bound(l: f64) -> f64 {
     C * l.abs() + 2.0 * f64::MIN_POSITIVE
 }
 
-/// Two numbers whose difference has the sign `s`: the slow paths' answers take the
-/// place of the two products, so that the fast and the slow path end in the same
-/// comparison instead of merging enum values.
+/// A number of sign `s`: the slow paths' answers take the place of the computed
+/// determinant, so that the fast and the slow path end in the same sign test (the
+/// one [`Fast`](super::Fast) makes) instead of merging enum values.
 #[inline(always)]
-fn as_products(s: Sign) -> (f64, f64) {
+fn as_value(s: Sign) -> f64 {
     match s {
-        Sign::Negative => (0.0, 1.0),
-        Sign::Zero => (0.0, 0.0),
-        Sign::Positive => (1.0, 0.0),
+        Sign::Negative => -1.0,
+        Sign::Zero => 0.0,
+        Sign::Positive => 1.0,
     }
 }
 
