@@ -85,11 +85,14 @@ impl Kernel for Exact {
     #[inline]
     fn cross(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
         let (left, right) = cross_products(a, b, c, d);
-        let mut det = left - right;
-        if !certain(det, left) {
-            det = as_value(cross_slow(a, b, c, d));
+        if !certain(left - right, left) {
+            return cross_slow(a, b, c, d).into();
         }
-        Sign::of(det).into()
+        if left > right {
+            Orientation::Ccw
+        } else {
+            Orientation::Cw
+        }
     }
 
     /// Same shape as `orient` with a sum instead of a difference: the same static filter.
