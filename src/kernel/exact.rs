@@ -211,11 +211,18 @@ fn dot_filtered(a: Point, b: Point, c: Point, d: Point) -> Option<Sign> {
     two_products_filtered(left + right, left)
 }
 
-/// One factor `(b − a) × (d − c)` of [`Kernel::cross_products_sign`]: its value and
-/// the magnitude `|l| + |r|` of its two products.
+/// The differences `[b.x − a.x, b.y − a.y, d.x − c.x, d.y − c.y]` of one factor
+/// `(b − a) × (d − c)` of [`Kernel::cross_products_sign`].
 #[inline(always)]
-fn cross_and_magnitude([a, b, c, d]: [Point; 4]) -> (f64, f64) {
-    let (l, r) = ((b.x - a.x) * (d.y - c.y), (b.y - a.y) * (d.x - c.x));
+fn factor_differences([a, b, c, d]: [Point; 4]) -> [f64; 4] {
+    [b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y]
+}
+
+/// One factor from its differences `[ux, uy, vx, vy]`: its value `ux·vy − uy·vx` and the
+/// magnitude `|l| + |r|` of its two products.
+#[inline(always)]
+fn cross_and_magnitude([ux, uy, vx, vy]: [f64; 4]) -> (f64, f64) {
+    let (l, r) = (ux * vy, uy * vx);
     (l - r, l.abs() + r.abs())
 }
 
@@ -248,12 +255,19 @@ fn cross_products_filtered(factors: &[[Point; 4]; 4]) -> Option<Sign> {
 /// `S̃`, the error bound of [`cross_products_filtered`] and whether the bound is valid.
 #[inline(always)]
 fn cross_products_bounded(factors: &[[Point; 4]; 4]) -> (f64, f64, bool) {
+    cross_products_from_differences(factors.map(factor_differences))
+}
+
+/// [`cross_products_bounded`] from the factors' differences (computed in `f64`, or
+/// those scaled exactly by a power of two: the analysis is the same).
+#[inline(always)]
+fn cross_products_from_differences(d: [[f64; 4]; 4]) -> (f64, f64, bool) {
     const TINY_FACTOR: f64 = f64::from_bits((1023 - 480) << 52); // 2^-480
     const HUGE_SUM: f64 = f64::from_bits((1023 + 1020) << 52); // 2^1020
-    let (c0, p0) = cross_and_magnitude(factors[0]);
-    let (c1, p1) = cross_and_magnitude(factors[1]);
-    let (c2, p2) = cross_and_magnitude(factors[2]);
-    let (c3, p3) = cross_and_magnitude(factors[3]);
+    let (c0, p0) = cross_and_magnitude(d[0]);
+    let (c1, p1) = cross_and_magnitude(d[1]);
+    let (c2, p2) = cross_and_magnitude(d[2]);
+    let (c3, p3) = cross_and_magnitude(d[3]);
     let s = c0 * c1 + c2 * c3;
     let sum = p0 * p1 + p2 * p3;
     // Plain comparisons rather than `f64::min`: a NaN magnitude makes `sum` NaN, which
@@ -297,17 +311,14 @@ fn pow2(k: i32) -> f64 {
 /// zero, some value is not finite, or scaling by 2^k would be inexact (the smallest
 /// non-zero magnitude would leave the normal range: the values span more than 2^1022).
 fn scaling_exponent(values: impl Iterator<Item = f64>) -> Option<(i32, i32)> {
-    let (mut hi, mut lo) = (0.0f64, f64::INFINITY);
+    let (mut hi, mut lo, mut nan) = (0.0f64, f64::INFINITY, false);
     for v in values {
         let m = v.abs();
-        if m > hi || m.is_nan() {
-            hi = m;
-        }
-        if m != 0.0 && m < lo {
-            lo = m;
-        }
+        nan |= m.is_nan();
+        hi = if m > hi { m } else { hi };
+        lo = if m != 0.0 && m < lo { m } else { lo };
     }
-    if hi == 0.0 || !hi.is_finite() {
+    if nan || hi == 0.0 || hi == f64::INFINITY {
         return None;
     }
     let k = -exponent(hi);
@@ -315,24 +326,84 @@ fn scaling_exponent(values: impl Iterator<Item = f64>) -> Option<(i32, i32)> {
     (lo_scaled >= -1022).then_some((k, lo_scaled))
 }
 
-/// `x · 2^k` for k ∈ [-1023, 1074] (see [`scaling_exponent`]), by two factors that are
-/// normal powers of two: exact when the result is normal. Scaling down, the first
-/// product stays above the final one; scaling up, below it.
+/// Factors whose product, applied left to right, multiplies by 2^k for k ∈ [-1023, 1074]
+/// (see [`scaling_exponent`]): one normal power of two where there is one, else two.
+/// Exact whenever the result is normal: scaling down, the first product stays above
+/// the final one; scaling up, below it.
+#[inline]
+fn scale_factors(k: i32) -> (f64, f64) {
+    if (-1022..=1023).contains(&k) {
+        (pow2(k), 1.0)
+    } else {
+        (pow2(k / 2), pow2(k - k / 2))
+    }
+}
+
+/// `x · 2^k`, exact when the result is normal (see [`scale_factors`]).
 #[inline]
 fn scaled_by(x: f64, k: i32) -> f64 {
-    x * pow2(k / 2) * pow2(k - k / 2)
+    let (s1, s2) = scale_factors(k);
+    scale_with(x, k, s1, s2)
+}
+
+/// `x · s1 · s2` with `(s1, s2) = scale_factors(k)`. A subnormal `x` (m · 2^-1074, m
+/// its integer mantissa) is scaled as the integer m times 2^(k − 1074) instead:
+/// the same exact product, but without a subnormal operand, which x86 processors
+/// handle in microcode at about a hundred times the cost of a multiplication.
+#[inline(always)]
+fn scale_with(x: f64, k: i32, s1: f64, s2: f64) -> f64 {
+    if x.abs() >= f64::MIN_POSITIVE || x == 0.0 {
+        return x * s1 * s2;
+    }
+    let bits = x.to_bits();
+    let m = (bits & ((1u64 << 52) - 1)) as f64;
+    let (t1, t2) = scale_factors(k - 1074);
+    let y = m * t1 * t2;
+    if bits >> 63 == 1 { -y } else { y }
 }
 
 impl<const N: usize> Rescaled<N> {
     /// `None` when every input is zero, some input is not finite, or scaling would be
     /// inexact (the inputs span more than 2^1022 in magnitude).
+    #[inline]
     fn new(points: [Point; N]) -> Option<Rescaled<N>> {
         let (k, lo) = scaling_exponent(points.iter().flat_map(|p| [p.x, p.y]))?;
+        let (s1, s2) = scale_factors(k);
+        let s = |v: f64| scale_with(v, k, s1, s2);
         Some(Rescaled {
-            points: points.map(|p| Point::new(scaled_by(p.x, k), scaled_by(p.y, k))),
+            points: points.map(|p| Point::new(s(p.x), s(p.y))),
             adaptive: lo >= -400,
         })
     }
+}
+
+/// The differences of one predicate call, computed in `f64` as the static filter
+/// computes them, multiplied by the power of two that puts the largest in [1, 2).
+/// `None` when a difference overflowed (inputs near ±`f64::MAX`) or all are zero.
+///
+/// The static filters stay valid on the result: every predicate here is a homogeneous
+/// polynomial in such differences, and the scaling is exact except for differences
+/// that it moves below the normal range, which it rounds with an absolute error of at
+/// most 2^-1075. Each such error, times a difference below 2 in magnitude, adds at most
+/// 2^-1074 to a product: far inside the `2·f64::MIN_POSITIVE` that the two-product
+/// filter adds to its bound, and a relative 2^-593 of a factor that the degree-4
+/// filter accepts (its factors' magnitudes are at least 2^-480). Everything else is
+/// the unscaled computation, exactly scaled.
+#[inline(always)]
+fn scaled_differences<const N: usize>(d: [f64; N]) -> Option<[f64; N]> {
+    let hi = d
+        .iter()
+        .fold(0.0f64, |hi, v| if v.abs() > hi { v.abs() } else { hi });
+    if hi == 0.0 || !hi.is_finite() {
+        return None;
+    }
+    let k = -exponent(hi);
+    let (s1, s2) = scale_factors(k);
+    let mut out = d;
+    for v in &mut out {
+        *v = scale_with(*v, k, s1, s2);
+    }
+    Some(out)
 }
 
 /// The sign of the signed area of the closed polygon through `points` (twice the
@@ -384,6 +455,12 @@ pub fn area_sign(points: &[Point]) -> Sign {
 #[cold]
 #[inline(never)]
 fn orient_slow(a: Point, b: Point, c: Point) -> Sign {
+    if let Some([dx1, dy1, dx2, dy2]) = scaled_differences([a.x - c.x, a.y - c.y, b.x - c.x, b.y - c.y]) {
+        let (l, r) = (dx1 * dy2, dy1 * dx2);
+        if certain(l - r, l) {
+            return nonzero_sign(l - r);
+        }
+    }
     if a == b || a == c || b == c {
         return Sign::Zero;
     }
@@ -437,6 +514,12 @@ fn exact_directions(r: &Rescaled<4>) -> Option<(Point, Point)> {
 #[cold]
 #[inline(never)]
 fn cross_slow(a: Point, b: Point, c: Point, d: Point) -> Sign {
+    if let Some([ux, uy, vx, vy]) = scaled_differences([b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y]) {
+        let (l, r) = (ux * vy, uy * vx);
+        if certain(l - r, l) {
+            return nonzero_sign(l - r);
+        }
+    }
     if a == b || c == d || (a == c && b == d) || (a == d && b == c) {
         return Sign::Zero;
     }
@@ -456,6 +539,12 @@ fn cross_slow(a: Point, b: Point, c: Point, d: Point) -> Sign {
 #[cold]
 #[inline(never)]
 fn dot_slow(a: Point, b: Point, c: Point, d: Point) -> Sign {
+    if let Some([ux, uy, vx, vy]) = scaled_differences([b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y]) {
+        let (l, r) = (ux * vx, uy * vy);
+        if certain(l + r, l) {
+            return nonzero_sign(l + r);
+        }
+    }
     if a == b || c == d {
         return Sign::Zero;
     }
@@ -475,6 +564,14 @@ fn dot_slow(a: Point, b: Point, c: Point, d: Point) -> Sign {
 #[cold]
 #[inline(never)]
 fn cross_products_slow(factors: [[Point; 4]; 4]) -> Sign {
+    let d = factors.map(factor_differences);
+    if let Some(sd) = scaled_differences(std::array::from_fn::<f64, 16, _>(|i| d[i / 4][i % 4])) {
+        let (s, bound, valid) =
+            cross_products_from_differences(std::array::from_fn(|i| std::array::from_fn(|j| sd[4 * i + j])));
+        if valid && s.abs() > bound {
+            return nonzero_sign(s);
+        }
+    }
     // A factor whose two points of a pair coincide is exactly zero.
     let zero = |[a, b, c, d]: [Point; 4]| a == b || c == d;
     let [f0, f1, f2, f3] = factors;

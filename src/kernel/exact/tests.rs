@@ -240,6 +240,34 @@ fn fallback_layers_match_big_integers() {
             assert_eq!(cross_products_slow(factors), exact_products(factors));
         }
     }
+    // Every coordinate at its own magnitude, from subnormal to near f64::MAX: the
+    // scaled differences underflow, the coordinates cannot be rescaled exactly.
+    for i in 0..20_000 {
+        let mut c = || {
+            let e = rng.random_range(-1074..1020);
+            rng.random_range(-1.0..1.0) * 2f64.powi(e / 2) * 2f64.powi(e - e / 2)
+        };
+        let (a, b, d) = (p(c(), c()), p(c(), c()), p(c(), c()));
+        let t = [0.5, 0.25, 2.0][i % 3];
+        let mid = p(a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t);
+        let c = if i % 2 == 0 { mid } else { p(c(), c()) };
+        if [a, b, c, d, mid].iter().any(|q| !q.is_finite()) {
+            continue;
+        }
+        assert_eq!(
+            orient_slow(a, b, c),
+            sign_slow(&OrientPoly(a, b, c)),
+            "{a:?} {b:?} {c:?}"
+        );
+        assert_eq!(cross_slow(a, b, c, d), sign_slow(&CrossPoly(a, b, c, d)));
+        assert_eq!(dot_slow(a, b, c, d), sign_slow(&DotPoly(a, b, c, d)));
+        let factors = line_meet_factors([a, b, c, d, mid, c]);
+        assert_eq!(
+            cross_products_slow(factors),
+            exact_products(factors),
+            "{factors:?}"
+        );
+    }
     // Inputs spanning more than 2^1022 in one call cannot be rescaled: big integers.
     let (a, b) = (p(0.0, 0.0), p(big, tiny));
     assert!(Rescaled::new([a, b, p(2.0 * big, 2.0 * tiny)]).is_none());
