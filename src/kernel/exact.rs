@@ -1,34 +1,40 @@
 //! The exact kernel: correct signs for every finite `f64` input.
 //!
 //! # Layers
-//! 1. **Static filter.** The predicate is evaluated in `f64` together with a bound on
-//!    its rounding error; when the result is farther from zero than the bound, its sign
-//!    is the exact sign. `orient`, `cross` and `dot` (two products of differences) use
-//!    Shewchuk's bound `(3 + 16ε)ε · |l ± r|` plus `f64::MIN_POSITIVE` to absorb
-//!    underflow; [`Kernel::cross_products_sign`] (degree 4) uses `12ε·(P₀P₁ + P₂P₃)`
-//!    with Pᵢ the magnitude of factor i's two products (derivation at
-//!    `cross_products_filtered`). On ordinary input this layer decides essentially
-//!    every call, and it is written so that the sign it returns depends only on the
-//!    floating-point value (the certificate is a separate, always-predicted branch):
-//!    the algorithms' unpredictable branches then wait no longer than under
-//!    [`Fast`](super::Fast).
-//! 2. **Out of line, when the filter cannot decide:**
+//! 1. **Static filter** (inline). The predicate is evaluated in `f64` together with a
+//!    bound on its rounding error; when the result is farther from zero than the
+//!    bound, its sign is the exact sign. `orient`, `cross` and `dot` (two products
+//!    `l`, `r` of differences) certify `l ∓ r` when `|l ∓ r| > 2ε₀(1 + 2^-30)·|l| +
+//!    2·f64::MIN_POSITIVE`, ε₀ = (3 + 16u)u, u = 2^-53, which implies Shewchuk's
+//!    condition (derivation at `certain`); [`Kernel::cross_products_sign`] (degree 4)
+//!    uses `12u·(P₀P₁ + P₂P₃)` with Pᵢ the magnitude of factor i's two products
+//!    (derivation at `cross_products_filtered`). On ordinary input this layer decides
+//!    every call but those with coincident points. It is written so that the answer
+//!    is the same sign test of the computed value that [`Fast`](super::Fast) makes,
+//!    and the certificate a separate branch that ordinary input always takes the
+//!    same way: the algorithms' unpredictable branches wait no longer than under
+//!    `Fast`.
+//! 2. **Out of line** (`#[cold]`), when the filter cannot decide:
+//!    * *Scaled differences.* Every predicate here is a homogeneous polynomial in
+//!      differences of inputs. The differences the filter computed are multiplied by
+//!      the power of two that puts the largest in [1, 2) and the filter runs again
+//!      (`scaled_differences` says why that stays valid even where it rounds tiny
+//!      differences). This decides well-conditioned calls whose products overflowed
+//!      or underflowed: coordinates near 2^±600, subnormal, or huge and tiny mixed,
+//!      as long as no difference overflows. Subnormal values are scaled through their
+//!      integer mantissas: x86 processors handle subnormal operands in microcode.
 //!    * *Structural zeros.* Coincident points (a repeated point in `orient`, a zero
 //!      vector in `cross` or `dot`, one segment crossed with itself) answer zero
 //!      without arithmetic. Algorithms ask such questions on every input (a chain's
-//!      end against itself), so they must not cost more.
-//!    * *Rescaling.* Every predicate here is a homogeneous polynomial, so scaling all
-//!      of one call's inputs by the same power of two keeps its sign. The inputs are
-//!      scaled (by exponent arithmetic: exact) so that the largest magnitude lies in
-//!      [1, 2), unless that would push the smallest non-zero one below the normal
-//!      range, and the static filter runs again. Well-conditioned calls on
-//!      coordinates near 2^±600, near `f64::MAX` or subnormal are decided here, at a
-//!      few times the cost of the first filter; only calls whose own inputs span more
-//!      than 2^1022 in magnitude cannot be rescaled.
+//!      end against itself).
+//!    * *Rescaled coordinates.* The inputs themselves are scaled so that the largest
+//!      magnitude lies in [1, 2), when that is exact (the smallest non-zero one stays
+//!      normal: inputs spanning at most 2^1022), and filtered again (this catches
+//!      differences that overflowed near ±`f64::MAX`).
 //!    * *Adaptive.* `orient`, and `cross` and `dot` when their coordinate differences
 //!      are exact, go to Shewchuk's adaptive `orient2d` (the `robust` crate), whose
 //!      expansion arithmetic is exact as long as no intermediate product overflows or
-//!      underflows. That holds when every non-zero (scaled) coordinate has magnitude
+//!      underflows. That holds when every non-zero (rescaled) coordinate has magnitude
 //!      in [2^-400, 2^400] ([`in_adaptive_range`]): every difference and expansion
 //!      component is then a multiple of 2^-453 and every product a multiple of
 //!      2^-906 (above the subnormal range) and below 2^804. Degree-4 predicates and
@@ -38,6 +44,15 @@
 //!    nearly degenerate degree-4 calls) is evaluated on the exact dyadic values
 //!    `m · 2^e` of the inputs with big integers ([`Dyadic`]). No finite input is
 //!    refused and none is misjudged; the cost is paid only by near-degenerate calls.
+//!
+//! # Cost
+//! Measured in docs/results.md: on random input the exact kernel costs 1.2–1.5× the
+//! fast one in the O(log n) algorithms (whose work is almost all predicates) and
+//! nothing measurable in CLM and Convert; validation plus the crossings sweep at
+//! 2^±600 or near `f64::MAX` costs about 1.3× the same input at scale 1, subnormal
+//! input about 2× (the filter's own products of subnormal differences take the
+//! microcode path), and predicates that mix magnitudes more than 2^1022 apart within
+//! one call fall to big integers when nearly degenerate.
 
 use super::{CrossPoly, CrossProductsPoly, DotPoly, Kernel, Orientation, Point, Polynomial, Ring, Sign};
 use num_bigint::BigInt;
