@@ -413,10 +413,19 @@ fn scaled_differences<const N: usize>(d: [f64; N]) -> Option<[f64; N]> {
         return None;
     }
     let k = -exponent(hi);
-    let (s1, s2) = scale_factors(k);
     let mut out = d;
-    for v in &mut out {
-        *v = scale_with(*v, k, s1, s2);
+    if (-1022..=1022).contains(&k) {
+        // The largest difference is normal: one multiplication each by a normal power
+        // of two (a subnormal difference next to it is rare: mixed magnitudes).
+        let s = pow2(k);
+        for v in &mut out {
+            *v *= s;
+        }
+    } else {
+        let (s1, s2) = scale_factors(k);
+        for v in &mut out {
+            *v = scale_with(*v, k, s1, s2);
+        }
     }
     Some(out)
 }
