@@ -445,12 +445,23 @@ fn scaled_differences<const N: usize>(d: [f64; N]) -> Option<[f64; N]> {
 /// # Panics
 /// On NaN or infinite coordinates.
 pub fn area_sign(points: &[Point]) -> Sign {
-    let n = points.len();
+    area_sign_of(points.len(), |i| points[i])
+}
+
+/// [`area_sign`] of the closed polygon whose `n` vertices are `at(0)`, …, `at(n − 1)`,
+/// for callers that hold the vertices in another form (indices into an input list).
+///
+/// # Panics
+/// On NaN or infinite coordinates.
+pub fn area_sign_of(n: usize, at: impl Fn(usize) -> Point) -> Sign {
     if n < 3 {
         return Sign::Zero;
     }
-    let edges = || (0..n).map(|i| (points[i], points[(i + 1) % n]));
-    if let Some((k, _)) = scaling_exponent(points.iter().flat_map(|p| [p.x, p.y])) {
+    let edges = || (0..n).map(|i| (at(i), at(if i + 1 == n { 0 } else { i + 1 })));
+    if let Some((k, _)) = scaling_exponent((0..n).flat_map(|i| {
+        let p = at(i);
+        [p.x, p.y]
+    })) {
         let s = |p: Point| Point::new(scaled_by(p.x, k), scaled_by(p.y, k));
         let (mut sum, mut magnitude) = (0.0f64, 0.0f64);
         for (a, b) in edges() {
@@ -466,7 +477,7 @@ pub fn area_sign(points: &[Point]) -> Sign {
             return Sign::of(sum);
         }
     } else {
-        assert!(points.iter().all(|p| p.is_finite()), "area of non-finite points");
+        assert!((0..n).all(|i| at(i).is_finite()), "area of non-finite points");
     }
     let f = Dyadic::from_f64;
     edges()
