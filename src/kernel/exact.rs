@@ -158,11 +158,14 @@ fn two_products_filtered(det: f64, l: f64) -> Option<Sign> {
 /// `|det|·(1 − ε₀(1 + u)²) ≥ 2ε₀(1 + u)·|l| + MIN`, which the computed test with
 /// `C = 2ε₀(1 + 2^-30)` and `2·MIN` implies (the margin covers the test's own two
 /// roundings). One addition fewer than `|l| + |r|` on every call of the hot
-/// predicates. Overflow makes `det` or the bound infinite or NaN, and the comparison
-/// fails.
+/// predicates. The analysis assumes finite differences and products, so `det` must be
+/// finite too: a difference that overflows (`f64::MAX − (−f64::MAX)`) times a tiny
+/// one is an infinite `r` whose exact value is tiny, next to a finite `l` (and an
+/// infinite `l` makes the bound infinite or `det` NaN).
 #[inline(always)]
 fn certain(det: f64, l: f64) -> bool {
-    det.abs() > two_products_bound(l)
+    let m = det.abs();
+    m > two_products_bound(l) && m < f64::INFINITY
 }
 
 /// The right-hand side of [`certain`].
@@ -362,12 +365,14 @@ fn scaled_by(x: f64, k: i32) -> f64 {
 }
 
 /// `x · s1 · s2` with `(s1, s2) = scale_factors(k)`. A subnormal `x` (m · 2^-1074, m
-/// its integer mantissa) is scaled as the integer m times 2^(k − 1074) instead:
-/// the same exact product, but without a subnormal operand, which x86 processors
-/// handle in microcode at about a hundred times the cost of a multiplication.
+/// its integer mantissa) scaled up (k > 0) is scaled as the integer m times
+/// 2^(k − 1074) instead: the same exact product, but without a subnormal operand,
+/// which x86 processors handle in microcode at about a hundred times the cost of a
+/// multiplication. Scaled down, a subnormal only rounds further (towards zero), and
+/// 2^(k − 1074) would not be a valid factor.
 #[inline(always)]
 fn scale_with(x: f64, k: i32, s1: f64, s2: f64) -> f64 {
-    if x.abs() >= f64::MIN_POSITIVE || x == 0.0 {
+    if x.abs() >= f64::MIN_POSITIVE || x == 0.0 || k <= 0 {
         return x * s1 * s2;
     }
     let bits = x.to_bits();

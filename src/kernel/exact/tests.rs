@@ -551,3 +551,42 @@ fn area_sign_is_exact() {
         assert_eq!(area_sign(&pts), exact);
     }
 }
+
+/// Differences next to `f64::MAX` beside subnormal ones: the largest difference needs
+/// the two-factor scaling down by 2^1023, which must also scale the subnormal ones
+/// (found by the fuzz driver: a wrong Chazelle–Dobkin answer and invalid hulls).
+#[test]
+fn subnormal_differences_beside_f64_max() {
+    let p = Point::new;
+    let pts = [
+        p(-f64::MAX, -5e-324),
+        p(1125899906842647.5, -0.0),
+        p(1125899906842613.8, 1125899906842602.0),
+        p(0.9999999999999999, 1125899906842653.8),
+        p(-f64::MAX, 1e-300),
+        p(-f64::MAX, 1125899906842634.3),
+        p(-80.0, -7.052634219591294e113),
+        p(119.0, -80.0),
+        p(f64::MAX, 5e-324),
+    ];
+    let n = pts.len();
+    for &a in &pts {
+        for &b in &pts {
+            for &c in &pts {
+                assert_eq!(Exact.orient(a, b, c), exact_orient(a, b, c), "{a:?} {b:?} {c:?}");
+                for &d in &pts {
+                    let cross: Orientation = sign_slow(&CrossPoly(a, b, c, d)).into();
+                    assert_eq!(Exact.cross(a, b, c, d), cross, "{a:?} {b:?} {c:?} {d:?}");
+                    let dot = sign_slow(&DotPoly(a, b, c, d));
+                    assert_eq!(Exact.dot(a, b, c, d), dot, "{a:?} {b:?} {c:?} {d:?}");
+                }
+            }
+        }
+    }
+    let mut rng = SmallRng::seed_from_u64(0x5b_a11);
+    for _ in 0..20_000 {
+        let f: [[Point; 4]; 4] =
+            std::array::from_fn(|_| std::array::from_fn(|_| pts[rng.random_range(0..n)]));
+        assert_eq!(Exact.cross_products_sign(f), exact_products(f), "{f:?}");
+    }
+}
