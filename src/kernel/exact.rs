@@ -46,13 +46,14 @@
 //!    refused and none is misjudged; the cost is paid only by near-degenerate calls.
 //!
 //! # Cost
-//! Measured in docs/results.md: on random input the exact kernel costs 1.2–1.5× the
-//! fast one in the O(log n) algorithms (whose work is almost all predicates) and
-//! nothing measurable in CLM and Convert; validation plus the crossings sweep at
-//! 2^±600 or near `f64::MAX` costs about 1.3× the same input at scale 1, subnormal
-//! input about 2× (the filter's own products of subnormal differences take the
-//! microcode path), and predicates that mix magnitudes more than 2^1022 apart within
-//! one call fall to big integers when nearly degenerate.
+//! Measured in docs/results.md: on random input the exact kernel costs 1.3–1.5× the
+//! fast one's instructions in the O(log n) algorithms (whose work is almost all
+//! predicates; 1.2–1.8× their time) and about 1.0–1.1× in CLM. Validation plus the
+//! crossings sweep at 2^±600 or near `f64::MAX` measured 1.5–2.4× the same input at
+//! scale 1 in a heavily loaded run whose control (no slow path) came out 1.7×;
+//! subnormal input 2.4× (the filter's own products of subnormal differences take the
+//! microcode path). Predicates that mix magnitudes more than 2^1022 apart within one
+//! call fall to big integers when nearly degenerate.
 
 use super::{CrossPoly, CrossProductsPoly, DotPoly, Kernel, Orientation, Point, Polynomial, Ring, Sign};
 use num_bigint::BigInt;
@@ -160,19 +161,22 @@ fn two_products_filtered(det: f64, l: f64) -> Option<Sign> {
 /// roundings). One addition fewer than `|l| + |r|` on every call of the hot
 /// predicates. The analysis assumes finite differences and products, so `det` must be
 /// finite too: a difference that overflows (`f64::MAX − (−f64::MAX)`) times a tiny
-/// one is an infinite `r` whose exact value is tiny, next to a finite `l` (and an
-/// infinite `l` makes the bound infinite or `det` NaN).
+/// one is an infinite `r` whose exact value is tiny, next to a finite `l`. The bound
+/// therefore also adds 2^-60·|det| (a larger bound is still a valid one), which is
+/// infinite exactly when `det` is: without a second branch, `|det| > bound` fails for
+/// an infinite `det` as it does for an infinite `l` (infinite bound) and for NaN.
 #[inline(always)]
 fn certain(det: f64, l: f64) -> bool {
     let m = det.abs();
-    m > two_products_bound(l) && m < f64::INFINITY
+    m > two_products_bound(l, m)
 }
 
-/// The right-hand side of [`certain`].
+/// The right-hand side of [`certain`], for `m = |det|`.
 #[inline(always)]
-fn two_products_bound(l: f64) -> f64 {
+fn two_products_bound(l: f64, m: f64) -> f64 {
     const C: f64 = 2.0 * ORIENT_ERR * (1.0 + 1.0 / (1u64 << 30) as f64);
-    C * l.abs() + 2.0 * f64::MIN_POSITIVE
+    const INFINITE_WITH_DET: f64 = 1.0 / (1u64 << 60) as f64;
+    C * l.abs() + (INFINITE_WITH_DET * m + 2.0 * f64::MIN_POSITIVE)
 }
 
 /// A number of sign `s`: the slow paths' answers take the place of the computed

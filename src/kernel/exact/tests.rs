@@ -121,7 +121,12 @@ fn filters_at_their_bound() {
         let left = (a.x - c.x) * (b.y - c.y);
         let right = (a.y - c.y) * (b.x - c.x);
         let got = orient_filtered(a, b, c);
-        note(0, left - right, two_products_bound(left), got.is_some());
+        note(
+            0,
+            left - right,
+            two_products_bound(left, (left - right).abs()),
+            got.is_some(),
+        );
         if let Some(s) = got {
             assert_eq!(s, sign_slow(&OrientPoly(a, b, c)), "orient {a:?} {b:?} {c:?}");
         }
@@ -130,7 +135,12 @@ fn filters_at_their_bound() {
         let left = (b.x - a.x) * (d.y - c.y);
         let right = (b.y - a.y) * (d.x - c.x);
         let got = cross_filtered(a, b, c, d);
-        note(1, left - right, two_products_bound(left), got.is_some());
+        note(
+            1,
+            left - right,
+            two_products_bound(left, (left - right).abs()),
+            got.is_some(),
+        );
         if let Some(s) = got {
             assert_eq!(
                 s,
@@ -143,7 +153,12 @@ fn filters_at_their_bound() {
         let left = (b.x - a.x) * (d.x - c.x);
         let right = (b.y - a.y) * (d.y - c.y);
         let got = dot_filtered(a, b, c, d);
-        note(2, left + right, two_products_bound(left), got.is_some());
+        note(
+            2,
+            left + right,
+            two_products_bound(left, (left + right).abs()),
+            got.is_some(),
+        );
         if let Some(s) = got {
             assert_eq!(s, sign_slow(&DotPoly(a, b, c, d)), "dot {a:?} {b:?} {c:?} {d:?}");
         }
