@@ -2,7 +2,7 @@
 //! handles, error messages and their sources, the checked regular polygon, `Point`
 //! arithmetic, the `rand` re-export.
 
-use polysect::generate::{regular_polygon, try_regular_polygon};
+use polysect::generate::{GenerateError, MAX_VERTICES, regular_polygon, try_regular_polygon};
 use polysect::rand::SeedableRng;
 use polysect::rand::rngs::SmallRng;
 use polysect::store::{PolygonId, Scene, SceneError};
@@ -94,40 +94,33 @@ fn scene_errors_name_the_polygon_and_expose_their_source() {
 
 #[test]
 fn regular_polygon_refuses_what_is_not_a_polygon() {
-    assert_eq!(
-        try_regular_polygon(2, 1.0),
-        Err(PolygonError::TooFewVertices { distinct: 2 })
-    );
-    assert_eq!(
-        try_regular_polygon(0, 1.0),
-        Err(PolygonError::TooFewVertices { distinct: 0 })
-    );
-    assert_eq!(
-        try_regular_polygon(5, 0.0),
-        Err(PolygonError::TooFewVertices { distinct: 1 })
-    );
+    for radius in [0.0, -0.0, -2.0, f64::INFINITY, f64::NEG_INFINITY, f64::NAN] {
+        assert!(
+            matches!(
+                try_regular_polygon(5, radius),
+                Err(GenerateError::InvalidParameters(_))
+            ),
+            "radius {radius}"
+        );
+    }
     assert!(matches!(
-        try_regular_polygon(5, f64::INFINITY),
-        Err(PolygonError::NonFinite { .. })
+        try_regular_polygon(MAX_VERTICES + 1, 1.0),
+        Err(GenerateError::InvalidParameters(_))
     ));
-    assert!(matches!(
-        try_regular_polygon(5, f64::NAN),
-        Err(PolygonError::NonFinite { .. })
-    ));
+    // Fewer than 3 vertices are taken as 3, like every generator.
+    assert_eq!(try_regular_polygon(2, 1.0).unwrap().len(), 3);
     // A subnormal radius rounds vertices together: fewer vertices, or an error.
     if let Ok(p) = try_regular_polygon(7, f64::from_bits(1)) {
         assert!(p.len() < 7);
         p.debug_validate().unwrap();
     }
-    let p = try_regular_polygon(3, -2.0).unwrap();
-    assert_eq!(p.vertices()[0], Point::new(-2.0, 0.0));
     assert_eq!(regular_polygon(6, 1.0).len(), 6);
 }
 
 #[test]
-#[should_panic(expected = "regular_polygon(2, 1.0): a polygon needs at least 3 distinct vertices, found 2")]
+#[should_panic(expected = "regular_polygon(5, 0.0): invalid generator parameters")]
 fn regular_polygon_panics_with_the_reason() {
-    let _ = regular_polygon(2, 1.0);
+    let _ = regular_polygon(5, 0.0);
 }
 
 #[test]

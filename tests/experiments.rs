@@ -16,6 +16,7 @@ fn tiny(out: &Path) -> Config {
         trade_n: 16,
         trade_pairs: 4,
         trade_circle_log2: 8,
+        ratio_log2_sizes: vec![6, 8],
         factor_log2_sizes: vec![6],
         factors: vec![0.5, 1.0],
         progress: false,
@@ -121,7 +122,27 @@ fn every_experiment_writes_csv_and_svg() {
             assert_eq!(w, 0);
         }
     }
+    for r in column(&header, &rows, "exact_over_fast") {
+        let r: f64 = r.parse().unwrap();
+        assert!(r > 0.0 && r.is_finite(), "{r}");
+    }
+    // The exact kernel's overhead: every algorithm at every size, positive times.
+    let (header, rows) = read_csv(&dir.join("trade_ratio.csv"));
+    assert_eq!(rows.len(), 2 * polysect::intersect::Algorithm::ALL.len());
+    assert_eq!(
+        column(&header, &rows, "n")
+            .into_iter()
+            .collect::<std::collections::BTreeSet<_>>(),
+        ["256", "64"].into_iter().collect()
+    );
+    for name in ["fast_ns", "exact_ns", "exact_over_fast"] {
+        for v in column(&header, &rows, name) {
+            let v: f64 = v.parse().unwrap();
+            assert!(v > 0.0 && v.is_finite(), "{name}: {v}");
+        }
+    }
     let md = fs::read_to_string(dir.join("trade.md")).unwrap();
+    assert!(md.contains("Exact kernel time / fast kernel time"), "{md}");
     assert!(
         md.lines().filter(|l| l.starts_with("| ")).count() > 2 * polysect::intersect::Algorithm::ALL.len()
     );

@@ -506,7 +506,8 @@ fn gen_pairs(
     };
     let mut out = BufWriter::new(io::stdout().lock());
     for i in 0..count {
-        let (p, q) = generate::pair(family, n, relation, &mut rng);
+        let (p, q) = generate::try_pair(family, n, relation, &mut rng)
+            .map_err(|e| io::Error::new(io::ErrorKind::InvalidInput, e))?;
         let expected = Algorithm::Linear.intersects(Precision::Exact, &p, &q);
         let mut write_order = |poly: &ConvexPolygon| {
             let mut v = poly.vertices().to_vec();

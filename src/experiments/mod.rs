@@ -9,7 +9,7 @@
 //! | `densities` | the O(log n) tests on uniform against non-uniform (piecewise-linear) angle densities | 4.2.4 | `densities.csv`, `densities.svg` |
 //! | `sqrt` | CLM's time divided by √n | 4.3.1, Fig. 4.6 | `clm_sqrt.csv`, `clm_sqrt.svg` |
 //! | `crossover` | CLM against Convert (walk the lists, then Barba) on linked polygons, and the n from which sampling wins | 4.4, Fig. 4.8 | `crossover.csv`, `crossover.svg` |
-//! | `trade` | every algorithm × kernel on adversarial families: time per query and wrong answers against [`Linear`](crate::intersect::Linear) under the exact kernel | | `trade.csv`, `trade.md`, `trade.svg` |
+//! | `trade` | every algorithm × kernel on adversarial families: time per query and wrong answers against [`Linear`](crate::intersect::Linear) under the exact kernel; the exact kernel's overhead (exact/fast time) per algorithm on random rotated ellipses at [`Config::ratio_log2_sizes`] | | `trade.csv`, `trade_ratio.csv`, `trade.md`, `trade.svg` |
 //! | `clm-factor` | CLM's time against its sample factor c (samples of ⌈c·√n⌉) | | `clm_factor.csv`, `clm_factor.svg` |
 //!
 //! # Sizes
@@ -130,6 +130,9 @@ pub struct Config {
     pub trade_pairs: usize,
     /// log2 of the big circle's size in the trade experiment (the issue asks for 20).
     pub trade_circle_log2: u32,
+    /// log2 of the sizes at which the trade experiment measures the exact kernel's
+    /// overhead (exact time / fast time) on random rotated ellipses.
+    pub ratio_log2_sizes: Vec<u32>,
     /// Sizes and factors of the CLM sample-factor experiment.
     pub factor_log2_sizes: Vec<u32>,
     pub factors: Vec<f64>,
@@ -151,6 +154,7 @@ impl Config {
             trade_n: 256,
             trade_pairs: 40,
             trade_circle_log2: 20,
+            ratio_log2_sizes: vec![10, 14, 18],
             factor_log2_sizes: vec![12, 16, 20],
             factors: vec![0.25, 0.5, 1.0, 2.0, 4.0],
             progress: true,

@@ -13,7 +13,18 @@
 //! | `circle` | a regular 2^k-gon of radius 1 against a small triangle whose tip lies a few ulps inside or outside the boundary |
 //!
 //! A query that panics (a fast-kernel answer can break an algorithm's invariants)
-//! counts as wrong and is not timed; the `panics` column reports them.
+//! counts as wrong and is not timed; the `panics` column reports them. The
+//! `exact_over_fast` column is the algorithm's exact median time over its fast one on
+//! that case.
+//!
+//! # The exact kernel's overhead
+//! A second table (`trade_ratio.csv`) measures what exactness costs on ordinary input:
+//! random rotated ellipses ([`Family::Rotated`], any relation) at the sizes
+//! [`Config::ratio_log2_sizes`], [`Config::pairs_for`] pairs each. For each pair and
+//! algorithm the fast and the exact query are timed in turn, three times each (fast,
+//! exact, fast, exact, …, so a drift of the machine's speed hits both), each a timed
+//! loop of [`Config::min_time`] / 2; the pair's ratio is the median exact time over
+//! the median fast time, and the table reports the median over the pairs.
 
 use super::measure::{median, time_per_query};
 use super::plot::{Chart, Series};
@@ -268,6 +279,7 @@ pub(crate) fn run(config: &Config) -> io::Result<Report> {
     }
     std::panic::set_hook(hook);
     bar.finish();
+    let ratios = overhead(config, &mut rng);
 
     let mut report = Report::default();
     let mut csv = Csv::new(&[
@@ -278,10 +290,15 @@ pub(crate) fn run(config: &Config) -> io::Result<Report> {
         "wrong",
         "panics",
         "median_ns",
+        "exact_over_fast",
     ]);
     for (ci, &case) in cases.iter().enumerate() {
         for (ai, &(alg, precision)) in combos.iter().enumerate() {
             let c = &cells[ci][ai];
+            let time = |k: Precision| {
+                let i = combos.iter().position(|&x| x == (alg, k)).expect("both kernels");
+                cells[ci][i].median_ns
+            };
             csv.row(&[
                 case.into(),
                 alg.to_string(),
@@ -290,10 +307,30 @@ pub(crate) fn run(config: &Config) -> io::Result<Report> {
                 c.wrong.to_string(),
                 c.panics.to_string(),
                 ns(c.median_ns),
+                format!("{:.4}", time(Precision::Exact) / time(Precision::Fast)),
             ]);
         }
     }
     csv.write(&config.out, "trade.csv", &mut report)?;
+    let mut ratio_csv = Csv::new(&[
+        "n",
+        "algorithm",
+        "pairs",
+        "fast_ns",
+        "exact_ns",
+        "exact_over_fast",
+    ]);
+    for r in &ratios {
+        ratio_csv.row(&[
+            r.n.to_string(),
+            r.algorithm.to_string(),
+            r.pairs.to_string(),
+            ns(r.fast_ns),
+            ns(r.exact_ns),
+            format!("{:.4}", r.ratio),
+        ]);
+    }
+    ratio_csv.write(&config.out, "trade_ratio.csv", &mut report)?;
 
     let mut md =
         String::from("Wrong answers / pairs, and median time per query, per case.\n\n| algorithm | kernel |");
@@ -335,6 +372,7 @@ pub(crate) fn run(config: &Config) -> io::Result<Report> {
             vec![(rate, cells[0][ai].median_ns)],
         ));
     }
+    md.push_str(&overhead_table(&ratios));
     let path = config.out.join("trade.md");
     std::fs::write(&path, &md).map_err(super::naming(&path, "cannot write"))?;
     report.files.push("trade.md".into());
@@ -350,6 +388,92 @@ pub(crate) fn run(config: &Config) -> io::Result<Report> {
     draw(config, &mut report, "trade.svg", &chart, &scatter)?;
     report.summary = md;
     Ok(report)
+}
+
+/// The exact kernel's overhead for one algorithm at one size.
+struct Overhead {
+    n: usize,
+    algorithm: Algorithm,
+    pairs: usize,
+    /// Median over the pairs of the median fast / exact time per query.
+    fast_ns: f64,
+    exact_ns: f64,
+    /// Median over the pairs of exact / fast.
+    ratio: f64,
+}
+
+/// Exact against fast on random rotated ellipses, interleaved per pair (module docs).
+fn overhead(config: &Config, rng: &mut SmallRng) -> Vec<Overhead> {
+    let bar = super::progress(config, "overhead", config.ratio_log2_sizes.len());
+    let min_time = config.min_time / 2;
+    let mut out = Vec::new();
+    for &log2 in &config.ratio_log2_sizes {
+        let n = 1usize << log2;
+        bar.set_message(format!("n = 2^{log2}"));
+        let mut prepared: Vec<PreparedPair> = (0..config.pairs_for(n))
+            .map(|i| {
+                let (p, q) = generate::pair(Family::Rotated, n, Relation::Any, rng);
+                PreparedPair::new(p, q, config.seed ^ i as u64)
+            })
+            .collect();
+        for &alg in Algorithm::ALL {
+            let (mut fast, mut exact, mut ratio) = (Vec::new(), Vec::new(), Vec::new());
+            for pp in prepared.iter_mut() {
+                let (mut f, mut e) = (Vec::new(), Vec::new());
+                for _ in 0..3 {
+                    f.push(time_per_query(min_time, || pp.query(alg, Precision::Fast)));
+                    e.push(time_per_query(min_time, || pp.query(alg, Precision::Exact)));
+                }
+                let (f, e) = (median(&mut f), median(&mut e));
+                fast.push(f);
+                exact.push(e);
+                ratio.push(e / f);
+            }
+            out.push(Overhead {
+                n,
+                algorithm: alg,
+                pairs: prepared.len(),
+                fast_ns: median(&mut fast),
+                exact_ns: median(&mut exact),
+                ratio: median(&mut ratio),
+            });
+        }
+        bar.inc(1);
+    }
+    bar.finish();
+    out
+}
+
+/// The overhead as a markdown table: one row per algorithm, one column per size.
+fn overhead_table(ratios: &[Overhead]) -> String {
+    let mut sizes: Vec<usize> = ratios.iter().map(|r| r.n).collect();
+    sizes.dedup();
+    let mut md = String::from(
+        "\nExact kernel time / fast kernel time on random rotated ellipses (median over pairs \
+         of interleaved measurements; exact and fast ns per query in parentheses).\n\n| algorithm |",
+    );
+    for n in &sizes {
+        md.push_str(&format!(" n = 2^{} |", n.trailing_zeros()));
+    }
+    md.push_str("\n|---|");
+    md.push_str(&"---|".repeat(sizes.len()));
+    md.push('\n');
+    for &alg in Algorithm::ALL {
+        md.push_str(&format!("| {alg} |"));
+        for &n in &sizes {
+            match ratios.iter().find(|r| r.n == n && r.algorithm == alg) {
+                Some(r) => md.push_str(&format!(
+                    " {:.2} ({} / {}) |",
+                    r.ratio,
+                    short_ns(r.exact_ns),
+                    short_ns(r.fast_ns)
+                )),
+                None => md.push_str(" – |"),
+            }
+        }
+        md.push('\n');
+    }
+    md
 }
 
 #[cfg(test)]

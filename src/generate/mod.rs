@@ -17,13 +17,32 @@
 
 pub mod simple;
 
+pub use simple::GenerateError;
+
 use crate::intersect::{ArrayIntersection, Linear};
 use crate::kernel::Point;
-use crate::polygon::{ConvexPolygon, PolygonError, convex_hull};
+use crate::polygon::{ConvexPolygon, convex_hull};
 use rand::Rng;
 use std::f64::consts::TAU;
 use std::fmt;
 use std::str::FromStr;
+
+/// The most vertices any generator puts in one polygon (2^26, about 1 GiB of points).
+/// Larger requests are refused with [`GenerateError::InvalidParameters`] before
+/// anything is allocated: an allocation that fails aborts the process, and a size
+/// near `usize::MAX` would.
+pub const MAX_VERTICES: usize = 1 << 26;
+
+/// Refuses vertex counts above [`MAX_VERTICES`].
+fn check_size(n: usize) -> Result<(), GenerateError> {
+    if n > MAX_VERTICES {
+        Err(GenerateError::InvalidParameters(format!(
+            "{n} vertices is more than the {MAX_VERTICES} a generator makes"
+        )))
+    } else {
+        Ok(())
+    }
+}
 
 /// A generator family; see the module table.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -112,7 +131,9 @@ pub enum Relation {
 #[derive(Clone, Debug, PartialEq)]
 pub enum Density {
     Uniform,
-    /// Piecewise linear through `weights[i]` at i / (len − 1) (thesis 4.2.4).
+    /// Piecewise linear through `weights[i]` at i / (len − 1) (thesis 4.2.4). Only the
+    /// weights' ratios matter. A weight that is negative, NaN or infinite counts as
+    /// zero; with fewer than two weights, or none positive, the density is uniform.
     PiecewiseLinear {
         weights: Vec<f64>,
     },
@@ -129,11 +150,18 @@ impl Density {
         Density::PiecewiseLinear { weights }
     }
 
-    /// One sample in [0, 1].
+    /// One sample in [0, 1]. Never panics, whatever the weights (see [`Density`]).
     pub fn sample<R: Rng + ?Sized>(&self, rng: &mut R) -> f64 {
         match self {
             Density::Uniform => rng.random_range(0.0..1.0),
             Density::PiecewiseLinear { weights } => {
+                // Usable weights, scaled so that the largest is 1 (their sum cannot overflow).
+                let usable = |w: f64| if w.is_finite() && w > 0.0 { w } else { 0.0 };
+                let top = weights.iter().map(|&w| usable(w)).fold(0.0, f64::max);
+                if weights.len() < 2 || top == 0.0 {
+                    return rng.random_range(0.0..1.0);
+                }
+                let weights: Vec<f64> = weights.iter().map(|&w| usable(w) / top).collect();
                 let k = weights.len() - 1;
                 let areas: Vec<f64> = weights.windows(2).map(|w| w[0] + w[1]).collect();
                 let mut pick = rng.random_range(0.0..areas.iter().sum::<f64>());
@@ -161,12 +189,31 @@ impl Density {
 /// A random convex polygon with about `n` vertices on an ellipse: axes in (0.05, 1],
 /// angles from `density`, optionally rotated, translated by a vector in [-1, 1]²;
 /// the array starts at the leftmost vertex (rotate it with [`ConvexPolygon::rotated`]).
+/// Fewer than 3 vertices are taken as 3.
+///
+/// # Panics
+/// When `n` exceeds [`MAX_VERTICES`]; [`try_ellipse_polygon`] returns an error instead.
+#[track_caller]
 pub fn ellipse_polygon<R: Rng + ?Sized>(
     rng: &mut R,
     n: usize,
     density: &Density,
     rotate: bool,
 ) -> ConvexPolygon {
+    try_ellipse_polygon(rng, n, density, rotate).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// [`ellipse_polygon`], refusing more than [`MAX_VERTICES`] vertices.
+///
+/// # Errors
+/// [`GenerateError::InvalidParameters`] when `n` exceeds [`MAX_VERTICES`].
+pub fn try_ellipse_polygon<R: Rng + ?Sized>(
+    rng: &mut R,
+    n: usize,
+    density: &Density,
+    rotate: bool,
+) -> Result<ConvexPolygon, GenerateError> {
+    check_size(n)?;
     let n = n.max(3);
     loop {
         let (a, b) = (rng.random_range(0.05..=1.0), rng.random_range(0.05..=1.0));
@@ -181,19 +228,19 @@ pub fn ellipse_polygon<R: Rng + ?Sized>(
             })
             .collect();
         if let Ok(h) = convex_hull(&pts) {
-            return h;
+            return Ok(h);
         }
     }
 }
 
 /// A regular n-gon of the given radius centred at the origin, first vertex at angle 0
-/// (vertex i at angle 2πi/n, coordinates rounded). Panics on bad parameters; see
-/// [`try_regular_polygon`] for the checked form.
+/// (vertex i at angle 2πi/n, coordinates rounded; fewer than 3 vertices taken as 3).
+/// Where rounding makes the points non-convex (a huge n, a radius near the subnormal
+/// range) the polygon is their convex hull, with fewer vertices. Panics on bad
+/// parameters; see [`try_regular_polygon`] for the checked form.
 ///
 /// # Panics
-/// When [`try_regular_polygon`] returns an error: `n < 3`, a zero, NaN or infinite
-/// radius, or a radius so small (or an `n` so large) that the rounded vertices are no
-/// longer strictly convex.
+/// When [`try_regular_polygon`] refuses the parameters.
 ///
 /// ```
 /// use polysect::generate::regular_polygon;
@@ -209,51 +256,76 @@ pub fn regular_polygon(n: usize, radius: f64) -> ConvexPolygon {
     }
 }
 
-/// A regular n-gon of the given radius centred at the origin, first vertex at angle 0,
-/// validated like every polygon. O(n). Where rounding merges or straightens vertices
-/// (a subnormal radius, a huge n) cleaning drops them, so the result can have fewer
-/// than n vertices: [`ConvexPolygon::len`] tells.
+/// [`regular_polygon`], refusing what cannot give a polygon. O(n); memory 16 bytes a
+/// vertex for the points plus the polygon itself.
 ///
 /// # Errors
-/// [`PolygonError::TooFewVertices`] for `n < 3` or a zero radius (every vertex at the
-/// origin), [`PolygonError::NonFinite`] for a NaN or infinite radius, and any other
-/// validation error when rounding makes the vertices collinear or reflex (a subnormal
-/// radius, or an `n` so large that neighbouring turns round flat). A negative radius
-/// is a half-turn of the polygon of radius |r|. Memory: 16 bytes a vertex for the
-/// points plus the polygon itself.
+/// [`GenerateError::InvalidParameters`] for a radius that is not finite and positive,
+/// for more than [`MAX_VERTICES`] vertices, and for a radius so small that the rounded
+/// points have no area.
 ///
 /// ```
-/// use polysect::generate::try_regular_polygon;
-/// use polysect::PolygonError;
+/// use polysect::generate::{GenerateError, try_regular_polygon};
 /// assert_eq!(try_regular_polygon(4, 1.0)?.len(), 4);
-/// assert_eq!(try_regular_polygon(2, 1.0), Err(PolygonError::TooFewVertices { distinct: 2 }));
-/// assert_eq!(try_regular_polygon(5, 0.0), Err(PolygonError::TooFewVertices { distinct: 1 }));
-/// assert!(matches!(try_regular_polygon(5, f64::NAN), Err(PolygonError::NonFinite { .. })));
-/// # Ok::<(), PolygonError>(())
+/// assert!(matches!(try_regular_polygon(5, 0.0), Err(GenerateError::InvalidParameters(_))));
+/// assert!(matches!(try_regular_polygon(5, f64::NAN), Err(GenerateError::InvalidParameters(_))));
+/// # Ok::<(), GenerateError>(())
 /// ```
-pub fn try_regular_polygon(n: usize, radius: f64) -> Result<ConvexPolygon, PolygonError> {
-    let pts = (0..n).map(|i| {
-        let t = TAU * i as f64 / n as f64;
-        Point::new(radius * t.cos(), radius * t.sin())
-    });
-    ConvexPolygon::new(pts)
+pub fn try_regular_polygon(n: usize, radius: f64) -> Result<ConvexPolygon, GenerateError> {
+    check_size(n)?;
+    if !(radius.is_finite() && radius > 0.0) {
+        return Err(GenerateError::InvalidParameters(format!(
+            "a regular polygon needs a finite radius > 0, got {radius}"
+        )));
+    }
+    let n = n.max(3);
+    let pts: Vec<Point> = (0..n)
+        .map(|i| {
+            let t = TAU * i as f64 / n as f64;
+            Point::new(radius * t.cos(), radius * t.sin())
+        })
+        .collect();
+    ConvexPolygon::new(pts.iter().copied())
+        .or_else(|_| convex_hull(&pts))
+        .map_err(|e| {
+            GenerateError::InvalidParameters(format!("radius {radius} rounds the points together: {e}"))
+        })
 }
 
-/// A generated pair from `family` with about `n` vertices per polygon, steered by `relation`.
+/// A generated pair from `family` with about `n` vertices per polygon (fewer than 3
+/// taken as 3), steered by `relation`.
+///
+/// # Panics
+/// When `n` exceeds [`MAX_VERTICES`]; [`try_pair`] returns an error instead.
+#[track_caller]
 pub fn pair<R: Rng + ?Sized>(
     family: Family,
     n: usize,
     relation: Relation,
     rng: &mut R,
 ) -> (ConvexPolygon, ConvexPolygon) {
-    match family {
+    try_pair(family, n, relation, rng).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// [`pair`], refusing more than [`MAX_VERTICES`] vertices.
+///
+/// # Errors
+/// [`GenerateError::InvalidParameters`] when `n` exceeds [`MAX_VERTICES`].
+pub fn try_pair<R: Rng + ?Sized>(
+    family: Family,
+    n: usize,
+    relation: Relation,
+    rng: &mut R,
+) -> Result<(ConvexPolygon, ConvexPolygon), GenerateError> {
+    check_size(n)?;
+    Ok(match family {
         Family::Ellipse | Family::Rotated | Family::NonUniform => ellipse_pair(family, n, relation, rng),
         Family::SharedVertex | Family::VertexOnEdge | Family::SharedEdge | Family::OverlappingEdges => {
             touching_pair(family, n, relation, rng)
         }
         Family::Nested => nested_pair(n, relation, rng),
         Family::OneUlpGap => one_ulp_pair(n, relation, rng),
-    }
+    })
 }
 
 fn ellipse_polygon_of(family: Family, n: usize, rng: &mut (impl Rng + ?Sized)) -> ConvexPolygon {

@@ -25,6 +25,7 @@
 //! construction degenerate; every result is validated by [`SimplePolygon::new`] and
 //! a failed attempt is redrawn, up to [`MAX_ATTEMPTS`] times.
 
+use super::MAX_VERTICES;
 use crate::kernel::{Exact, Kernel, Orientation, Point};
 use crate::polygon::SimplePolygon;
 use rand::Rng;
@@ -50,12 +51,17 @@ pub enum PointDistribution {
     Grid { size: u32 },
 }
 
+/// The largest radius r = √(−2 ln u₁) of a Box–Muller sample: u₁ = 1 − U with U a
+/// multiple of 2^-53 below 1, so u₁ ≥ 2^-53 and r ≤ √(106 ln 2) < 8.58.
+const BOX_MULLER_MAX_RADIUS: f64 = 8.58;
+
 impl PointDistribution {
-    /// One random point.
+    /// One random point. Never panics; for parameters that [`validate`](Self::validate)
+    /// refuses the point is unspecified and may be NaN or infinite.
     pub fn sample<R: Rng + ?Sized>(&self, rng: &mut R) -> Point {
         match *self {
             PointDistribution::Uniform { min, max } => {
-                Point::new(rng.random_range(min..max), rng.random_range(min..max))
+                Point::new(uniform(min, max, rng), uniform(min, max, rng))
             }
             PointDistribution::Normal { mean, sigma } => {
                 // Box–Muller: u1 in (0, 1] keeps the logarithm finite.
@@ -65,10 +71,46 @@ impl PointDistribution {
                 let (s, c) = (TAU * u2).sin_cos();
                 Point::new(mean + sigma * r * c, mean + sigma * r * s)
             }
+            PointDistribution::Grid { size: 0 } => Point::new(f64::NAN, f64::NAN),
             PointDistribution::Grid { size } => {
                 Point::new(rng.random_range(0..size) as f64, rng.random_range(0..size) as f64)
             }
         }
+    }
+
+    /// Whether every sample is a finite point: a finite non-empty uniform range (its
+    /// width may exceed `f64::MAX`); a finite mean and a sigma > 0 small enough that
+    /// mean ± 8.58·sigma, the farthest a sample can land, is finite; a grid of size ≥ 1.
+    ///
+    /// # Errors
+    /// [`GenerateError::InvalidParameters`], saying which parameter is wrong.
+    pub fn validate(&self) -> Result<(), GenerateError> {
+        let bad = |what: String| Err(GenerateError::InvalidParameters(what));
+        match *self {
+            PointDistribution::Uniform { min, max } => {
+                if !(min.is_finite() && max.is_finite() && min < max) {
+                    return bad(format!("uniform range [{min}, {max}) is empty or not finite"));
+                }
+            }
+            PointDistribution::Normal { mean, sigma } => {
+                if !(mean.is_finite() && sigma.is_finite() && sigma > 0.0) {
+                    return bad(format!(
+                        "normal distribution needs a finite mean and sigma > 0 (got {mean}, {sigma})"
+                    ));
+                }
+                if !(mean.abs() + BOX_MULLER_MAX_RADIUS * sigma).is_finite() {
+                    return bad(format!(
+                        "normal samples reach mean ± {BOX_MULLER_MAX_RADIUS}·sigma, which overflows f64 (mean {mean}, sigma {sigma})"
+                    ));
+                }
+            }
+            PointDistribution::Grid { size } => {
+                if size == 0 {
+                    return bad("a grid of size 0 has no points".into());
+                }
+            }
+        }
+        Ok(())
     }
 
     /// The centre the star-shaped generator sorts around. For the grid it is the
@@ -92,26 +134,31 @@ impl PointDistribution {
         if n < 3 {
             return bad(format!("a polygon needs at least 3 vertices, asked for {n}"));
         }
-        match *self {
-            PointDistribution::Uniform { min, max } => {
-                if !(min.is_finite() && max.is_finite() && min < max) {
-                    return bad(format!("uniform range [{min}, {max}) is empty or not finite"));
-                }
-            }
-            PointDistribution::Normal { mean, sigma } => {
-                if !(mean.is_finite() && sigma.is_finite() && sigma > 0.0) {
-                    return bad(format!(
-                        "normal distribution needs a finite mean and sigma > 0 (got {mean}, {sigma})"
-                    ));
-                }
-            }
-            PointDistribution::Grid { size } => {
-                if (size as usize).saturating_mul(size as usize) < n {
-                    return bad(format!("a {size}x{size} grid has fewer than {n} points"));
-                }
-            }
+        if n > MAX_VERTICES {
+            return bad(format!(
+                "{n} vertices is more than the {MAX_VERTICES} a generator makes"
+            ));
+        }
+        self.validate()?;
+        if let PointDistribution::Grid { size } = *self
+            && (size as usize).saturating_mul(size as usize) < n
+        {
+            return bad(format!("a {size}x{size} grid has fewer than {n} points"));
         }
         Ok(())
+    }
+}
+
+/// Uniform in [min, max). A range wider than `f64::MAX` (which the `rand` sampler
+/// refuses) is sampled as the convex combination min·(1 − u) + max·u, which cannot
+/// overflow; a result rounded up to `max` becomes its predecessor.
+fn uniform<R: Rng + ?Sized>(min: f64, max: f64, rng: &mut R) -> f64 {
+    if min < max && (max - min).is_finite() {
+        rng.random_range(min..max)
+    } else {
+        let u: f64 = rng.random();
+        let x = min * (1.0 - u) + max * u;
+        if x < max { x } else { max.next_down() }
     }
 }
 
@@ -155,8 +202,9 @@ impl FromStr for SimpleMethod {
 /// Why a generator returned no polygon.
 #[derive(Clone, Debug, PartialEq)]
 pub enum GenerateError {
-    /// The parameters cannot give a polygon (fewer than 3 vertices, an empty range,
-    /// a grid with too few points).
+    /// The parameters cannot give a polygon (fewer than 3 or more than
+    /// [`MAX_VERTICES`] vertices, an empty or non-finite range, samples that would
+    /// overflow, a grid with too few points, a radius that is zero or not finite).
     InvalidParameters(String),
     /// [`MAX_ATTEMPTS`] point sets in a row gave degenerate constructions.
     GaveUp { attempts: usize },
@@ -207,8 +255,9 @@ pub fn random_points<R: Rng + ?Sized>(
 /// result can have fewer than `n` vertices on a grid.
 ///
 /// # Errors
-/// [`GenerateError`] for impossible parameters, or when [`MAX_ATTEMPTS`] draws in a
-/// row were degenerate.
+/// [`GenerateError`] for impossible parameters (see [`PointDistribution::validate`];
+/// n below 3 or above [`MAX_VERTICES`]), or when [`MAX_ATTEMPTS`] draws in a row were
+/// degenerate (a tiny range or sigma that rounds the points together, a grid).
 ///
 /// ```
 /// use polysect::generate::simple::{random_simple_polygon, PointDistribution, SimpleMethod};
@@ -244,11 +293,12 @@ pub fn random_simple_polygon<R: Rng + ?Sized>(
 }
 
 /// Orders `points` (distinct) into a polygon by space partitioning (see the module
-/// docs). `None` when a degenerate split (collinear points) blocks the construction.
+/// docs). `None` when a degenerate split (collinear points) blocks the construction,
+/// or for fewer than 3 points or a non-finite one.
 /// The result is simple when no three points are collinear; validate it otherwise.
 pub fn space_partition<R: Rng + ?Sized>(points: &[Point], rng: &mut R) -> Option<Vec<Point>> {
     let n = points.len();
-    if n < 3 {
+    if n < 3 || points.iter().any(|p| !p.is_finite()) {
         return None;
     }
     // Points on the line through s_f and s_l join the left side; the right side must
@@ -329,7 +379,12 @@ fn chain<R: Rng + ?Sized>(
         // A random line through s that crosses segment fl strictly between f and l.
         let (r, side_f) = (0..16).find_map(|_| {
             let t: f64 = rng.random_range(0.01..0.99);
-            let r = Point::new(pf.x + t * (pl.x - pf.x), pf.y + t * (pl.y - pf.y));
+            // A convex combination, which cannot overflow where pl − pf would; a
+            // rounding to infinity next to f64::MAX is skipped like a degenerate draw.
+            let r = Point::new(pf.x * (1.0 - t) + pl.x * t, pf.y * (1.0 - t) + pl.y * t);
+            if !r.is_finite() {
+                return None;
+            }
             let of = Exact.orient(ps, r, pf);
             let ol = Exact.orient(ps, r, pl);
             (of != Orientation::Collinear && ol != Orientation::Collinear && of != ol).then_some((r, of))
@@ -352,15 +407,23 @@ fn chain<R: Rng + ?Sized>(
     Some(())
 }
 
-/// Orders `points` by angle around `center` (points equal to it are dropped; on
-/// one ray, nearer first). The result is star-shaped from `center` when the points
-/// surround it; validate it.
+/// Orders `points` by angle around `center` (points equal to it, and points that are
+/// not finite, are dropped; on one ray, nearer first). The result is star-shaped from
+/// `center` when the points surround it; validate it. A non-finite `center` has no
+/// angles around it: the finite points come back in input order.
 pub fn star_order(points: &[Point], center: Point) -> Vec<Point> {
     let upper = |p: Point| {
         let dy = p.y - center.y;
         dy > 0.0 || (dy == 0.0 && p.x > center.x)
     };
-    let mut v: Vec<Point> = points.iter().copied().filter(|&p| p != center).collect();
+    let mut v: Vec<Point> = points
+        .iter()
+        .copied()
+        .filter(|&p| p != center && p.is_finite())
+        .collect();
+    if !center.is_finite() {
+        return v;
+    }
     v.sort_unstable_by(|&a, &b| {
         let (ua, ub) = (upper(a), upper(b));
         if ua != ub {

@@ -75,15 +75,14 @@
 //!
 //! # Precision
 //! Every decision is the sign of a polynomial in input coordinates: `orient`, and
-//! one degree-4 slope comparison in the projective frame (below), which first tries
-//! a floating-point evaluation with a static error bound and asks the kernel only
-//! when that cannot certify the sign. Nothing is constructed, so the test is exact
+//! one degree-4 slope comparison in the projective frame (below), a kernel predicate
+//! ([`Kernel::cross_products_sign`]). Nothing is constructed, so the test is exact
 //! under [`Exact`](crate::Exact). Under
 //! [`Fast`](crate::Fast) wrong signs near degeneracies can give wrong answers but
 //! every step still shortens a chain, so the test always terminates.
 
 use super::{ArrayIntersection, Probe};
-use crate::kernel::{Kernel, Orientation, Point, Polynomial, Ring, Sign};
+use crate::kernel::{Kernel, Orientation, Point, Sign};
 use crate::polygon::ConvexPolygon;
 
 /// The Chazelle–Dobkin O(log n + log m) test; see the module docs.
@@ -182,98 +181,29 @@ impl<K: Kernel> Frame<K> {
     }
 
     /// Sign of slope(u1 u2) − slope(v1 v2) in the frame (both edges left to right).
+    ///
+    /// The frame sends the pivot `a` to vertical infinity with the line through `a` in
+    /// direction c = c1 − c0 (c0, c1 = q_L, q_R) as the line at infinity. With
+    /// coordinates z − a = s·c + t·n (any n with c × n < 0), the map
+    /// z ↦ (s/t, −1/t) sends rays from `a` to vertical lines, keeps x increasing
+    /// counter-clockwise around `a` and y increasing away from `a` on the side
+    /// t > 0, which holds the whole wedge when c0, c1 are the tangent points q_L, q_R.
+    /// The image of the line through u1, u2 has slope cross(u2 − u1, c) / orient(a, u1, u2)
+    /// (n cancels), so for two edges ordered left to right (positive denominators)
+    ///
+    /// sign(slope_u − slope_v) = sign(cross(u2 − u1, c)·orient(a, v1, v2) − cross(v2 − v1, c)·orient(a, u1, u2)),
+    ///
+    /// a polynomial of degree 4 in the input coordinates, which the kernel's
+    /// [`Kernel::cross_products_sign`] decides (with a static filter under `Exact`).
     #[inline]
     fn slope_cmp(&self, u: (Point, Point), v: (Point, Point)) -> Sign {
-        let poly = SlopeCmp {
-            a: self.a,
-            c0: self.ql,
-            c1: self.qr,
-            u1: u.0,
-            u2: u.1,
-            v1: v.0,
-            v2: v.1,
-        };
-        match poly.filtered() {
-            Some(s) => s,
-            None => self.k.sign(&poly),
-        }
-    }
-}
-
-/// The slope comparison in the projective frame that sends the pivot `a` to vertical
-/// infinity with the line through `a` in direction c = c1 − c0 as the line at infinity.
-///
-/// With coordinates z − a = s·c + t·n (any n with c × n < 0), the map
-/// z ↦ (s/t, −1/t) sends rays from `a` to vertical lines, keeps x increasing
-/// counter-clockwise around `a` and y increasing away from `a` on the side
-/// t > 0, which holds the whole wedge when c0, c1 are the tangent points q_L, q_R.
-/// The image of the line through u1, u2 has slope cross(u2 − u1, c) / orient(a, u1, u2)
-/// (n cancels), so for two edges ordered left to right (positive denominators)
-///
-/// sign(slope_u − slope_v) = sign(cross(u2 − u1, c)·orient(a, v1, v2) − cross(v2 − v1, c)·orient(a, u1, u2)),
-///
-/// a polynomial of degree 4 in the input coordinates.
-struct SlopeCmp {
-    a: Point,
-    c0: Point,
-    c1: Point,
-    u1: Point,
-    u2: Point,
-    v1: Point,
-    v2: Point,
-}
-
-impl SlopeCmp {
-    /// The sign when a floating-point evaluation with a static error bound certifies
-    /// it, `None` otherwise (then the kernel decides). A sign returned here is the
-    /// exact sign, so this only saves the exact kernel its interval evaluation.
-    ///
-    /// Each factor X = d1·d2 − d3·d4 of differences of inputs is computed with absolute
-    /// error at most 4.1ε·(|d1·d2| + |d3·d4|) (ε = 2^-53), so the value
-    /// X1·Y2 − X2·Y1 has error at most 10.5ε·(P_X1·P_Y2 + P_X2·P_Y1), where P_X is
-    /// the factor's sum of absolute products; the bound used is 16ε times the
-    /// computed sum. It is valid while nothing overflows (the bound is then finite)
-    /// and no factor's products underflow (every P ≥ 2^-960, the bound ≥ 2^-900).
-    #[inline]
-    fn filtered(&self) -> Option<Sign> {
-        let (c0, c1, a) = (self.c0, self.c1, self.a);
-        let (cx, cy) = (c1.x - c0.x, c1.y - c0.y);
-        let cross_c = |p: Point, q: Point| {
-            let (l, r) = ((q.x - p.x) * cy, (q.y - p.y) * cx);
-            (l - r, l.abs() + r.abs())
-        };
-        let orient_a = |p: Point, q: Point| {
-            let (l, r) = ((p.x - a.x) * (q.y - a.y), (p.y - a.y) * (q.x - a.x));
-            (l - r, l.abs() + r.abs())
-        };
-        let (x1, px1) = cross_c(self.u1, self.u2);
-        let (y2, py2) = orient_a(self.v1, self.v2);
-        let (x2, px2) = cross_c(self.v1, self.v2);
-        let (y1, py1) = orient_a(self.u1, self.u2);
-        let value = x1 * y2 - x2 * y1;
-        let bound = 8.0 * f64::EPSILON * (px1 * py2 + px2 * py1);
-        const TINY_FACTOR: f64 = f64::from_bits((1023 - 960) << 52); // 2^-960
-        const TINY_BOUND: f64 = f64::from_bits((1023 - 900) << 52); // 2^-900
-        let normal = px1.min(py2).min(px2).min(py1) >= TINY_FACTOR && bound >= TINY_BOUND;
-        if normal && bound.is_finite() && value.abs() > bound {
-            Some(Sign::of(value))
-        } else {
-            None
-        }
-    }
-}
-
-impl Polynomial for SlopeCmp {
-    #[inline]
-    fn eval<R: Ring>(&self) -> R {
-        let f = R::from_f64;
-        let (cx, cy) = (f(self.c1.x) - f(self.c0.x), f(self.c1.y) - f(self.c0.y));
-        let cross_c = |p: Point, q: Point| (f(q.x) - f(p.x)) * cy.clone() - (f(q.y) - f(p.y)) * cx.clone();
-        let orient_a = |p: Point, q: Point| {
-            (f(p.x) - f(self.a.x)) * (f(q.y) - f(self.a.y)) - (f(p.y) - f(self.a.y)) * (f(q.x) - f(self.a.x))
-        };
-        cross_c(self.u1, self.u2) * orient_a(self.v1, self.v2)
-            - cross_c(self.v1, self.v2) * orient_a(self.u1, self.u2)
+        let (a, c0, c1) = (self.a, self.ql, self.qr);
+        self.k.cross_products_sign([
+            [u.0, u.1, c0, c1],
+            [a, v.0, a, v.1],
+            [v.1, v.0, c0, c1],
+            [a, u.0, a, u.1],
+        ])
     }
 }
 
@@ -588,39 +518,6 @@ mod tests {
         // x grows counter-clockwise, y away from A.
         assert!(tau(Point::new(3.0, 0.0)).0 < tau(Point::new(1.0, 2.0)).0);
         assert!(tau(Point::new(1.0, 1.0)).1 < tau(Point::new(2.0, 2.0)).1);
-    }
-
-    #[test]
-    fn slope_filter_never_contradicts_the_exact_sign() {
-        use rand::{Rng, SeedableRng, rngs::SmallRng};
-        let mut rng = SmallRng::seed_from_u64(7);
-        let mut decided = 0;
-        for i in 0..200_000 {
-            let scale = 2f64.powi([0, 0, 300, -300, 600, -600, 40][i % 7]);
-            let grid = i % 2 == 0;
-            let mut pt = || {
-                let (x, y): (f64, f64) = if grid {
-                    (rng.random_range(-4..=4) as f64, rng.random_range(-4..=4) as f64)
-                } else {
-                    (rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0))
-                };
-                Point::new(x * scale, y * scale)
-            };
-            let poly = SlopeCmp {
-                a: pt(),
-                c0: pt(),
-                c1: pt(),
-                u1: pt(),
-                u2: pt(),
-                v1: pt(),
-                v2: pt(),
-            };
-            if let Some(s) = poly.filtered() {
-                decided += 1;
-                assert_eq!(s, Exact.sign(&poly), "#{i}");
-            }
-        }
-        assert!(decided > 50_000, "{decided}");
     }
 
     #[test]

@@ -1,26 +1,61 @@
 //! The exact kernel: correct signs for every finite `f64` input.
 //!
 //! # Layers
-//! 1. **Filter.** The predicate is evaluated in `f64` together with a bound on its
-//!    rounding error; when the result is farther from zero than the bound, its sign
-//!    is the exact sign. `orient` uses Shewchuk's static bound
-//!    (`(3 + 16ε)ε · (|l| + |r|)`, plus `f64::MIN_POSITIVE` to absorb underflow);
-//!    other predicates are evaluated in [`Interval`] arithmetic with outward
-//!    rounding by one ulp per operation. On random input this layer decides
-//!    essentially every call.
-//! 2. **Adaptive.** `orient` falls back to Shewchuk's adaptive `orient2d` (the
-//!    `robust` crate), whose expansion arithmetic is exact as long as no
-//!    intermediate product overflows or underflows. That holds when every non-zero
-//!    coordinate has magnitude in [2^-400, 2^400] ([`in_adaptive_range`]): every
-//!    difference and expansion component is then a multiple of 2^-453 and every
-//!    product a multiple of 2^-906 (above the subnormal range) and below 2^804.
-//! 3. **Exact fallback.** Outside that range (huge, tiny or subnormal coordinates,
-//!    or mixtures of magnitudes), and for predicates other than `orient` whenever the
-//!    filter cannot decide, the polynomial is evaluated on the exact dyadic values
+//! 1. **Static filter** (inline). The predicate is evaluated in `f64` together with a
+//!    bound on its rounding error; when the result is farther from zero than the
+//!    bound, its sign is the exact sign. `orient`, `cross` and `dot` (two products
+//!    `l`, `r` of differences) certify `l ∓ r` when `|l ∓ r| > 2ε₀(1 + 2^-30)·|l| +
+//!    2·f64::MIN_POSITIVE`, ε₀ = (3 + 16u)u, u = 2^-53, which implies Shewchuk's
+//!    condition (derivation at `certain`); [`Kernel::cross_products_sign`] (degree 4)
+//!    uses `12u·(P₀P₁ + P₂P₃)` with Pᵢ the magnitude of factor i's two products
+//!    (derivation at `cross_products_filtered`). On ordinary input this layer decides
+//!    every call but those with coincident points. It is written so that the answer
+//!    is the same sign test of the computed value that [`Fast`](super::Fast) makes,
+//!    and the certificate a separate branch that ordinary input always takes the
+//!    same way: the algorithms' unpredictable branches wait no longer than under
+//!    `Fast`.
+//! 2. **Out of line** (`#[cold]`), when the filter cannot decide:
+//!    * *Scaled differences.* Every predicate here is a homogeneous polynomial in
+//!      differences of inputs. The differences the filter computed are multiplied by
+//!      the power of two that puts the largest in [1, 2) and the filter runs again
+//!      (`scaled_differences` says why that stays valid even where it rounds tiny
+//!      differences). This decides well-conditioned calls whose products overflowed
+//!      or underflowed: coordinates near 2^±600, subnormal, or huge and tiny mixed,
+//!      as long as no difference overflows. Subnormal values are scaled through their
+//!      integer mantissas: x86 processors handle subnormal operands in microcode.
+//!    * *Structural zeros.* Coincident points (a repeated point in `orient`, a zero
+//!      vector in `cross` or `dot`, one segment crossed with itself) answer zero
+//!      without arithmetic. Algorithms ask such questions on every input (a chain's
+//!      end against itself).
+//!    * *Rescaled coordinates.* The inputs themselves are scaled so that the largest
+//!      magnitude lies in [1, 2), when that is exact (the smallest non-zero one stays
+//!      normal: inputs spanning at most 2^1022), and filtered again (this catches
+//!      differences that overflowed near ±`f64::MAX`).
+//!    * *Adaptive.* `orient`, and `cross` and `dot` when their coordinate differences
+//!      are exact, go to Shewchuk's adaptive `orient2d` (the `robust` crate), whose
+//!      expansion arithmetic is exact as long as no intermediate product overflows or
+//!      underflows. That holds when every non-zero (rescaled) coordinate has magnitude
+//!      in [2^-400, 2^400] ([`in_adaptive_range`]): every difference and expansion
+//!      component is then a multiple of 2^-453 and every product a multiple of
+//!      2^-906 (above the subnormal range) and below 2^804. Degree-4 predicates and
+//!      [`Kernel::sign`] try [`Interval`] arithmetic with outward rounding instead.
+//! 3. **Exact fallback.** Everything still undecided (nearly degenerate calls whose
+//!    inputs span more than 2^400, nearly parallel `cross` with inexact differences,
+//!    nearly degenerate degree-4 calls) is evaluated on the exact dyadic values
 //!    `m · 2^e` of the inputs with big integers ([`Dyadic`]). No finite input is
 //!    refused and none is misjudged; the cost is paid only by near-degenerate calls.
+//!
+//! # Cost
+//! Measured in docs/results.md: on random input the exact kernel costs 1.3–1.5× the
+//! fast one's instructions in the O(log n) algorithms (whose work is almost all
+//! predicates; 1.2–1.8× their time) and about 1.0–1.1× in CLM. Validation plus the
+//! crossings sweep at 2^±600 or near `f64::MAX` measured 1.5–2.4× the same input at
+//! scale 1 in a heavily loaded run whose control (no slow path) came out 1.7×;
+//! subnormal input 2.4× (the filter's own products of subnormal differences take the
+//! microcode path). Predicates that mix magnitudes more than 2^1022 apart within one
+//! call fall to big integers when nearly degenerate.
 
-use super::{Kernel, LineMeetSidePoly, Orientation, Point, Polynomial, Ring, Sign};
+use super::{CrossPoly, CrossProductsPoly, DotPoly, Kernel, Orientation, Point, Polynomial, Ring, Sign};
 use num_bigint::BigInt;
 use num_traits::{Signed, Zero};
 use std::ops::{Add, Mul, Sub};
@@ -31,24 +66,30 @@ const ADAPTIVE_MIN: f64 = f64::from_bits((1023 - 400) << 52); // 2^-400
 const ADAPTIVE_MAX: f64 = f64::from_bits((1023 + 400) << 52); // 2^400
 
 /// Exact predicates for every finite input; the default kernel. See the module docs
-/// for the three layers.
+/// for the layers.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Exact;
 
 impl Kernel for Exact {
     const NAME: &'static str = "exact";
 
+    /// The static filter, written so that the answer is the sign of the computed
+    /// determinant (as under [`Fast`](super::Fast)) and the certificate a separate
+    /// branch; an uncertain determinant is replaced by ±1 or 0 from `orient_slow`.
     #[inline]
     fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
-        let left = (a.x - c.x) * (b.y - c.y);
-        let right = (a.y - c.y) * (b.x - c.x);
-        match filtered(left, right, left - right) {
-            Some(s) => s.into(),
-            None => orient_slow(a, b, c),
+        let (left, right) = orient_products(a, b, c);
+        let mut det = left - right;
+        if !certain(det, left) {
+            det = as_value(orient_slow(a, b, c));
         }
+        Sign::of(det).into()
     }
 
-    #[inline]
+    /// The interval filter, then the exact fallback. Kept out of line: the kernel's
+    /// own predicates never come here on ordinary input, and inlining an interval
+    /// evaluation into an algorithm's loop costs it registers and code size.
+    #[inline(never)]
     fn sign<P: Polynomial>(self, poly: &P) -> Sign {
         match poly.eval::<Interval>().certain_sign() {
             Some(s) => s,
@@ -59,96 +100,541 @@ impl Kernel for Exact {
     /// Same shape as `orient` (two products of differences), so the same static filter.
     #[inline]
     fn cross(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
-        let left = (b.x - a.x) * (d.y - c.y);
-        let right = (b.y - a.y) * (d.x - c.x);
-        filtered(left, right, left - right)
-            .unwrap_or_else(|| sign_slow(&super::CrossPoly(a, b, c, d)))
-            .into()
-    }
-
-    /// A static filter for `D·A + N·B`, each factor a cross product of differences,
-    /// then the interval filter and the exact fallback (see `line_meet_filtered`).
-    #[inline]
-    fn line_meet_sign(self, pts: [Point; 6]) -> Sign {
-        line_meet_filtered(pts).unwrap_or_else(|| self.sign(&LineMeetSidePoly(pts)))
+        let (left, right) = cross_products(a, b, c, d);
+        if !certain(left - right, left) {
+            return cross_slow(a, b, c, d).into();
+        }
+        if left > right {
+            Orientation::Ccw
+        } else {
+            Orientation::Cw
+        }
     }
 
     /// Same shape as `orient` with a sum instead of a difference: the same static filter.
     #[inline]
     fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
-        let left = (b.x - a.x) * (d.x - c.x);
-        let right = (b.y - a.y) * (d.y - c.y);
-        filtered(left, right, left + right).unwrap_or_else(|| sign_slow(&super::DotPoly(a, b, c, d)))
+        let (left, right) = dot_products(a, b, c, d);
+        let mut det = left + right;
+        if !certain(det, left) {
+            det = as_value(dot_slow(a, b, c, d));
+        }
+        Sign::of(det)
+    }
+
+    /// A static filter (see `cross_products_filtered`), then rescaling, intervals and
+    /// the exact fallback out of line.
+    #[inline(always)]
+    fn cross_products_sign(self, factors: [[Point; 4]; 4]) -> Sign {
+        match cross_products_filtered(&factors) {
+            Some(s) => s,
+            None => cross_products_slow(factors),
+        }
     }
 }
 
-/// The static filter of [`Exact::line_meet_sign`]: `S = D·A + N·B` with
-/// `D = (b−a)×(d−c)`, `N = (c−a)×(d−c)`, `A = (f−e)×(a−e)`, `B = (f−e)×(b−a)`,
-/// evaluated in `f64`. With u = 2^-53, every difference carries a relative error
-/// ≤ u, each cross product an absolute error ≤ 4.01u·P (P its permanent, the sum of
-/// the two products' magnitudes), each product of two of them ≤ 9.1u·P₁P₂ and the
-/// sum adds u·|S|, so |S̃ − S| ≤ 10.2u·(P_D·P_A + P_N·P_B); we use 12u. The bound is
-/// trusted only when every computed difference is 0 or has magnitude in
-/// [2^-250, 2^250]: then no product overflows, products of differences never
-/// underflow, and an underflow in a product of two cross products (at most 2^-1074)
-/// is far below the 1.8u·2^-1000 left over in the bound; otherwise, and when |S̃| is
-/// within the bound, `None`.
+/// The static filter for `det = l − r` or `det = l + r`, `l` and `r` each a product of
+/// two differences of inputs (`orient`, `cross`, `dot`): the sign of `det` when it is
+/// certain, `None` otherwise (including overflow and NaN).
+///
+/// The test is `|det| > C·|l| + 2·f64::MIN_POSITIVE` (see [`certain`]).
+#[inline(always)]
+fn two_products_filtered(det: f64, l: f64) -> Option<Sign> {
+    if certain(det, l) {
+        Some(nonzero_sign(det))
+    } else {
+        None
+    }
+}
+
+/// True when the sign of `det` (`l ∓ r`, computed in `f64`) is certain; it is then
+/// non-zero.
+///
+/// Shewchuk's static filter certifies the sign when `|det| ≥ ε₀·fl(|l| + |r|)` with
+/// ε₀ = (3 + 16u)u, u = 2^-53 (`ORIENT_ERR`), whenever `l` and `r` have the same sign;
+/// with opposite signs there is no cancellation and rounding keeps every sign. Products
+/// that underflow add at most 2^-1075 each, which `f64::MIN_POSITIVE` absorbs. We bound
+/// `|r|` by one product instead of adding both: `|r| ≤ |l| + |l ∓ r|` and
+/// `|l ∓ r| ≤ (1 + u)|det|`, so Shewchuk's condition holds when
+/// `|det|·(1 − ε₀(1 + u)²) ≥ 2ε₀(1 + u)·|l| + MIN`, which the computed test with
+/// `C = 2ε₀(1 + 2^-30)` and `2·MIN` implies (the margin covers the test's own two
+/// roundings). One addition fewer than `|l| + |r|` on every call of the hot
+/// predicates. The analysis assumes finite differences and products, so `det` must be
+/// finite too: a difference that overflows (`f64::MAX − (−f64::MAX)`) times a tiny
+/// one is an infinite `r` whose exact value is tiny, next to a finite `l`. The bound
+/// therefore also adds 2^-60·|det| (a larger bound is still a valid one), which is
+/// infinite exactly when `det` is: without a second branch, `|det| > bound` fails for
+/// an infinite `det` as it does for an infinite `l` (infinite bound) and for NaN.
+#[inline(always)]
+fn certain(det: f64, l: f64) -> bool {
+    let m = det.abs();
+    m > two_products_bound(l, m)
+}
+
+/// The right-hand side of [`certain`], for `m = |det|`.
+#[inline(always)]
+fn two_products_bound(l: f64, m: f64) -> f64 {
+    const C: f64 = 2.0 * ORIENT_ERR * (1.0 + 1.0 / (1u64 << 30) as f64);
+    const INFINITE_WITH_DET: f64 = 1.0 / (1u64 << 60) as f64;
+    C * l.abs() + (INFINITE_WITH_DET * m + 2.0 * f64::MIN_POSITIVE)
+}
+
+/// A number of sign `s`: the slow paths' answers take the place of the computed
+/// determinant, so that the fast and the slow path end in the same sign test (the
+/// one [`Fast`](super::Fast) makes) instead of merging enum values.
+#[inline(always)]
+fn as_value(s: Sign) -> f64 {
+    match s {
+        Sign::Negative => -1.0,
+        Sign::Zero => 0.0,
+        Sign::Positive => 1.0,
+    }
+}
+
+/// The sign of a value known to be non-zero (one comparison instead of two).
+#[inline(always)]
+fn nonzero_sign(x: f64) -> Sign {
+    if x > 0.0 { Sign::Positive } else { Sign::Negative }
+}
+
+/// The two products of `orient`: (a − c) × (b − c) = left − right.
+#[inline(always)]
+fn orient_products(a: Point, b: Point, c: Point) -> (f64, f64) {
+    ((a.x - c.x) * (b.y - c.y), (a.y - c.y) * (b.x - c.x))
+}
+
+/// The two products of `cross`: (b − a) × (d − c) = left − right.
+#[inline(always)]
+fn cross_products(a: Point, b: Point, c: Point, d: Point) -> (f64, f64) {
+    ((b.x - a.x) * (d.y - c.y), (b.y - a.y) * (d.x - c.x))
+}
+
+/// The two products of `dot`: (b − a) · (d − c) = left + right.
+#[inline(always)]
+fn dot_products(a: Point, b: Point, c: Point, d: Point) -> (f64, f64) {
+    ((b.x - a.x) * (d.x - c.x), (b.y - a.y) * (d.y - c.y))
+}
+
+#[inline(always)]
+fn orient_filtered(a: Point, b: Point, c: Point) -> Option<Sign> {
+    let (left, right) = orient_products(a, b, c);
+    two_products_filtered(left - right, left)
+}
+
+#[inline(always)]
+fn cross_filtered(a: Point, b: Point, c: Point, d: Point) -> Option<Sign> {
+    let (left, right) = cross_products(a, b, c, d);
+    two_products_filtered(left - right, left)
+}
+
+#[inline(always)]
+fn dot_filtered(a: Point, b: Point, c: Point, d: Point) -> Option<Sign> {
+    let (left, right) = dot_products(a, b, c, d);
+    two_products_filtered(left + right, left)
+}
+
+/// The differences `[b.x − a.x, b.y − a.y, d.x − c.x, d.y − c.y]` of one factor
+/// `(b − a) × (d − c)` of [`Kernel::cross_products_sign`].
+#[inline(always)]
+fn factor_differences([a, b, c, d]: [Point; 4]) -> [f64; 4] {
+    [b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y]
+}
+
+/// One factor from its differences `[ux, uy, vx, vy]`: its value `ux·vy − uy·vx` and the
+/// magnitude `|l| + |r|` of its two products.
+#[inline(always)]
+fn cross_and_magnitude([ux, uy, vx, vy]: [f64; 4]) -> (f64, f64) {
+    let (l, r) = (ux * vy, uy * vx);
+    (l - r, l.abs() + r.abs())
+}
+
+/// The static filter of [`Kernel::cross_products_sign`]: `S = C₀·C₁ + C₂·C₃` in `f64`.
+///
+/// With u = 2^-53 and no overflow or underflow: each difference carries a relative
+/// error ≤ u, each product of two differences ≤ γ₃ (γₖ = ku/(1 − ku)), so each factor
+/// `C̃ᵢ` is within (γ₃ + u(1 + γ₃))·Pᵢ ≤ 4.01u·Pᵢ of `Cᵢ`, with Pᵢ = |lᵢ| + |rᵢ| the
+/// magnitude of its products and |C̃ᵢ| ≤ 1.01·Pᵢ; each product `C̃ᵢC̃ⱼ`, rounded, is
+/// within 9.1u·PᵢPⱼ of `CᵢCⱼ`, and the final sum adds u·|S̃|. So
+/// |S̃ − S| ≤ 10.2u·(P₀P₁ + P₂P₃), and the computed magnitudes differ from the true ones
+/// by a factor of at most 1 + 12u; the bound used is 12u times the computed sum Σ.
+///
+/// Validity: every computed Pᵢ ≥ 2^-480, so an underflowing product of differences
+/// (absolute error ≤ 2^-1075) adds at most u²·Pᵢ to its factor, and Σ ≥ 2^-960, so an
+/// underflowing product of factors adds at most 2^-114·Σ; Σ ≤ 2^1020, so nothing
+/// overflowed (a non-finite difference or product makes some Pᵢ or Σ infinite or
+/// NaN, and the comparisons fail) and |S̃| ≤ 2^1021. Both extras fit in the 1.8u·Σ
+/// left over. Otherwise, and when |S̃| is within the bound, `None`.
+#[inline(always)]
+fn cross_products_filtered(factors: &[[Point; 4]; 4]) -> Option<Sign> {
+    let (s, bound, valid) = cross_products_bounded(factors);
+    if s.abs() > bound && valid {
+        Some(nonzero_sign(s))
+    } else {
+        None
+    }
+}
+
+/// `S̃`, the error bound of [`cross_products_filtered`] and whether the bound is valid.
+#[inline(always)]
+fn cross_products_bounded(factors: &[[Point; 4]; 4]) -> (f64, f64, bool) {
+    cross_products_from_differences(factors.map(factor_differences))
+}
+
+/// [`cross_products_bounded`] from the factors' differences (computed in `f64`, or
+/// those scaled exactly by a power of two: the analysis is the same).
+#[inline(always)]
+fn cross_products_from_differences(d: [[f64; 4]; 4]) -> (f64, f64, bool) {
+    const TINY_FACTOR: f64 = f64::from_bits((1023 - 480) << 52); // 2^-480
+    const HUGE_SUM: f64 = f64::from_bits((1023 + 1020) << 52); // 2^1020
+    let (c0, p0) = cross_and_magnitude(d[0]);
+    let (c1, p1) = cross_and_magnitude(d[1]);
+    let (c2, p2) = cross_and_magnitude(d[2]);
+    let (c3, p3) = cross_and_magnitude(d[3]);
+    let s = c0 * c1 + c2 * c3;
+    let sum = p0 * p1 + p2 * p3;
+    // Plain comparisons rather than `f64::min`: a NaN magnitude makes `sum` NaN, which
+    // fails the range test anyway.
+    let min = |x: f64, y: f64| if x < y { x } else { y };
+    let valid = min(min(p0, p1), min(p2, p3)) >= TINY_FACTOR && sum <= HUGE_SUM;
+    let bound = 12.0 * (f64::EPSILON / 2.0) * sum;
+    (s, bound, valid)
+}
+
+/// The inputs of one predicate call scaled by a common power of two so that the
+/// largest magnitude lies in [1, 2), when that is exact for every input (the smallest
+/// non-zero magnitude stays in the normal range). Also says whether every non-zero
+/// scaled input lies in Shewchuk's exact range [2^-400, 2^400].
+struct Rescaled<const N: usize> {
+    points: [Point; N],
+    adaptive: bool,
+}
+
+/// The binary exponent of a finite `x > 0`: `x ∈ [2^e, 2^(e+1))`, subnormals included.
 #[inline]
-fn line_meet_filtered([a, b, c, d, e, f]: [Point; 6]) -> Option<Sign> {
-    const U: f64 = f64::EPSILON / 2.0;
-    const LO: f64 = f64::from_bits((1023 - 250) << 52); // 2^-250
-    const HI: f64 = f64::from_bits((1023 + 250) << 52); // 2^250
-    let cross = |ux: f64, uy: f64, vx: f64, vy: f64| {
-        let (l, r) = (ux * vy, uy * vx);
-        (l - r, l.abs() + r.abs())
-    };
-    let (bax, bay, dcx, dcy) = (b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y);
-    let (fex, fey, cax, cay, aex, aey) = (f.x - e.x, f.y - e.y, c.x - a.x, c.y - a.y, a.x - e.x, a.y - e.y);
-    let diffs = [bax, bay, dcx, dcy, fex, fey, cax, cay, aex, aey];
-    if !diffs.iter().all(|&v| v == 0.0 || (LO..=HI).contains(&v.abs())) {
+fn exponent(x: f64) -> i32 {
+    let bits = x.to_bits();
+    let biased = ((bits >> 52) & 0x7ff) as i32;
+    if biased == 0 {
+        -1074 + (63 - bits.leading_zeros() as i32)
+    } else {
+        biased - 1023
+    }
+}
+
+/// 2^k for k in the normal exponent range [-1022, 1023].
+#[inline]
+fn pow2(k: i32) -> f64 {
+    debug_assert!((-1022..=1023).contains(&k));
+    f64::from_bits(((k + 1023) as u64) << 52)
+}
+
+/// The power of two k that puts the largest magnitude among `values` in [1, 2), and
+/// the exponent the smallest non-zero magnitude then has; `None` when every value is
+/// zero, some value is not finite, or scaling by 2^k would be inexact (the smallest
+/// non-zero magnitude would leave the normal range: the values span more than 2^1022).
+fn scaling_exponent(values: impl Iterator<Item = f64>) -> Option<(i32, i32)> {
+    let (mut hi, mut lo, mut nan) = (0.0f64, f64::INFINITY, false);
+    for v in values {
+        let m = v.abs();
+        nan |= m.is_nan();
+        hi = if m > hi { m } else { hi };
+        lo = if m != 0.0 && m < lo { m } else { lo };
+    }
+    if nan || hi == 0.0 || hi == f64::INFINITY {
         return None;
     }
-    let (den, pd) = cross(bax, bay, dcx, dcy);
-    let (num, pn) = cross(cax, cay, dcx, dcy);
-    let (side_a, pa) = cross(fex, fey, aex, aey);
-    let (side_dir, pb) = cross(fex, fey, bax, bay);
-    let s = den * side_a + num * side_dir;
-    let bound = 12.0 * U * (pd * pa + pn * pb);
-    if s > bound {
-        Some(Sign::Positive)
-    } else if -s > bound {
-        Some(Sign::Negative)
+    let k = -exponent(hi);
+    let lo_scaled = exponent(lo) + k;
+    (lo_scaled >= -1022).then_some((k, lo_scaled))
+}
+
+/// Factors whose product, applied left to right, multiplies by 2^k for k ∈ [-1023, 1074]
+/// (see [`scaling_exponent`]): one normal power of two where there is one, else two.
+/// Exact whenever the result is normal: scaling down, the first product stays above
+/// the final one; scaling up, below it.
+#[inline]
+fn scale_factors(k: i32) -> (f64, f64) {
+    if (-1022..=1023).contains(&k) {
+        (pow2(k), 1.0)
     } else {
-        None
+        (pow2(k / 2), pow2(k - k / 2))
     }
 }
 
-/// Shewchuk's static filter for `l ± r`, each a product of two differences: the sign
-/// of `det` when it is certain, `None` otherwise (including overflow and NaN).
+/// `x · 2^k`, exact when the result is normal (see [`scale_factors`]).
 #[inline]
-fn filtered(left: f64, right: f64, det: f64) -> Option<Sign> {
-    let bound = ORIENT_ERR * (left.abs() + right.abs()) + f64::MIN_POSITIVE;
-    if det > bound {
-        Some(Sign::Positive)
-    } else if -det > bound {
-        Some(Sign::Negative)
-    } else {
-        None
+fn scaled_by(x: f64, k: i32) -> f64 {
+    let (s1, s2) = scale_factors(k);
+    scale_with(x, k, s1, s2)
+}
+
+/// `x · s1 · s2` with `(s1, s2) = scale_factors(k)`. A subnormal `x` (m · 2^-1074, m
+/// its integer mantissa) scaled up (k > 0) is scaled as the integer m times
+/// 2^(k − 1074) instead: the same exact product, but without a subnormal operand,
+/// which x86 processors handle in microcode at about a hundred times the cost of a
+/// multiplication. Scaled down, a subnormal only rounds further (towards zero), and
+/// 2^(k − 1074) would not be a valid factor.
+#[inline(always)]
+fn scale_with(x: f64, k: i32, s1: f64, s2: f64) -> f64 {
+    if x.abs() >= f64::MIN_POSITIVE || x == 0.0 || k <= 0 {
+        return x * s1 * s2;
     }
+    let bits = x.to_bits();
+    let m = (bits & ((1u64 << 52) - 1)) as f64;
+    let (t1, t2) = scale_factors(k - 1074);
+    let y = m * t1 * t2;
+    if bits >> 63 == 1 { -y } else { y }
+}
+
+impl<const N: usize> Rescaled<N> {
+    /// `None` when every input is zero, some input is not finite, or scaling would be
+    /// inexact (the inputs span more than 2^1022 in magnitude).
+    #[inline]
+    fn new(points: [Point; N]) -> Option<Rescaled<N>> {
+        let (k, lo) = scaling_exponent(points.iter().flat_map(|p| [p.x, p.y]))?;
+        let (s1, s2) = scale_factors(k);
+        let s = |v: f64| scale_with(v, k, s1, s2);
+        Some(Rescaled {
+            points: points.map(|p| Point::new(s(p.x), s(p.y))),
+            adaptive: lo >= -400,
+        })
+    }
+}
+
+/// The differences of one predicate call, computed in `f64` as the static filter
+/// computes them, multiplied by the power of two that puts the largest in [1, 2).
+/// `None` when a difference overflowed (inputs near ±`f64::MAX`) or all are zero.
+///
+/// The static filters stay valid on the result: every predicate here is a homogeneous
+/// polynomial in such differences, and the scaling is exact except for differences
+/// that it moves below the normal range, which it rounds with an absolute error of at
+/// most 2^-1075. Each such error, times a difference below 2 in magnitude, adds at most
+/// 2^-1074 to a product: far inside the `2·f64::MIN_POSITIVE` that the two-product
+/// filter adds to its bound, and a relative 2^-593 of a factor that the degree-4
+/// filter accepts (its factors' magnitudes are at least 2^-480). Everything else is
+/// the unscaled computation, exactly scaled.
+#[inline(always)]
+fn scaled_differences<const N: usize>(d: [f64; N]) -> Option<[f64; N]> {
+    let hi = d
+        .iter()
+        .fold(0.0f64, |hi, v| if v.abs() > hi { v.abs() } else { hi });
+    if hi == 0.0 || !hi.is_finite() {
+        return None;
+    }
+    let k = -exponent(hi);
+    let mut out = d;
+    if (-1022..=1022).contains(&k) {
+        // The largest difference is normal: one multiplication each by a normal power
+        // of two (a subnormal difference next to it is rare: mixed magnitudes).
+        let s = pow2(k);
+        for v in &mut out {
+            *v *= s;
+        }
+    } else {
+        let (s1, s2) = scale_factors(k);
+        for v in &mut out {
+            *v = scale_with(*v, k, s1, s2);
+        }
+    }
+    Some(out)
+}
+
+/// The sign of the signed area of the closed polygon through `points` (twice the
+/// area: Σ xᵢ·yᵢ₊₁ − xᵢ₊₁·yᵢ, positive for counter-clockwise), exactly, for every
+/// finite input: no overflow at any magnitude, no rounding at any size.
+///
+/// The points are scaled by a power of two so that the largest magnitude lies in
+/// [1, 2) (exact unless they span more than 2^1022) and summed in `f64` with an error
+/// bound (recursive summation of n terms: at most γₙ₊₂ times the sum of the terms'
+/// product magnitudes, plus 2^-1074 per underflowing product; we use twice that);
+/// only when the sum is within the bound, or scaling is inexact, are the terms summed
+/// exactly with big integers. O(n) either way; the exact sum costs more per term.
+/// Fewer than three points have area zero.
+///
+/// # Panics
+/// On NaN or infinite coordinates.
+pub fn area_sign(points: &[Point]) -> Sign {
+    area_sign_of(points.len(), |i| points[i])
+}
+
+/// [`area_sign`] of the closed polygon whose `n` vertices are `at(0)`, …, `at(n − 1)`,
+/// for callers that hold the vertices in another form (indices into an input list).
+///
+/// # Panics
+/// On NaN or infinite coordinates.
+pub fn area_sign_of(n: usize, at: impl Fn(usize) -> Point) -> Sign {
+    if n < 3 {
+        return Sign::Zero;
+    }
+    let edges = || (0..n).map(|i| (at(i), at(if i + 1 == n { 0 } else { i + 1 })));
+    if let Some((k, _)) = scaling_exponent((0..n).flat_map(|i| {
+        let p = at(i);
+        [p.x, p.y]
+    })) {
+        let s = |p: Point| Point::new(scaled_by(p.x, k), scaled_by(p.y, k));
+        let (mut sum, mut magnitude) = (0.0f64, 0.0f64);
+        for (a, b) in edges() {
+            let (a, b) = (s(a), s(b));
+            let (l, r) = (a.x * b.y, a.y * b.x);
+            sum += l - r;
+            magnitude += l.abs() + r.abs();
+        }
+        let u = f64::EPSILON / 2.0;
+        let count = n as f64;
+        let bound = 2.0 * ((count + 2.0) * u * magnitude + 2.0 * count * f64::from_bits(1));
+        if sum.abs() > bound {
+            return Sign::of(sum);
+        }
+    } else {
+        assert!((0..n).all(|i| at(i).is_finite()), "area of non-finite points");
+    }
+    let f = Dyadic::from_f64;
+    edges()
+        .map(|(a, b)| f(a.x) * f(b.y) - f(a.y) * f(b.x))
+        .fold(f(0.0), |acc, t| acc + t)
+        .certain_sign()
+        .expect("dyadic arithmetic is exact")
 }
 
 #[cold]
 #[inline(never)]
-fn orient_slow(a: Point, b: Point, c: Point) -> Orientation {
-    if in_adaptive_range(&[a.x, a.y, b.x, b.y, c.x, c.y]) {
-        let det = robust::orient2d(
-            robust::Coord { x: a.x, y: a.y },
-            robust::Coord { x: b.x, y: b.y },
-            robust::Coord { x: c.x, y: c.y },
-        );
-        Sign::of(det).into()
-    } else {
-        sign_slow(&OrientPoly(a, b, c)).into()
+fn orient_slow(a: Point, b: Point, c: Point) -> Sign {
+    if let Some([dx1, dy1, dx2, dy2]) = scaled_differences([a.x - c.x, a.y - c.y, b.x - c.x, b.y - c.y]) {
+        let (l, r) = (dx1 * dy2, dy1 * dx2);
+        if certain(l - r, l) {
+            return nonzero_sign(l - r);
+        }
+    }
+    if a == b || a == c || b == c {
+        return Sign::Zero;
+    }
+    if let Some(r) = Rescaled::new([a, b, c]) {
+        let [a, b, c] = r.points;
+        if let Some(s) = orient_filtered(a, b, c) {
+            return s;
+        }
+        if r.adaptive {
+            return robust_orient(a, b, c);
+        }
+    }
+    sign_slow(&OrientPoly(a, b, c))
+}
+
+/// Shewchuk's adaptive `orient2d`; exact when every non-zero coordinate is in
+/// [2^-400, 2^400].
+#[inline]
+fn robust_orient(a: Point, b: Point, c: Point) -> Sign {
+    Sign::of(robust::orient2d(
+        robust::Coord { x: a.x, y: a.y },
+        robust::Coord { x: b.x, y: b.y },
+        robust::Coord { x: c.x, y: c.y },
+    ))
+}
+
+/// `x − y` when the floating-point difference is exact (Knuth's two-difference has
+/// no error term), `None` otherwise.
+#[inline]
+fn exact_difference(x: f64, y: f64) -> Option<f64> {
+    let d = x - y;
+    let y_virtual = x - d;
+    let x_virtual = d + y_virtual;
+    let error = (x - x_virtual) + (y_virtual - y);
+    (error == 0.0).then_some(d)
+}
+
+/// The directions `b − a` and `d − c` of a scaled call, when both are exact and
+/// Shewchuk's predicate is exact on them (as coordinates).
+fn exact_directions(r: &Rescaled<4>) -> Option<(Point, Point)> {
+    if !r.adaptive {
+        return None;
+    }
+    let [a, b, c, d] = r.points;
+    Some((
+        Point::new(exact_difference(b.x, a.x)?, exact_difference(b.y, a.y)?),
+        Point::new(exact_difference(d.x, c.x)?, exact_difference(d.y, c.y)?),
+    ))
+}
+
+#[cold]
+#[inline(never)]
+fn cross_slow(a: Point, b: Point, c: Point, d: Point) -> Sign {
+    if let Some([ux, uy, vx, vy]) = scaled_differences([b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y]) {
+        let (l, r) = (ux * vy, uy * vx);
+        if certain(l - r, l) {
+            return nonzero_sign(l - r);
+        }
+    }
+    if a == b || c == d || (a == c && b == d) || (a == d && b == c) {
+        return Sign::Zero;
+    }
+    if let Some(r) = Rescaled::new([a, b, c, d]) {
+        let [sa, sb, sc, sd] = r.points;
+        if let Some(s) = cross_filtered(sa, sb, sc, sd) {
+            return s;
+        }
+        // u × v = orient(u, v, 0): exact when u and v are.
+        if let Some((u, v)) = exact_directions(&r) {
+            return robust_orient(u, v, Point::new(0.0, 0.0));
+        }
+    }
+    sign_slow(&CrossPoly(a, b, c, d))
+}
+
+#[cold]
+#[inline(never)]
+fn dot_slow(a: Point, b: Point, c: Point, d: Point) -> Sign {
+    if let Some([ux, uy, vx, vy]) = scaled_differences([b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y]) {
+        let (l, r) = (ux * vx, uy * vy);
+        if certain(l + r, l) {
+            return nonzero_sign(l + r);
+        }
+    }
+    if a == b || c == d {
+        return Sign::Zero;
+    }
+    if let Some(r) = Rescaled::new([a, b, c, d]) {
+        let [sa, sb, sc, sd] = r.points;
+        if let Some(s) = dot_filtered(sa, sb, sc, sd) {
+            return s;
+        }
+        // u · v = (u.x, −u.y) × (v.y, v.x) = orient((u.x, −u.y), (v.y, v.x), 0).
+        if let Some((u, v)) = exact_directions(&r) {
+            return robust_orient(Point::new(u.x, -u.y), Point::new(v.y, v.x), Point::new(0.0, 0.0));
+        }
+    }
+    sign_slow(&DotPoly(a, b, c, d))
+}
+
+#[cold]
+#[inline(never)]
+fn cross_products_slow(factors: [[Point; 4]; 4]) -> Sign {
+    let d = factors.map(factor_differences);
+    if let Some(sd) = scaled_differences(std::array::from_fn::<f64, 16, _>(|i| d[i / 4][i % 4])) {
+        let (s, bound, valid) =
+            cross_products_from_differences(std::array::from_fn(|i| std::array::from_fn(|j| sd[4 * i + j])));
+        if valid && s.abs() > bound {
+            return nonzero_sign(s);
+        }
+    }
+    // A factor whose two points of a pair coincide is exactly zero.
+    let zero = |[a, b, c, d]: [Point; 4]| a == b || c == d;
+    let [f0, f1, f2, f3] = factors;
+    if (zero(f0) || zero(f1)) && (zero(f2) || zero(f3)) {
+        return Sign::Zero;
+    }
+    let flat: [Point; 16] = std::array::from_fn(|i| factors[i / 4][i % 4]);
+    let scaled =
+        Rescaled::new(flat).map(|r| std::array::from_fn(|i| std::array::from_fn(|j| r.points[4 * i + j])));
+    let factors = scaled.unwrap_or(factors);
+    if scaled.is_some()
+        && let Some(s) = cross_products_filtered(&factors)
+    {
+        return s;
+    }
+    let poly = CrossProductsPoly(factors);
+    match poly.eval::<Interval>().certain_sign() {
+        Some(s) => s,
+        None => sign_slow(&poly),
     }
 }
 
@@ -338,176 +824,4 @@ impl Ring for Dyadic {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::kernel::Fast;
-    use rand::rngs::SmallRng;
-    use rand::{Rng, SeedableRng};
-
-    /// The static filter of `line_meet_sign` never claims a wrong sign: random
-    /// points, nearly parallel lines, crossings on or one ulp off the third line,
-    /// tiny and huge magnitudes, all against exact dyadic evaluation.
-    #[test]
-    fn line_meet_filter_never_claims_a_wrong_sign() {
-        let mut rng = SmallRng::seed_from_u64(0x11ee);
-        let mut decided = 0;
-        for i in 0..40_000 {
-            let scale = [1.0, 1e-60, 1e60, 1e-140][(i / 4) % 4];
-            let mut r = || {
-                Point::new(
-                    rng.random_range(-1.0..1.0) * scale,
-                    rng.random_range(-1.0..1.0) * scale,
-                )
-            };
-            let (a, b, c, e) = (r(), r(), r(), r());
-            let mut d = r();
-            if i % 3 == 0 {
-                // Nearly parallel to ab.
-                d = Point::new(c.x + (b.x - a.x) * 1.5, c.y + (b.y - a.y) * 1.5 + scale * 1e-12);
-            }
-            // f chosen so that ef passes (nearly) through the crossing of ab and cd.
-            let den = (b.x - a.x) * (d.y - c.y) - (b.y - a.y) * (d.x - c.x);
-            let num = (c.x - a.x) * (d.y - c.y) - (c.y - a.y) * (d.x - c.x);
-            let t = num / den;
-            let x = Point::new(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y));
-            let mut f = if i % 2 == 0 { x } else { r() };
-            if i % 4 == 1 {
-                f = Point::new(x.x.next_up(), x.y);
-            }
-            if !f.is_finite() {
-                continue;
-            }
-            let pts = [a, b, c, d, e, f];
-            if let Some(sign) = line_meet_filtered(pts) {
-                decided += 1;
-                assert_eq!(sign, sign_slow(&LineMeetSidePoly(pts)), "{pts:?}");
-            }
-        }
-        assert!(decided > 5_000, "the filter decides too little: {decided}");
-    }
-
-    fn exact_orient(a: Point, b: Point, c: Point) -> Orientation {
-        sign_slow(&OrientPoly(a, b, c)).into()
-    }
-
-    #[test]
-    fn decompose_is_exact() {
-        for x in [
-            0.0,
-            -0.0,
-            1.0,
-            -1.5,
-            f64::MAX,
-            f64::MIN_POSITIVE,
-            5e-324,
-            -5e-324,
-            1e300,
-            0.1,
-        ] {
-            let (m, e) = decompose(x);
-            assert_eq!(
-                (m as f64) * 2f64.powi(e as i32 / 2) * 2f64.powi(e as i32 - e as i32 / 2),
-                x
-            );
-        }
-    }
-
-    #[test]
-    fn range_limits_are_powers_of_two() {
-        assert_eq!(ADAPTIVE_MIN, 2f64.powi(-400));
-        assert_eq!(ADAPTIVE_MAX, 2f64.powi(400));
-    }
-
-    #[test]
-    fn orient_matches_exact_fallback_near_collinear_and_at_extremes() {
-        let mut rng = SmallRng::seed_from_u64(0x5eed_0001);
-        let scales = [
-            1.0,
-            2f64.powi(-1000),
-            2f64.powi(960),
-            2f64.powi(-1070),
-            2f64.powi(500),
-        ];
-        let mut fast_wrong = 0;
-        for i in 0..20_000 {
-            let s = scales[i % scales.len()];
-            // Points on a line y = t·x with a one-ulp perturbation, at a large offset.
-            let off = if i % 2 == 0 { 0.0 } else { 2f64.powi(40) };
-            let t: f64 = rng.random_range(-2.0..2.0);
-            let xs: [f64; 3] = [rng.random(), rng.random(), rng.random()];
-            let mut p: Vec<Point> = xs
-                .iter()
-                .map(|&x| Point::new((x + off) * s, (t * x + off) * s))
-                .collect();
-            if rng.random_bool(0.5) {
-                p[2].y = p[2].y.next_up();
-            }
-            let want = exact_orient(p[0], p[1], p[2]);
-            assert_eq!(Exact.orient(p[0], p[1], p[2]), want, "{p:?}");
-            assert_eq!(Exact.orient(p[1], p[0], p[2]), want.reverse());
-            if Fast.orient(p[0], p[1], p[2]) != want {
-                fast_wrong += 1;
-            }
-        }
-        // The fast kernel is measurably wrong on this family; the exact one never is.
-        println!("fast kernel wrong on near-collinear triples: {fast_wrong} of 20000");
-        assert!(
-            fast_wrong > 100,
-            "expected the fast kernel to fail often, got {fast_wrong}"
-        );
-    }
-
-    #[test]
-    fn orient_on_subnormals_and_mixed_magnitudes() {
-        let tiny = 5e-324;
-        let a = Point::new(0.0, 0.0);
-        let b = Point::new(tiny, tiny);
-        let c = Point::new(2.0 * tiny, 2.0 * tiny);
-        assert_eq!(Exact.orient(a, b, c), Orientation::Collinear);
-        let c2 = Point::new(2.0 * tiny, 3.0 * tiny);
-        assert_eq!(Exact.orient(a, b, c2), Orientation::Ccw);
-        // The fast kernel underflows to zero here.
-        assert_eq!(Fast.orient(a, b, c2), Orientation::Collinear);
-        let big = f64::MAX;
-        let p = Point::new(-big, -big);
-        let q = Point::new(big, big);
-        let r = Point::new(0.0, 0.0);
-        assert_eq!(Exact.orient(p, q, r), Orientation::Collinear);
-        assert_eq!(Exact.orient(p, q, Point::new(0.0, tiny)), Orientation::Ccw);
-        assert_eq!(Exact.orient(p, q, Point::new(tiny, 0.0)), Orientation::Cw);
-    }
-
-    #[test]
-    fn interval_filter_never_claims_a_wrong_sign() {
-        let mut rng = SmallRng::seed_from_u64(7);
-        for i in 0..5_000 {
-            let e: i32 = rng.random_range(-1070..1000);
-            let s = 2f64.powi(e);
-            let mut pts: Vec<Point> = (0..4)
-                .map(|_| Point::new(rng.random::<f64>() * s, rng.random::<f64>() * s))
-                .collect();
-            if i % 3 == 0 {
-                // Exactly parallel directions, then nudged by one ulp half of the time.
-                pts[3] = Point::new(pts[2].x + (pts[1].x - pts[0].x), pts[2].y + (pts[1].y - pts[0].y));
-                if i % 2 == 0 {
-                    pts[3].y = pts[3].y.next_up();
-                }
-            }
-            let poly = super::super::CrossPoly(pts[0], pts[1], pts[2], pts[3]);
-            let exact = poly.eval::<Dyadic>().certain_sign();
-            if let Some(s) = poly.eval::<Interval>().certain_sign() {
-                assert_eq!(Some(s), exact);
-            }
-            assert_eq!(Some(Exact.sign(&poly)), exact);
-            assert_eq!(
-                Some(Exact.cross(pts[0], pts[1], pts[2], pts[3])),
-                exact.map(Orientation::from)
-            );
-            let dot = super::super::DotPoly(pts[0], pts[1], pts[2], pts[3]);
-            assert_eq!(
-                Some(Exact.dot(pts[0], pts[1], pts[2], pts[3])),
-                dot.eval::<Dyadic>().certain_sign()
-            );
-        }
-    }
-}
+mod tests;

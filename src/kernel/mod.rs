@@ -217,11 +217,28 @@ pub trait Kernel: Copy + Clone + Default + fmt::Debug + Send + Sync + 'static {
         self.sign(&DotPoly(a, b, c, d))
     }
 
-    /// The sign of the degree-4 polynomial behind [`line_meet_side`] for the points
-    /// `[a, b, c, d, e, f]`; a method so that a kernel can add a static filter.
+    /// The sign of `C₀·C₁ + C₂·C₃`, a polynomial of degree 4, where each
+    /// `Cᵢ = (bᵢ − aᵢ) × (dᵢ − cᵢ)` is the cross product of the directions of the point
+    /// pairs in `factors[i] = [aᵢ, bᵢ, cᵢ, dᵢ]`. [`line_meet_side`] and the slope
+    /// comparison of Chazelle–Dobkin are of this form. A method so that a kernel can
+    /// add a static filter.
     #[inline]
-    fn line_meet_sign(self, pts: [Point; 6]) -> Sign {
-        self.sign(&LineMeetSidePoly(pts))
+    fn cross_products_sign(self, factors: [[Point; 4]; 4]) -> Sign {
+        self.sign(&CrossProductsPoly(factors))
+    }
+}
+
+/// The polynomial behind [`Kernel::cross_products_sign`].
+pub(crate) struct CrossProductsPoly(pub(crate) [[Point; 4]; 4]);
+impl Polynomial for CrossProductsPoly {
+    #[inline]
+    fn eval<R: Ring>(&self) -> R {
+        let f = R::from_f64;
+        let cross = |[a, b, c, d]: [Point; 4]| {
+            (f(b.x) - f(a.x)) * (f(d.y) - f(c.y)) - (f(b.y) - f(a.y)) * (f(d.x) - f(c.x))
+        };
+        let [c0, c1, c2, c3] = self.0;
+        cross(c0) * cross(c1) + cross(c2) * cross(c3)
     }
 }
 
@@ -260,7 +277,8 @@ impl Polynomial for DotPoly {
 ///
 /// X is never constructed: the sign is that of the degree-4 polynomial
 /// `D·((f−e)×(a−e)) + N·((f−e)×(b−a))` with `D = (b−a)×(d−c)` and `N = (c−a)×(d−c)`,
-/// multiplied by the sign of `D` (X = a + (N/D)(b−a)). Exact under [`Exact`].
+/// multiplied by the sign of `D` (X = a + (N/D)(b−a)), asked of
+/// [`Kernel::cross_products_sign`]. Exact under [`Exact`].
 /// The lines must not be parallel (`D ≠ 0`); for parallel lines the answer is `Collinear`.
 #[inline]
 pub fn line_meet_side<K: Kernel>(
@@ -273,27 +291,10 @@ pub fn line_meet_side<K: Kernel>(
     if den == Orientation::Collinear {
         return Orientation::Collinear;
     }
-    let s: Orientation = k.line_meet_sign([a, b, c, d, e, f]).into();
+    let s: Orientation = k
+        .cross_products_sign([[a, b, c, d], [e, f, e, a], [a, c, c, d], [e, f, a, b]])
+        .into();
     if den == Orientation::Ccw { s } else { s.reverse() }
-}
-
-/// The polynomial behind [`line_meet_side`].
-pub(crate) struct LineMeetSidePoly(pub(crate) [Point; 6]);
-impl Polynomial for LineMeetSidePoly {
-    #[inline]
-    fn eval<R: Ring>(&self) -> R {
-        let f = R::from_f64;
-        let [a, b, c, d, e, g] = self.0;
-        let cr = |ux: R, uy: R, vx: R, vy: R| ux * vy - uy * vx;
-        let (bax, bay) = (f(b.x) - f(a.x), f(b.y) - f(a.y));
-        let (dcx, dcy) = (f(d.x) - f(c.x), f(d.y) - f(c.y));
-        let (gex, gey) = (f(g.x) - f(e.x), f(g.y) - f(e.y));
-        let den = cr(bax.clone(), bay.clone(), dcx.clone(), dcy.clone());
-        let num = cr(f(c.x) - f(a.x), f(c.y) - f(a.y), dcx, dcy);
-        let side_a = cr(gex.clone(), gey.clone(), f(a.x) - f(e.x), f(a.y) - f(e.y));
-        let side_dir = cr(gex, gey, bax, bay);
-        den * side_a + num * side_dir
-    }
 }
 
 /// Plain `f64` predicates: one floating-point evaluation, no error analysis.

@@ -2,7 +2,8 @@
 
 use super::hull::hull_indices;
 use super::{InputIndex, PolygonError, Prefilter, distinct_indices};
-use crate::kernel::{Exact, Kernel, Orientation, Point};
+use crate::kernel::exact::area_sign_of;
+use crate::kernel::{Exact, Kernel, Orientation, Point, Sign};
 
 /// A convex polygon with at least three vertices, stored counter-clockwise with
 /// every turn strictly convex (no repeated and no collinear vertices).
@@ -256,7 +257,8 @@ fn strictly_between(prev: Point, cur: Point, next: Point) -> bool {
 }
 
 /// Mixed turns: name a vertex that turns against the polygon's overall orientation
-/// (decided by the signed area, or by the majority of turns when the area is zero).
+/// (decided by the sign of the signed area, exactly at every magnitude, or by the
+/// majority of turns when the area is zero).
 /// `v` holds the input indices of the distinct vertices, `turns` their turns.
 fn non_convex_error<I: InputIndex>(
     points: &[Point],
@@ -265,18 +267,10 @@ fn non_convex_error<I: InputIndex>(
     ccw: usize,
     cw: usize,
 ) -> PolygonError {
-    let n = v.len();
-    let at = |i: usize| points[v[i].get()];
-    let twice_area: f64 = (0..n)
-        .map(|i| {
-            let (a, b) = (at(i), at((i + 1) % n));
-            a.x * b.y - a.y * b.x
-        })
-        .sum();
-    let overall = if twice_area > 0.0 || (twice_area == 0.0 && ccw >= cw) {
-        Orientation::Ccw
-    } else {
-        Orientation::Cw
+    let overall = match area_sign_of(v.len(), |i| points[v[i].get()]) {
+        Sign::Positive => Orientation::Ccw,
+        Sign::Zero if ccw >= cw => Orientation::Ccw,
+        _ => Orientation::Cw,
     };
     let i = turns
         .iter()
@@ -395,6 +389,36 @@ mod tests {
             })
             .collect();
         assert_eq!(poly(&star), Err(WindsMoreThanOnce { times: 2 }));
+    }
+
+    /// The arrowhead's error names vertex 3 (1 when clockwise) at every magnitude: the
+    /// overall orientation is decided exactly, so a float area that would overflow
+    /// (4e300 squared) or underflow (subnormal coordinates) cannot flip it.
+    #[test]
+    fn reflex_vertex_is_named_at_every_scale() {
+        use PolygonError::*;
+        let arrow = [[0., 0.], [4., 0.], [4., 4.], [2., 1.], [0., 4.]];
+        let scales = [
+            1.0,
+            1e300,
+            2f64.powi(600),
+            2f64.powi(-600),
+            2f64.powi(1021),  // 4·2^1021 = 2^1023, near f64::MAX
+            2f64.powi(-1070), // every coordinate subnormal
+            5e-324,
+        ];
+        for s in scales {
+            let scaled: Vec<[f64; 2]> = arrow.iter().map(|&[x, y]| [x * s, y * s]).collect();
+            assert_eq!(poly(&scaled), Err(Reflex { index: 3 }), "scale {s:e}");
+            let mut cw = scaled.clone();
+            cw.reverse();
+            assert_eq!(poly(&cw), Err(Reflex { index: 1 }), "clockwise, scale {s:e}");
+        }
+        // The polygon as written.
+        assert_eq!(
+            poly(&[[0., 0.], [4e300, 0.], [4e300, 4e300], [2e300, 1e300], [0., 4e300]]),
+            Err(Reflex { index: 3 })
+        );
     }
 
     #[test]

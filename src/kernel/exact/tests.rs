@@ -1,0 +1,607 @@
+use super::*;
+use crate::kernel::Fast;
+use rand::rngs::SmallRng;
+use rand::{Rng, SeedableRng};
+
+/// The exact sign of a degree-4 call, by big integers.
+fn exact_products(factors: [[Point; 4]; 4]) -> Sign {
+    sign_slow(&CrossProductsPoly(factors))
+}
+
+/// The factors of `line_meet_side`'s polynomial for the lines ab, cd and ef.
+fn line_meet_factors([a, b, c, d, e, f]: [Point; 6]) -> [[Point; 4]; 4] {
+    [[a, b, c, d], [e, f, e, a], [a, c, c, d], [e, f, a, b]]
+}
+
+/// A point on (or, rounded, next to) the crossing of the lines ab and cd.
+fn crossing(a: Point, b: Point, c: Point, d: Point) -> Point {
+    let den = (b.x - a.x) * (d.y - c.y) - (b.y - a.y) * (d.x - c.x);
+    let num = (c.x - a.x) * (d.y - c.y) - (c.y - a.y) * (d.x - c.x);
+    let t = num / den;
+    Point::new(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y))
+}
+
+/// `x` moved by `k` ulps.
+fn ulps(x: f64, k: i32) -> f64 {
+    let mut x = x;
+    for _ in 0..k.unsigned_abs() {
+        x = if k > 0 { x.next_up() } else { x.next_down() };
+    }
+    x
+}
+
+/// The static filter of `cross_products_sign` never claims a wrong sign, and the
+/// whole predicate is exact: random points, nearly parallel lines, a third line
+/// through (or one ulp off) the crossing, Chazelle–Dobkin's slope comparisons on grids
+/// and on reals, at magnitudes from 2^-600 to 2^600, against big-integer evaluation.
+#[test]
+fn cross_products_filter_never_claims_a_wrong_sign() {
+    let mut rng = SmallRng::seed_from_u64(0x11ee);
+    let mut decided = 0;
+    for i in 0..40_000 {
+        let scale = [
+            1.0,
+            1e-60,
+            1e60,
+            1e-140,
+            2f64.powi(600),
+            2f64.powi(-600),
+            2f64.powi(40),
+        ][(i / 4) % 7];
+        let grid = i % 8 >= 6;
+        let mut r = || {
+            let (x, y): (f64, f64) = if grid {
+                (rng.random_range(-4..=4) as f64, rng.random_range(-4..=4) as f64)
+            } else {
+                (rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0))
+            };
+            Point::new(x * scale, y * scale)
+        };
+        let factors = if i % 2 == 0 {
+            // line_meet_side's polynomial.
+            let (a, b, c, e) = (r(), r(), r(), r());
+            let mut d = r();
+            if i % 3 == 0 {
+                d = Point::new(c.x + (b.x - a.x) * 1.5, c.y + (b.y - a.y) * 1.5 + scale * 1e-12);
+            }
+            let x = crossing(a, b, c, d);
+            let f = match i % 5 {
+                0 => x,
+                1 => Point::new(x.x.next_up(), x.y),
+                _ => r(),
+            };
+            line_meet_factors([a, b, c, d, e, f])
+        } else {
+            // Chazelle–Dobkin's slope comparison with pivot a and direction c1 − c0.
+            let (a, c0, c1, u1, u2, v1, v2) = (r(), r(), r(), r(), r(), r(), r());
+            [[u1, u2, c0, c1], [a, v1, a, v2], [v2, v1, c0, c1], [a, u1, a, u2]]
+        };
+        if factors.iter().flatten().any(|p| !p.is_finite()) {
+            continue;
+        }
+        let want = exact_products(factors);
+        if let Some(sign) = cross_products_filtered(&factors) {
+            decided += 1;
+            assert_eq!(sign, want, "{factors:?}");
+        }
+        assert_eq!(Exact.cross_products_sign(factors), want, "{factors:?}");
+    }
+    assert!(decided > 15_000, "the filter decides too little: {decided}");
+}
+
+/// Every static filter on inputs whose computed value lies within a factor of four
+/// of the filter's bound, on both sides: nearly collinear triples, nearly parallel
+/// segments, nearly perpendicular ones, a third line nearly through a crossing, each
+/// perturbed by up to 60 ulps at offsets up to 2^52. Whenever a filter decides, it
+/// is right; both outcomes occur close to the bound, so the bound itself is tested.
+#[test]
+fn filters_at_their_bound() {
+    let mut rng = SmallRng::seed_from_u64(0xb0_0d);
+    // [decided, undecided] within a factor of 4 of the bound, per filter.
+    let mut near = [[0usize; 2]; 4];
+    let mut note = |f: usize, value: f64, bound: f64, decided: bool| {
+        if bound.is_finite() && value.abs() > bound / 4.0 && value.abs() < bound * 4.0 {
+            near[f][usize::from(!decided)] += 1;
+        }
+    };
+    for i in 0..30_000 {
+        let off = 2f64.powi([0, 20, 40, 52][i % 4]);
+        let t: f64 = rng.random_range(-2.0..2.0);
+        let k = rng.random_range(-60..=60);
+        let mut r = || {
+            Point::new(
+                off + rng.random_range(-1.0..1.0),
+                off + rng.random_range(-1.0..1.0),
+            )
+        };
+        let (a, b) = (r(), r());
+        // c on the line ab (rounded), moved by k ulps.
+        let on = Point::new(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y));
+        let c = Point::new(on.x, ulps(on.y, k));
+        let left = (a.x - c.x) * (b.y - c.y);
+        let right = (a.y - c.y) * (b.x - c.x);
+        let got = orient_filtered(a, b, c);
+        note(
+            0,
+            left - right,
+            two_products_bound(left, (left - right).abs()),
+            got.is_some(),
+        );
+        if let Some(s) = got {
+            assert_eq!(s, sign_slow(&OrientPoly(a, b, c)), "orient {a:?} {b:?} {c:?}");
+        }
+        // cd nearly parallel to ab.
+        let d = Point::new(c.x + (b.x - a.x), ulps(c.y + (b.y - a.y), k / 2));
+        let left = (b.x - a.x) * (d.y - c.y);
+        let right = (b.y - a.y) * (d.x - c.x);
+        let got = cross_filtered(a, b, c, d);
+        note(
+            1,
+            left - right,
+            two_products_bound(left, (left - right).abs()),
+            got.is_some(),
+        );
+        if let Some(s) = got {
+            assert_eq!(
+                s,
+                sign_slow(&CrossPoly(a, b, c, d)),
+                "cross {a:?} {b:?} {c:?} {d:?}"
+            );
+        }
+        // cd nearly perpendicular to ab.
+        let d = Point::new(c.x - (b.y - a.y), ulps(c.y + (b.x - a.x), k / 2));
+        let left = (b.x - a.x) * (d.x - c.x);
+        let right = (b.y - a.y) * (d.y - c.y);
+        let got = dot_filtered(a, b, c, d);
+        note(
+            2,
+            left + right,
+            two_products_bound(left, (left + right).abs()),
+            got.is_some(),
+        );
+        if let Some(s) = got {
+            assert_eq!(s, sign_slow(&DotPoly(a, b, c, d)), "dot {a:?} {b:?} {c:?} {d:?}");
+        }
+        // A third line through the crossing of ab and a random cd, moved by k ulps.
+        let (c, d, e) = (r(), r(), r());
+        let x = crossing(a, b, c, d);
+        let f = Point::new(ulps(x.x, k), x.y);
+        if !f.is_finite() {
+            continue;
+        }
+        let factors = line_meet_factors([a, b, c, d, e, f]);
+        let (s, bound, valid) = cross_products_bounded(&factors);
+        let got = cross_products_filtered(&factors);
+        note(3, s, if valid { bound } else { f64::INFINITY }, got.is_some());
+        if let Some(s) = got {
+            assert_eq!(s, exact_products(factors), "{factors:?}");
+        }
+    }
+    for (f, [decided, undecided]) in near.into_iter().enumerate() {
+        assert!(
+            decided > 50 && undecided > 50,
+            "filter {f}: {decided} decided, {undecided} not, near the bound"
+        );
+    }
+}
+
+/// The out-of-line layers, each on inputs that reach it, against big integers:
+/// structural zeros, rescaling (2^±600, near `f64::MAX`, subnormals), the adaptive
+/// predicate on rescaled near-degenerate input, exact differences for `cross` and
+/// `dot`, and the big-integer fallback for inputs spanning more than 2^1022.
+#[test]
+fn fallback_layers_match_big_integers() {
+    let p = Point::new;
+    let big = 1e300;
+    let tiny = 1e-300;
+    // Structural zeros, at any magnitude.
+    for s in [1.0, big, tiny, 5e-324, f64::MAX] {
+        let (a, b, c) = (p(s, -s), p(-s, 0.0), p(0.0, s));
+        assert_eq!(orient_slow(a, a, c), Sign::Zero);
+        assert_eq!(orient_slow(a, b, b), Sign::Zero);
+        assert_eq!(orient_slow(c, b, c), Sign::Zero);
+        assert_eq!(cross_slow(a, a, b, c), Sign::Zero);
+        assert_eq!(cross_slow(a, b, a, b), Sign::Zero);
+        assert_eq!(cross_slow(a, b, b, a), Sign::Zero);
+        assert_eq!(dot_slow(a, b, c, c), Sign::Zero);
+        assert_eq!(
+            cross_products_slow([[a, a, b, c], [a, b, b, c], [a, b, c, a], [c, c, a, b]]),
+            Sign::Zero
+        );
+    }
+    let mut rng = SmallRng::seed_from_u64(0xfa11);
+    for i in 0..20_000 {
+        // Magnitudes that overflow or underflow the first filter, and scale 1.
+        let e = [600, -600, 1000, 1023, -1000, -1060, 0][i % 7];
+        let s = 2f64.powi(e / 2) * 2f64.powi(e - e / 2);
+        let grid = i % 3 == 0;
+        let mut r = || {
+            let (x, y): (f64, f64) = if grid {
+                (rng.random_range(-3..=3) as f64, rng.random_range(-3..=3) as f64)
+            } else {
+                (rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0))
+            };
+            p(x * s, y * s)
+        };
+        let (a, b, mut c, d) = (r(), r(), r(), r());
+        if i % 5 == 0 {
+            // Exactly collinear or parallel on the grid, nearly so on reals.
+            c = p(a.x + (b.x - a.x) * 0.5, a.y + (b.y - a.y) * 0.5);
+        }
+        let d_par = p(c.x + (b.x - a.x), c.y + (b.y - a.y));
+        if [a, b, c, d, d_par].iter().any(|q| !q.is_finite()) {
+            continue;
+        }
+        assert_eq!(
+            orient_slow(a, b, c),
+            sign_slow(&OrientPoly(a, b, c)),
+            "{a:?} {b:?} {c:?}"
+        );
+        assert_eq!(Exact.orient(a, b, c), sign_slow(&OrientPoly(a, b, c)).into());
+        for d in [d, d_par] {
+            assert_eq!(
+                cross_slow(a, b, c, d),
+                sign_slow(&CrossPoly(a, b, c, d)),
+                "{a:?} {b:?} {c:?} {d:?}"
+            );
+            assert_eq!(
+                dot_slow(a, b, c, d),
+                sign_slow(&DotPoly(a, b, c, d)),
+                "{a:?} {b:?} {c:?} {d:?}"
+            );
+        }
+        let factors = line_meet_factors([a, b, c, d, r(), c]);
+        if factors.iter().flatten().all(|q| q.is_finite()) {
+            assert_eq!(cross_products_slow(factors), exact_products(factors));
+        }
+    }
+    // Every coordinate at its own magnitude, from subnormal to near f64::MAX: the
+    // scaled differences underflow, the coordinates cannot be rescaled exactly.
+    for i in 0..20_000 {
+        let mut c = || {
+            let e = rng.random_range(-1074..1020);
+            rng.random_range(-1.0..1.0) * 2f64.powi(e / 2) * 2f64.powi(e - e / 2)
+        };
+        let (a, b, d) = (p(c(), c()), p(c(), c()), p(c(), c()));
+        let t = [0.5, 0.25, 2.0][i % 3];
+        let mid = p(a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t);
+        let c = if i % 2 == 0 { mid } else { p(c(), c()) };
+        if [a, b, c, d, mid].iter().any(|q| !q.is_finite()) {
+            continue;
+        }
+        assert_eq!(
+            orient_slow(a, b, c),
+            sign_slow(&OrientPoly(a, b, c)),
+            "{a:?} {b:?} {c:?}"
+        );
+        assert_eq!(cross_slow(a, b, c, d), sign_slow(&CrossPoly(a, b, c, d)));
+        assert_eq!(dot_slow(a, b, c, d), sign_slow(&DotPoly(a, b, c, d)));
+        let factors = line_meet_factors([a, b, c, d, mid, c]);
+        assert_eq!(
+            cross_products_slow(factors),
+            exact_products(factors),
+            "{factors:?}"
+        );
+    }
+    // Inputs spanning more than 2^1022 in one call cannot be rescaled: big integers.
+    let (a, b) = (p(0.0, 0.0), p(big, tiny));
+    assert!(Rescaled::new([a, b, p(2.0 * big, 2.0 * tiny)]).is_none());
+    assert_eq!(
+        Exact.orient(a, b, p(2.0 * big, 2.0 * tiny)),
+        Orientation::Collinear
+    );
+    assert_eq!(
+        Exact.orient(a, b, p(2.0 * big, (2.0 * tiny).next_up())),
+        Orientation::Ccw
+    );
+    assert_eq!(
+        Exact.cross(a, b, b, p(2.0 * big, 2.0 * tiny)),
+        Orientation::Collinear
+    );
+    assert_eq!(Exact.dot(a, b, p(0.0, 0.0), p(-tiny, big)), Sign::Zero);
+    assert_eq!(
+        Exact.dot(a, b, p(0.0, 0.0), p(-tiny, big.next_up())),
+        Sign::Positive
+    );
+}
+
+/// Rescaling is exact, puts the largest magnitude in [1, 2), and refuses what it
+/// cannot scale exactly.
+#[test]
+fn rescaling_is_exact() {
+    let p = Point::new;
+    for (pts, adaptive) in [
+        ([p(3.0, -0.5), p(0.0, 1e-100)], true),
+        ([p(f64::MAX, -f64::MAX), p(1e300, 0.0)], true),
+        ([p(5e-324, 0.0), p(-1e-310, 3e-320)], true),
+        ([p(2f64.powi(600), 1.0), p(0.0, 0.0)], false),
+        ([p(1e300, 0.0), p(1e-6, 0.0)], false),
+        ([p(1e300, 0.0), p(1e200, 0.0)], true),
+    ] {
+        let r = Rescaled::new(pts).expect("scalable");
+        assert_eq!(r.adaptive, adaptive, "{pts:?}");
+        let hi = r
+            .points
+            .iter()
+            .fold(0.0f64, |m, q| m.max(q.x.abs()).max(q.y.abs()));
+        assert!((1.0..2.0).contains(&hi), "{pts:?} -> {:?}", r.points);
+        // Undo the scaling: the inputs come back bit for bit.
+        let k = exponent(pts.iter().fold(0.0f64, |m, q| m.max(q.x.abs()).max(q.y.abs())));
+        let back = |v: f64| v * 2f64.powi(k / 2) * 2f64.powi(k - k / 2);
+        for (q, s) in pts.iter().zip(r.points) {
+            assert_eq!((back(s.x), back(s.y)), (q.x, q.y), "{pts:?}");
+        }
+    }
+    assert!(Rescaled::new([p(0.0, 0.0), p(-0.0, 0.0)]).is_none());
+    assert!(Rescaled::new([p(1e300, 0.0), p(1e-300, 0.0)]).is_none());
+    assert_eq!(exponent(5e-324), -1074);
+    assert_eq!(exponent(f64::MAX), 1023);
+    assert_eq!(exponent(1.0), 0);
+    assert_eq!(exponent(0.75), -1);
+}
+
+/// Every predicate gives the same answer when all its inputs are multiplied by the
+/// same power of two, from subnormal to near `f64::MAX`, on nearly degenerate input.
+#[test]
+fn predicates_are_invariant_under_power_of_two_scaling() {
+    let mut rng = SmallRng::seed_from_u64(0x5ca1e);
+    for _ in 0..2_000 {
+        let mut r = || Point::new(rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0));
+        let (a, b, e) = (r(), r(), r());
+        let on = Point::new(a.x + 0.3 * (b.x - a.x), a.y + 0.3 * (b.y - a.y));
+        let c = Point::new(on.x, on.y.next_up());
+        let d = Point::new(c.x + (b.x - a.x), c.y + (b.y - a.y));
+        let f = crossing(a, b, c, r());
+        let want = (
+            Exact.orient(a, b, c),
+            Exact.cross(a, b, c, d),
+            Exact.dot(a, b, c, d),
+            Exact.cross_products_sign(line_meet_factors([a, b, c, r(), e, f])),
+        );
+        assert_eq!(want.0, sign_slow(&OrientPoly(a, b, c)).into());
+        for k in [-1070, -1022, -600, -300, 300, 600, 1000, 1023] {
+            let s = |q: Point| {
+                Point::new(
+                    q.x * 2f64.powi(k / 2) * 2f64.powi(k - k / 2),
+                    q.y * 2f64.powi(k / 2) * 2f64.powi(k - k / 2),
+                )
+            };
+            let (sa, sb, sc, sd) = (s(a), s(b), s(c), s(d));
+            // Only exact scalings keep the polynomial's sign (subnormal results may round).
+            let exact = |q: Point, sq: Point| {
+                let u = |v: f64| v * 2f64.powi(-k / 2) * 2f64.powi(-k - (-k) / 2);
+                u(sq.x) == q.x && u(sq.y) == q.y && sq.is_finite()
+            };
+            if !(exact(a, sa) && exact(b, sb) && exact(c, sc) && exact(d, sd)) {
+                continue;
+            }
+            assert_eq!(Exact.orient(sa, sb, sc), want.0, "2^{k}");
+            assert_eq!(Exact.cross(sa, sb, sc, sd), want.1, "2^{k}");
+            assert_eq!(Exact.dot(sa, sb, sc, sd), want.2, "2^{k}");
+        }
+    }
+}
+
+fn exact_orient(a: Point, b: Point, c: Point) -> Orientation {
+    sign_slow(&OrientPoly(a, b, c)).into()
+}
+
+#[test]
+fn decompose_is_exact() {
+    for x in [
+        0.0,
+        -0.0,
+        1.0,
+        -1.5,
+        f64::MAX,
+        f64::MIN_POSITIVE,
+        5e-324,
+        -5e-324,
+        1e300,
+        0.1,
+    ] {
+        let (m, e) = decompose(x);
+        assert_eq!(
+            (m as f64) * 2f64.powi(e as i32 / 2) * 2f64.powi(e as i32 - e as i32 / 2),
+            x
+        );
+    }
+}
+
+#[test]
+fn range_limits_are_powers_of_two() {
+    assert_eq!(ADAPTIVE_MIN, 2f64.powi(-400));
+    assert_eq!(ADAPTIVE_MAX, 2f64.powi(400));
+}
+
+#[test]
+fn orient_matches_exact_fallback_near_collinear_and_at_extremes() {
+    let mut rng = SmallRng::seed_from_u64(0x5eed_0001);
+    let scales = [
+        1.0,
+        2f64.powi(-1000),
+        2f64.powi(960),
+        2f64.powi(-1070),
+        2f64.powi(500),
+    ];
+    let mut fast_wrong = 0;
+    for i in 0..20_000 {
+        let s = scales[i % scales.len()];
+        // Points on a line y = t·x with a one-ulp perturbation, at a large offset.
+        let off = if i % 2 == 0 { 0.0 } else { 2f64.powi(40) };
+        let t: f64 = rng.random_range(-2.0..2.0);
+        let xs: [f64; 3] = [rng.random(), rng.random(), rng.random()];
+        let mut p: Vec<Point> = xs
+            .iter()
+            .map(|&x| Point::new((x + off) * s, (t * x + off) * s))
+            .collect();
+        if rng.random_bool(0.5) {
+            p[2].y = p[2].y.next_up();
+        }
+        let want = exact_orient(p[0], p[1], p[2]);
+        assert_eq!(Exact.orient(p[0], p[1], p[2]), want, "{p:?}");
+        assert_eq!(Exact.orient(p[1], p[0], p[2]), want.reverse());
+        if Fast.orient(p[0], p[1], p[2]) != want {
+            fast_wrong += 1;
+        }
+    }
+    // The fast kernel is measurably wrong on this family; the exact one never is.
+    println!("fast kernel wrong on near-collinear triples: {fast_wrong} of 20000");
+    assert!(
+        fast_wrong > 100,
+        "expected the fast kernel to fail often, got {fast_wrong}"
+    );
+}
+
+#[test]
+fn orient_on_subnormals_and_mixed_magnitudes() {
+    let tiny = 5e-324;
+    let a = Point::new(0.0, 0.0);
+    let b = Point::new(tiny, tiny);
+    let c = Point::new(2.0 * tiny, 2.0 * tiny);
+    assert_eq!(Exact.orient(a, b, c), Orientation::Collinear);
+    let c2 = Point::new(2.0 * tiny, 3.0 * tiny);
+    assert_eq!(Exact.orient(a, b, c2), Orientation::Ccw);
+    // The fast kernel underflows to zero here.
+    assert_eq!(Fast.orient(a, b, c2), Orientation::Collinear);
+    let big = f64::MAX;
+    let p = Point::new(-big, -big);
+    let q = Point::new(big, big);
+    let r = Point::new(0.0, 0.0);
+    assert_eq!(Exact.orient(p, q, r), Orientation::Collinear);
+    assert_eq!(Exact.orient(p, q, Point::new(0.0, tiny)), Orientation::Ccw);
+    assert_eq!(Exact.orient(p, q, Point::new(tiny, 0.0)), Orientation::Cw);
+}
+
+#[test]
+fn interval_filter_never_claims_a_wrong_sign() {
+    let mut rng = SmallRng::seed_from_u64(7);
+    for i in 0..5_000 {
+        let e: i32 = rng.random_range(-1070..1000);
+        let s = 2f64.powi(e);
+        let mut pts: Vec<Point> = (0..4)
+            .map(|_| Point::new(rng.random::<f64>() * s, rng.random::<f64>() * s))
+            .collect();
+        if i % 3 == 0 {
+            // Exactly parallel directions, then nudged by one ulp half of the time.
+            pts[3] = Point::new(pts[2].x + (pts[1].x - pts[0].x), pts[2].y + (pts[1].y - pts[0].y));
+            if i % 2 == 0 {
+                pts[3].y = pts[3].y.next_up();
+            }
+        }
+        let poly = super::super::CrossPoly(pts[0], pts[1], pts[2], pts[3]);
+        let exact = poly.eval::<Dyadic>().certain_sign();
+        if let Some(s) = poly.eval::<Interval>().certain_sign() {
+            assert_eq!(Some(s), exact);
+        }
+        assert_eq!(Some(Exact.sign(&poly)), exact);
+        assert_eq!(
+            Some(Exact.cross(pts[0], pts[1], pts[2], pts[3])),
+            exact.map(Orientation::from)
+        );
+        let dot = super::super::DotPoly(pts[0], pts[1], pts[2], pts[3]);
+        assert_eq!(
+            Some(Exact.dot(pts[0], pts[1], pts[2], pts[3])),
+            dot.eval::<Dyadic>().certain_sign()
+        );
+    }
+}
+
+/// The area sign is exact where a plain float sum overflows, underflows or cancels.
+#[test]
+fn area_sign_is_exact() {
+    let p = Point::new;
+    let arrow = [p(0., 0.), p(4., 0.), p(4., 4.), p(2., 1.), p(0., 4.)];
+    for k in [0, 600, -600, 1021, -1070, -1074] {
+        let s = |q: Point| {
+            Point::new(
+                q.x * 2f64.powi(k / 2) * 2f64.powi(k - k / 2),
+                q.y * 2f64.powi(k / 2) * 2f64.powi(k - k / 2),
+            )
+        };
+        let scaled: Vec<Point> = arrow.iter().map(|&q| s(q)).collect();
+        if scaled.iter().zip(&arrow).any(|(a, b)| a.x == 0.0 && b.x != 0.0) {
+            continue;
+        }
+        assert_eq!(area_sign(&scaled), Sign::Positive, "2^{k}");
+        let mut rev = scaled.clone();
+        rev.reverse();
+        assert_eq!(area_sign(&rev), Sign::Negative, "2^{k}");
+    }
+    // A figure eight with equal lobes: area exactly zero.
+    let eight = [p(0., 0.), p(1., 1.), p(2., 0.), p(2., 1.), p(1., 0.), p(0., 1.)];
+    assert_eq!(area_sign(&eight), Sign::Zero);
+    // Cancellation far from the origin: a tiny triangle at 2^60 (the float sum of
+    // products of 2^60-sized coordinates loses it entirely).
+    let o = 2f64.powi(60);
+    let tri = [p(o, o), p(o + 256.0, o), p(o, o + 256.0)];
+    assert_eq!(area_sign(&tri), Sign::Positive);
+    assert_eq!(area_sign(&[tri[0], tri[2], tri[1]]), Sign::Negative);
+    // Mixed magnitudes that cannot be rescaled: the big-integer sum.
+    let mixed = [p(0., 0.), p(1e300, 0.), p(1e300, 1e-300), p(0., 1e-300)];
+    assert_eq!(area_sign(&mixed), Sign::Positive);
+    assert_eq!(area_sign(&mixed[..2]), Sign::Zero);
+    // Random polygons: against the exact sum.
+    let mut rng = SmallRng::seed_from_u64(0xa4ea);
+    for _ in 0..300 {
+        let n = rng.random_range(3..40);
+        let e = rng.random_range(-1000..1000);
+        let pts: Vec<Point> = (0..n)
+            .map(|_| {
+                p(
+                    rng.random_range(-1.0..1.0) * 2f64.powi(e),
+                    rng.random_range(-1.0..1.0) * 2f64.powi(e),
+                )
+            })
+            .collect();
+        let f = Dyadic::from_f64;
+        let exact = (0..n)
+            .map(|i| {
+                let (a, b) = (pts[i], pts[(i + 1) % n]);
+                f(a.x) * f(b.y) - f(a.y) * f(b.x)
+            })
+            .fold(f(0.0), |acc, t| acc + t)
+            .certain_sign()
+            .unwrap();
+        assert_eq!(area_sign(&pts), exact);
+    }
+}
+
+/// Differences next to `f64::MAX` beside subnormal ones: the largest difference needs
+/// the two-factor scaling down by 2^1023, which must also scale the subnormal ones
+/// (found by the fuzz driver: a wrong Chazelle–Dobkin answer and invalid hulls).
+#[test]
+fn subnormal_differences_beside_f64_max() {
+    let p = Point::new;
+    let pts = [
+        p(-f64::MAX, -5e-324),
+        p(1125899906842647.5, -0.0),
+        p(1125899906842613.8, 1125899906842602.0),
+        p(0.9999999999999999, 1125899906842653.8),
+        p(-f64::MAX, 1e-300),
+        p(-f64::MAX, 1125899906842634.3),
+        p(-80.0, -7.052634219591294e113),
+        p(119.0, -80.0),
+        p(f64::MAX, 5e-324),
+    ];
+    let n = pts.len();
+    for &a in &pts {
+        for &b in &pts {
+            for &c in &pts {
+                assert_eq!(Exact.orient(a, b, c), exact_orient(a, b, c), "{a:?} {b:?} {c:?}");
+                for &d in &pts {
+                    let cross: Orientation = sign_slow(&CrossPoly(a, b, c, d)).into();
+                    assert_eq!(Exact.cross(a, b, c, d), cross, "{a:?} {b:?} {c:?} {d:?}");
+                    let dot = sign_slow(&DotPoly(a, b, c, d));
+                    assert_eq!(Exact.dot(a, b, c, d), dot, "{a:?} {b:?} {c:?} {d:?}");
+                }
+            }
+        }
+    }
+    let mut rng = SmallRng::seed_from_u64(0x5b_a11);
+    for _ in 0..20_000 {
+        let f: [[Point; 4]; 4] =
+            std::array::from_fn(|_| std::array::from_fn(|_| pts[rng.random_range(0..n)]));
+        assert_eq!(Exact.cross_products_sign(f), exact_products(f), "{f:?}");
+    }
+}
