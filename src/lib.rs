@@ -34,6 +34,7 @@
 //! ```
 #![forbid(unsafe_code)]
 
+pub mod certificate_json;
 pub mod crossings;
 pub mod experiments;
 #[doc(hidden)]

@@ -82,7 +82,8 @@
 //! [`Fast`](crate::Fast) wrong signs near degeneracies can give wrong answers but
 //! every step still shortens a chain, so the test always terminates.
 
-use super::{ArrayIntersection, Probe};
+use super::certificate::{from_faces, from_support, resolve_chords};
+use super::{ArrayIntersection, Certificate, Derivation, Probe, Which};
 use crate::kernel::{Kernel, Orientation, Point, Polynomial, Ring, Sign};
 use crate::polygon::ConvexPolygon;
 
@@ -110,7 +111,42 @@ impl ArrayIntersection for ChazelleDobkin {
         q: &ConvexPolygon,
         probe: &mut P,
     ) -> bool {
-        intersects(k, p.vertices(), q.vertices(), probe)
+        run(k, p.vertices(), q.vertices(), probe).meets()
+    }
+
+    /// See the module docs' "Certificate" section.
+    fn derive_probed<K: Kernel, P: Probe>(
+        &self,
+        k: K,
+        p: &ConvexPolygon,
+        q: &ConvexPolygon,
+        probe: &mut P,
+    ) -> Derivation {
+        let (pv, qv) = (p.vertices(), q.vertices());
+        let exit = run(k, pv, qv, probe);
+        let found = match exit {
+            Exit::AInside => Some(Certificate::VertexInside {
+                of: Which::P,
+                point: pv[0],
+            }),
+            // A pencil line through A supports both polygons.
+            Exit::Misses { ql, qr } => [ql, qr]
+                .into_iter()
+                .find_map(|t| from_support(k, (pv[0], qv[t]), pv, 0, qv, t)),
+            Exit::Finish { f, g, hit: Some(hit) } => match hit {
+                Hit::F { z, e } => resolve_chords(k, pv, (0, f.index(z)), qv, (g.index(e), g.index(e + 1))),
+                Hit::G { w } => Some(Certificate::VertexInside {
+                    of: Which::Q,
+                    point: qv[g.index(w)],
+                }),
+            },
+            Exit::Finish { f, g, hit: None } => {
+                let face_f = [f.index(f.lo), f.index(f.lo + 1), f.index(f.hi), 0];
+                let face_g = [g.index(g.lo), g.index(g.lo + 1), g.index(g.hi)];
+                from_faces(k, pv, &face_f, qv, &face_g)
+            }
+        };
+        found.map_or(Derivation::Answer(exit.meets()), Derivation::Certified)
     }
 }
 
@@ -156,6 +192,54 @@ impl Chain<'_> {
     fn middle(&self) -> usize {
         self.lo + (self.edges() - 1) / 2
     }
+
+    /// The array index of position `i`.
+    #[inline]
+    fn index(&self, i: usize) -> usize {
+        let len = self.pts.len();
+        let i = i % len;
+        if self.forward {
+            (self.start + i) % len
+        } else {
+            (self.start + len - i) % len
+        }
+    }
+}
+
+/// How a run ended: the plain call reduces it to the answer, the certified call turns
+/// it into a certificate.
+#[derive(Clone, Copy, Debug)]
+enum Exit<'a> {
+    /// The pivot P[0] lies in Q.
+    AInside,
+    /// The pencil from the pivot does not enter P; `ql` and `qr` are the tangent
+    /// points' indices in Q.
+    Misses { ql: usize, qr: usize },
+    /// The constant-size finish on the chains F and G, and the vertex that decided it
+    /// (none: the polygons are disjoint).
+    Finish {
+        f: Chain<'a>,
+        g: Chain<'a>,
+        hit: Option<Hit>,
+    },
+}
+
+impl Exit<'_> {
+    #[inline]
+    fn meets(&self) -> bool {
+        !matches!(self, Exit::Misses { .. } | Exit::Finish { hit: None, .. })
+    }
+}
+
+/// The chain vertex that decided the finish.
+#[derive(Clone, Copy, Debug)]
+enum Hit {
+    /// Vertex `z` of F lies on or beyond G's edge starting at position `e`: the
+    /// segment from the pivot to `z` (a chord of P) meets that edge of Q.
+    F { z: usize, e: usize },
+    /// Vertex `w` of G lies on the pivot's side of F (or on it), inside the window:
+    /// a vertex of Q in P.
+    G { w: usize },
 }
 
 /// The geometry of one query: the pivot and the pencil's tangent points, which fix
@@ -343,11 +427,15 @@ fn pencil<K: Kernel>(k: K, q: &[Point], a: Point) -> Option<(usize, usize)> {
     Some((first, last))
 }
 
-fn intersects<K: Kernel, P: Probe>(k: K, pv: &[Point], qv: &[Point], probe: &mut P) -> bool {
+fn run<'a, K: Kernel, P: Probe>(k: K, pv: &'a [Point], qv: &'a [Point], probe: &mut P) -> Exit<'a> {
     let (n, m) = (pv.len(), qv.len());
     let a = pv[0];
     let Some((first, last)) = pencil(k, qv, a) else {
-        return true;
+        return Exit::AInside;
+    };
+    let misses = Exit::Misses {
+        ql: (last + 1) % m,
+        qr: first,
     };
     // G: the visible chain of Q from q_L = q[last + 1] back to q_R = q[first].
     let g_edges = (last + m - first) % m + 1;
@@ -377,7 +465,7 @@ fn intersects<K: Kernel, P: Probe>(k: K, pv: &[Point], qv: &[Point], probe: &mut
     } else if fr.in_arc(p1, ql, qr) {
         (p1, 1)
     } else {
-        return false; // the pencil does not enter P: P ∩ W(A) = {A} and A ∉ Q
+        return misses; // the pencil does not enter P: P ∩ W(A) = {A} and A ∉ Q
     };
     let (mut dhi, k1) = if fr.in_arc(qr, p1, pl) {
         // Smallest k with p_k at or counter-clockwise of q_R.
@@ -394,7 +482,7 @@ fn intersects<K: Kernel, P: Probe>(k: K, pv: &[Point], qv: &[Point], probe: &mut
     } else if fr.in_arc(pl, ql, qr) {
         (pl, n - 1)
     } else {
-        return false; // unreachable under an exact kernel: the arcs overlap
+        return misses; // unreachable under an exact kernel: the arcs overlap
     };
     let k1 = k1.max(k0 + 1);
     let mut f = Chain {
@@ -455,6 +543,7 @@ fn intersects<K: Kernel, P: Probe>(k: K, pv: &[Point], qv: &[Point], probe: &mut
             let j = g.middle();
             let (w1, w2) = (g.at(j), g.at(j + 1));
             let e = edge_right_of(&fr, &f, w2);
+            let e = (f.at(e), f.at(e + 1));
             if fr.slope_cmp(e, (w1, w2)) != Sign::Positive {
                 g.hi = j + 1;
                 shrink_hi(&fr, &mut dhi, w2);
@@ -467,6 +556,7 @@ fn intersects<K: Kernel, P: Probe>(k: K, pv: &[Point], qv: &[Point], probe: &mut
             let i = f.middle();
             let (v1, v2) = (f.at(i), f.at(i + 1));
             let e = edge_right_of(&fr, &g, v2);
+            let e = (g.at(e), g.at(e + 1));
             if fr.slope_cmp(e, (v1, v2)) != Sign::Negative {
                 f.hi = i + 1;
                 shrink_hi(&fr, &mut dhi, v2);
@@ -476,7 +566,8 @@ fn intersects<K: Kernel, P: Probe>(k: K, pv: &[Point], qv: &[Point], probe: &mut
             }
         }
     }
-    finish(&fr, &f, &g, dlo, dhi)
+    let hit = finish(&fr, &f, &g, dlo, dhi);
+    Exit::Finish { f, g, hit }
 }
 
 #[inline]
@@ -493,42 +584,43 @@ fn grow_lo<K: Kernel>(fr: &Frame<K>, lo: &mut Point, v: Point) {
     }
 }
 
-/// The edge of a chain of at most two edges that holds the part just right of `x`.
+/// The position of the edge of a chain of at most two edges that holds the part just
+/// right of `x`.
 #[inline]
-fn edge_right_of<K: Kernel>(fr: &Frame<K>, c: &Chain<'_>, x: Point) -> (Point, Point) {
+fn edge_right_of<K: Kernel>(fr: &Frame<K>, c: &Chain<'_>, x: Point) -> usize {
     if c.edges() >= 2 && !fr.before(x, c.at(c.lo + 1)) {
-        (c.at(c.lo + 1), c.at(c.lo + 2))
+        c.lo + 1
     } else {
-        (c.at(c.lo), c.at(c.lo + 1))
+        c.lo
     }
 }
 
 /// Case 5: both chains have at most two edges. h = f − g is concave and piecewise
 /// linear with breakpoints at chain vertices, and the window's ends are chain
 /// vertices, so h ≥ 0 somewhere iff it is at a chain vertex inside the window.
-fn finish<K: Kernel>(fr: &Frame<K>, f: &Chain<'_>, g: &Chain<'_>, dlo: Point, dhi: Point) -> bool {
+fn finish<K: Kernel>(fr: &Frame<K>, f: &Chain<'_>, g: &Chain<'_>, dlo: Point, dhi: Point) -> Option<Hit> {
     let k = fr.k;
     for i in f.lo..=f.hi {
         let z = f.at(i);
         if fr.in_arc(z, dlo, dhi) {
-            let (w1, w2) = edge_right_of(fr, g, z);
+            let e = edge_right_of(fr, g, z);
             // z on or above g (not strictly on A's side of the edge's line).
-            if k.orient(w1, w2, z) != Ccw {
-                return true;
+            if k.orient(g.at(e), g.at(e + 1), z) != Ccw {
+                return Some(Hit::F { z: i, e });
             }
         }
     }
     for j in g.lo..=g.hi {
         let w = g.at(j);
         if fr.in_arc(w, dlo, dhi) {
-            let (v1, v2) = edge_right_of(fr, f, w);
+            let e = edge_right_of(fr, f, w);
             // w on or below f (on A's side of the edge's line, or on it).
-            if k.orient(v1, v2, w) != Cw {
-                return true;
+            if k.orient(f.at(e), f.at(e + 1), w) != Cw {
+                return Some(Hit::G { w: j });
             }
         }
     }
-    false
+    None
 }
 
 #[cfg(test)]
