@@ -126,9 +126,15 @@ impl ArrayIntersection for Barba {
     ) -> Derivation {
         let (pv, qv) = (p.vertices(), q.vertices());
         match run::<K, P, Record>(k, pv, qv, probe) {
-            Exit::Apart { pr, q, line } => {
-                lift(k, pv, qv, pr, q, line).map_or(Derivation::Answer(false), Derivation::Certified)
-            }
+            Exit::Apart { pr, q, line } => lift(k, pv, qv, pr, q, line)
+                .or_else(|| {
+                    // The run with the roles exchanged ends on other pieces.
+                    match run::<K, (), Record>(k, qv, pv, &mut ()) {
+                        Exit::Apart { pr, q, line } => lift(k, qv, pv, pr, q, line).map(Certificate::swapped),
+                        _ => None,
+                    }
+                })
+                .map_or(Derivation::Answer(false), Derivation::Certified),
             Exit::Stuck(answer) => Derivation::Answer(answer),
             meet => meet_certificate(k, pv, qv, meet).map_or(Derivation::Answer(true), Derivation::Certified),
         }

@@ -133,17 +133,28 @@ impl ArrayIntersection for ChazelleDobkin {
             Exit::Misses { ql, qr } => [ql, qr]
                 .into_iter()
                 .find_map(|t| from_support(k, (pv[0], qv[t]), pv, 0, qv, t)),
-            Exit::Finish { f, g, hit: Some(hit) } => match hit {
+            Exit::Finish {
+                f, g, hit: Some(hit), ..
+            } => match hit {
                 Hit::F { z, e } => resolve_chords(k, pv, (0, f.index(z)), qv, (g.index(e), g.index(e + 1))),
                 Hit::G { w } => Some(Certificate::VertexInside {
                     of: Which::Q,
                     point: qv[g.index(w)],
                 }),
             },
-            Exit::Finish { f, g, hit: None } => {
+            Exit::Finish {
+                f,
+                g,
+                hit: None,
+                tangents,
+            } => {
                 let face_f = [f.index(f.lo), f.index(f.lo + 1), f.index(f.hi), 0];
                 let face_g = [g.index(g.lo), g.index(g.lo + 1), g.index(g.hi)];
-                from_faces(k, pv, &face_f, qv, &face_g)
+                from_faces(k, pv, &face_f, qv, &face_g).or_else(|| {
+                    tangents
+                        .into_iter()
+                        .find_map(|t| from_support(k, (pv[0], qv[t]), pv, 0, qv, t))
+                })
             }
         };
         found.map_or(Derivation::Answer(exit.meets()), Derivation::Certified)
@@ -221,6 +232,8 @@ enum Exit<'a> {
         f: Chain<'a>,
         g: Chain<'a>,
         hit: Option<Hit>,
+        /// The tangent points, as for [`Exit::Misses`].
+        tangents: [usize; 2],
     },
 }
 
@@ -567,7 +580,8 @@ fn run<'a, K: Kernel, P: Probe>(k: K, pv: &'a [Point], qv: &'a [Point], probe: &
         }
     }
     let hit = finish(&fr, &f, &g, dlo, dhi);
-    Exit::Finish { f, g, hit }
+    let tangents = [(last + 1) % m, first];
+    Exit::Finish { f, g, hit, tangents }
 }
 
 #[inline]

@@ -64,7 +64,7 @@
 //! searches may misjudge near-degenerate input but always terminate: every loop
 //! shrinks an index range.
 
-use super::certificate::{Boundary, from_faces};
+use super::certificate::{Boundary, from_faces, separates};
 use super::{ArrayIntersection, Certificate, Derivation, Probe, Which};
 use crate::kernel::{Kernel, Orientation, Point};
 use crate::polygon::ConvexPolygon;
@@ -110,7 +110,7 @@ impl ArrayIntersection for Dobkin {
         run(k, pv, qv, probe, |outcome, searches| {
             let found = match outcome {
                 Outcome::Apart(s) => separation(k, searches, s),
-                Outcome::Meet => (0..2).find_map(|s| match searches[s].verdict(k) {
+                Outcome::Meet => (0..2).find_map(|s| match searches[s].verdict() {
                     Some(Verdict::Meet(t)) => vertex_inside(k, searches, s, t),
                     _ => None,
                 }),
@@ -219,7 +219,7 @@ pub(crate) fn separating_certificate<K: Kernel>(k: K, pv: &[Point], qv: &[Point]
 
 /// The separating edge of search `s`, which found its regions disjoint.
 fn separation<K: Kernel>(k: K, searches: &[PairSearch<'_>; 2], s: usize) -> Option<Certificate> {
-    match searches[s].verdict(k) {
+    match searches[s].verdict() {
         Some(Verdict::Apart(why)) => searches[s].separation(k, why).map(|c| c.relative_to(SEARCH_A[s])),
         _ => None,
     }
@@ -390,17 +390,18 @@ struct PairSearch<'a> {
     decided: Decided,
 }
 
-/// Which test decided a chain-pair search.
+/// Which test decided a chain-pair search: each test's answer and the position it
+/// found in the other chain.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Decided {
     Not,
     /// The y-ranges are disjoint.
     Heights,
     /// The test at `lo`, or at `hi`.
-    Lo,
-    Hi,
-    /// g linear on I: the tests at both ends.
-    Both,
+    Lo(bool, usize),
+    Hi(bool, usize),
+    /// g linear on I: the test at `lo`, then (if it failed) the one at `hi`.
+    Both((bool, usize), Option<(bool, usize)>),
 }
 
 impl<'a> PairSearch<'a> {
@@ -457,18 +458,20 @@ impl<'a> PairSearch<'a> {
     /// Decides the search by one height test, where the maximum of g is.
     #[inline]
     fn at_height<K: Kernel>(&mut self, k: K, lo: bool) -> bool {
-        self.decided = if lo { Decided::Lo } else { Decided::Hi };
-        self.test(k, if lo { self.lo } else { self.hi }).0
+        let (inside, other) = self.test(k, if lo { self.lo } else { self.hi });
+        self.decided = if lo {
+            Decided::Lo(inside, other)
+        } else {
+            Decided::Hi(inside, other)
+        };
+        inside
     }
 
-    /// Why the search was decided: its deciding test(s) again, from its final state
-    /// (which deciding leaves unchanged). For certificates only.
-    fn verdict<K: Kernel>(&self, k: K) -> Option<Verdict> {
-        let tested = |w: Bound| {
-            let (inside, other) = self.test(k, w);
-            (inside, Tested { w, other })
-        };
-        let at = |(inside, t): (bool, Tested)| {
+    /// Why the search was decided (its final state, which deciding leaves unchanged,
+    /// and the deciding tests). For certificates only.
+    fn verdict(&self) -> Option<Verdict> {
+        let at = |w: Bound, (inside, other): (bool, usize)| {
+            let t = Tested { w, other };
             if inside {
                 Verdict::Meet(t)
             } else {
@@ -481,13 +484,25 @@ impl<'a> PairSearch<'a> {
                 lo: self.lo,
                 hi: self.hi,
             }),
-            Decided::Lo => at(tested(self.lo)),
-            Decided::Hi => at(tested(self.hi)),
-            Decided::Both => match (tested(self.lo), tested(self.hi)) {
-                ((true, t), _) | (_, (true, t)) => Verdict::Meet(t),
-                ((false, a), (false, b)) => Verdict::Apart(Apart::At(a, Some(b))),
+            Decided::Lo(inside, other) => at(self.lo, (inside, other)),
+            Decided::Hi(inside, other) => at(self.hi, (inside, other)),
+            Decided::Both(lo, None) => at(self.lo, lo),
+            Decided::Both(lo, Some(hi)) => match (at(self.lo, lo), at(self.hi, hi)) {
+                (Verdict::Apart(Apart::At(a, _)), Verdict::Apart(Apart::At(b, _))) => {
+                    Verdict::Apart(Apart::At(a, Some(b)))
+                }
+                (_, hi) => hi,
             },
         })
+    }
+
+    /// Decides the search by the tests at both ends of I (g is linear there).
+    #[inline]
+    fn at_both_ends<K: Kernel>(&mut self, k: K) -> bool {
+        let lo = self.test(k, self.lo);
+        let hi = if lo.0 { None } else { Some(self.test(k, self.hi)) };
+        self.decided = Decided::Both(lo, hi);
+        lo.0 || hi.is_some_and(|h| h.0)
     }
 
     /// One pruning iteration; `Some(answer)` once the search is decided (then
@@ -506,8 +521,7 @@ impl<'a> PairSearch<'a> {
         // Both chains linear on I (or, with an inconsistent kernel, a chain that no
         // longer covers I): g is linear, test both ends.
         if (le <= 1 && re <= 1) || le == 0 || re == 0 {
-            self.decided = Decided::Both;
-            return Some(self.test(k, self.lo).0 || self.test(k, self.hi).0);
+            return Some(self.at_both_ends(k));
         }
         probe.iteration();
         let ke = self.i0 + le / 2; // e = (lp(ke), lp(ke + 1)), top to bottom
@@ -559,21 +573,10 @@ impl<'a> PairSearch<'a> {
     /// The position of vertex `p` in its chain (chains are strictly monotone in y):
     /// a binary search on heights, for certificates only.
     fn position(&self, b: Bound) -> usize {
-        // Left chains descend, right chains ascend: the first position not before p.
-        let (len, before): (usize, &dyn Fn(usize) -> bool) = match b.side {
-            Side::Left => (self.l.len, &|i| self.lp(i).y > b.p.y),
-            Side::Right => (self.r.len, &|j| self.rp(j).y < b.p.y),
-        };
-        let (mut lo, mut hi) = (0, len - 1);
-        while lo < hi {
-            let mid = lo + (hi - lo) / 2;
-            if before(mid) {
-                lo = mid + 1;
-            } else {
-                hi = mid;
-            }
+        match b.side {
+            Side::Left => first(self.l.len, |i| self.lp(i).y > b.p.y),
+            Side::Right => first(self.r.len, |j| self.rp(j).y < b.p.y),
         }
-        lo
     }
 
     /// The array index of a chain position.
@@ -634,6 +637,20 @@ impl<'a> PairSearch<'a> {
         let (wv, ev) = if t.w.side == Side::Left { (a, b) } else { (b, a) };
         let wide_w = [w, wv.prev(w), wv.next(w)];
         let wide_e = [ev.prev(edge[0]), edge[0], edge[len - 1], ev.next(edge[len - 1])];
+        // Where g is maximal inside I the other chain's edge there is the separating
+        // edge (the slopes bracket it): try it first.
+        if len == 2 && separates(k, ev[edge[0]], ev[edge[1]], wv, w) {
+            let of = if t.w.side == Side::Left {
+                Which::Q
+            } else {
+                Which::P
+            };
+            return Some(Certificate::Separated {
+                of,
+                from: ev[edge[0]],
+                to: ev[edge[1]],
+            });
+        }
         let found = |fw: &[usize], fe: &[usize]| {
             if t.w.side == Side::Left {
                 from_faces(k, a, fw, b, fe)
@@ -643,6 +660,21 @@ impl<'a> PairSearch<'a> {
         };
         found(&[w], &edge[..len]).or_else(|| found(&wide_w, &wide_e))
     }
+}
+
+/// The first position in `0..len` (the last if none) where `before` turns false;
+/// `before` must be true on a prefix and false after it.
+fn first(len: usize, before: impl Fn(usize) -> bool) -> usize {
+    let (mut lo, mut hi) = (0, len - 1);
+    while lo < hi {
+        let mid = lo + (hi - lo) / 2;
+        if before(mid) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    lo
 }
 
 /// Whether `w` lies on or left of the ascending right chain (positions `j0..=j1`) at
