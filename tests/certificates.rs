@@ -12,7 +12,7 @@
 //!   checks that `verify` rejects each one, unless an independent brute-force check
 //!   says the mutation happens to be another valid certificate.
 //!
-//! `POLYSECT_CERT_PAIRS` scales the number of random pairs per family (default 60).
+//! `POLYSECT_CERT_PAIRS` scales the number of random pairs per family (default 150).
 
 use polysect::generate::{self, Family, Relation, map_pair};
 use polysect::intersect::{
@@ -36,7 +36,7 @@ fn pairs_per_family() -> usize {
     std::env::var("POLYSECT_CERT_PAIRS")
         .ok()
         .and_then(|s| s.parse().ok())
-        .unwrap_or(60)
+        .unwrap_or(150)
 }
 
 /// Counts completions of answers an algorithm did not certify itself.

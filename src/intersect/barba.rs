@@ -62,6 +62,25 @@
 //! vertices or two of T_Q's edges, so six of the nine orientations of T_P's
 //! vertices against T_Q's lines carry over to the next iteration (a 3×3 cache).
 //!
+//! # Certificate
+//! [`ArrayIntersection::certified_probed`](super::ArrayIntersection::certified_probed)
+//! runs the same loop, recording how it ended:
+//! * a vertex of T_P in K (step 1) or of K in T_P (step 3): that vertex, inside;
+//! * an edge of T_P (a chord of P) meeting an edge of Q (step 4), or T_P meeting the
+//!   small Q' of the finish without a vertex of either inside the other: the chord is
+//!   reduced to an edge of P by one binary search within P' (the chain beyond it
+//!   crosses the line of Q's edge exactly once), giving two crossing edges or an end of
+//!   Q's edge inside P. O(log n) more; the plain run never localises P's boundary
+//!   there, so this is the certified call's extra work on intersecting pairs.
+//! * disjoint pieces: the last separating line is an edge of Q with P' strictly
+//!   outside (or an edge of P with Q' outside). If P's vertex deepest towards it is
+//!   extreme in all of P (two predicates), or P's extreme vertex found by a binary
+//!   search lies strictly outside, that edge separates P and Q. Otherwise the pieces'
+//!   separator is not one for the polygons (Q-pruning keeps only a pocket of Q), and a
+//!   second run with the roles exchanged usually ends on one that is; failing that,
+//!   only the answer is returned and the certified call completes it
+//!   ([`Fallback`](super::Fallback)).
+//!
 //! # Complexity
 //! O(log n + log m) time, O(1) memory, for polygons of n and m vertices, on every
 //! input: every iteration halves P' or Q' (or ends the test) and costs O(1)

@@ -60,6 +60,20 @@
 //! finishes with all pairs of edges, which is not logarithmic when the other chain
 //! is long; case 4 keeps pruning the long chain. See docs/algorithms.md.
 //!
+//! # Certificate
+//! * A ∈ Q: A is a vertex inside.
+//! * The finish found a vertex w of G on A's side of F inside the window: w is a vertex
+//!   of Q inside P (the ray from A to w stays in P up to F).
+//! * The finish found a vertex z of F on or beyond G: the segment from A to z (a chord of
+//!   P) meets G's edge there, resolved into a vertex inside or two crossing edges by at
+//!   most two binary searches.
+//! * The pencil misses P: a pencil line through A supports both polygons, and an edge
+//!   at A or at the tangent point separates (O(1)).
+//! * The finish found h < 0 on the window: edges at the final chains' vertices are
+//!   tried (O(1)); but the maximum of h in the projective frame need not be where the
+//!   polygons are closest, and then only the answer is returned (completed by
+//!   [`Dobkin`](super::Dobkin)'s separation).
+//!
 //! # Complexity
 //! O(log n + log m) time, O(1) memory, on every input: three binary searches on Q,
 //! two on P, at most about 2·(log₂ n + log₂ m) pruning iterations (each reported to

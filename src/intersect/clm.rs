@@ -32,6 +32,25 @@
 //! r = Θ(√n). The constant c = [`Clm::SAMPLE_FACTOR`] was chosen by measurement
 //! (docs/sublinear.md, `benches/clm.rs`).
 //!
+//! # Certificate
+//! The certified call records which LP decided and every separating line it found
+//! (nothing in the plain call: the recording is chosen at compile time).
+//! * **Disjoint.** Each LP line touches an input point of each set; if both are
+//!   extreme in their whole polygons (each neighbour checked, four predicates), the
+//!   line supports both polygons and an edge at its tangent vertices separates. The
+//!   lines are tried from the last; the chain LPs' lines almost always qualify.
+//! * **Intersecting.** The LP reports a witness of intersecting hulls (at most nine
+//!   points: the violating point, the one or two points that bounded its 1D problem,
+//!   the previous optimum's tangent points, and a₀, b₀ and the bounding pair, which
+//!   restrict separators to the LP's half-circle of directions). A point of one set in
+//!   the hull of the other's is a vertex inside. Else the points the LP examined (a few
+//!   dozen) are searched the same way. Else two of the points form crossing chords,
+//!   resolved by walks along the boundaries started from the sample or chain vertex
+//!   nearest the chord's line, so each walk stays within one gap between those
+//!   vertices: expected O(n/r + r), i.e. O(√n) like the test itself, but far more than
+//!   an intersecting query that stopped after a few dozen points.
+//! * Otherwise (an inconsistent kernel) only the answer, completed on the walked arrays.
+//!
 //! # Complexity
 //! Expected O((c + 1/c)·(√n + √m)) for polygons of n and m vertices, over the random
 //! samples and the LP's random orders, for **every** input (no assumption on the

@@ -44,6 +44,23 @@
 //!    edge at that height (found by binary search) or one comparison of x
 //!    coordinates when both chains have a vertex there.
 //!
+//! # Certificate
+//! * **Disjoint.** The search that failed found g = x_R − x_L negative at its maximum
+//!   y*, at a tested vertex w with the other chain's edge at that height. A supporting
+//!   slope σ common to both chains at y* (a supergradient of the concave g is 0) gives
+//!   parallel supporting lines of the two polygons with a gap, so one of the edges at w
+//!   and at the other chain's vertices there separates (the faces' argument in
+//!   [`certificate`](super::certificate)); at an end of the common y-interval the
+//!   argument is the same with a one-sided σ, and if the y-ranges are disjoint the
+//!   faces are the higher polygon's bottom and the lower one's top. The edge of the
+//!   other chain at y* is tried first. O(1) beyond the test, plus one binary search on
+//!   heights for w's position. Under the exact kernel this always succeeds (the tests
+//!   check it), which makes it the completing search of every algorithm's "disjoint".
+//! * **Intersecting.** Both searches met at a vertex w inside the other polygon's
+//!   region on one side; if w also lies inside the other side's chain at its height
+//!   (one binary search on heights and one `orient`), w is a vertex inside. Otherwise
+//!   only the answer, completed with [`Barba`](super::Barba)'s witness.
+//!
 //! # Complexity
 //! O(log n + log m) time, O(1) memory, for polygons of n and m vertices, on every
 //! input: four binary searches for the extreme vertices, two chain-pair searches

@@ -22,6 +22,15 @@
 //! [`Algorithm::run`] they take array polygons, which are linked in a shuffled arena
 //! order (as the thesis's experiments do) with an RNG seeded by [`LINKED_RUN_SEED`].
 
+//! # Certificates
+//! Every test also has a certified call ([`ArrayIntersection::certified_with`],
+//! [`LinkedIntersection::certified_with`], [`Algorithm::certified`]) that returns a
+//! [`Certificate`] of its answer, derived from what the algorithm found
+//! ([`ArrayIntersection::derive_probed`], each algorithm's module docs) and completed
+//! by a slower search where that gives only the answer ([`Fallback`]). [`verify`]
+//! checks any certificate exactly in O(n + m), independently of every algorithm:
+//! run it when in doubt. docs/certificates.md has the details and the measured cost.
+
 mod barba;
 mod certificate;
 mod chazelle_dobkin;
