@@ -2,7 +2,7 @@
 //! module docs of [`store`](super); `Scene` applies it.
 
 use crate::generate::{self, Family, Relation};
-use crate::intersect::Algorithm;
+use crate::intersect::{Algorithm, Certificate};
 use crate::kernel::Kernel;
 use crate::polygon::{ConvexPolygon, LinkedPolygon};
 use rand::SeedableRng;
@@ -161,4 +161,9 @@ pub struct PlannerStats {
 /// Runs the fastest array algorithm with the scene's kernel.
 pub(crate) fn array_test<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> bool {
     Algorithm::fastest_array().intersects_with(kernel, p, q)
+}
+
+/// [`array_test`]'s certified call.
+pub(crate) fn array_certified<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Certificate {
+    Algorithm::fastest_array().certified_with(kernel, p, q)
 }

@@ -1,8 +1,8 @@
 //! [`Scene`]: the store of editable polygons and its query planner.
 
 use super::broad::{BoundingBox, BroadPhase};
-use super::planner::{CostModel, PlannerStats, Strategy, array_test};
-use crate::intersect::{Clm, ClmWorkspace, LinkedIntersection};
+use super::planner::{CostModel, PlannerStats, Strategy, array_certified, array_test};
+use crate::intersect::{Certificate, Clm, ClmWorkspace, LinkedIntersection, Which};
 use crate::kernel::{Exact, Kernel, Point};
 use crate::polygon::{ConvexPolygon, EditError, LinkedPolygon, PolygonError, VertexId};
 use rand::SeedableRng;
@@ -112,6 +112,17 @@ pub(crate) fn sampled_test<K: Kernel>(
     Clm.intersects_with_workspace(kernel, p, q, rng, &mut ws.clm)
 }
 
+/// [`sampled_test`]'s certified call.
+pub(crate) fn sampled_certified<K: Kernel>(
+    kernel: K,
+    p: &LinkedPolygon,
+    q: &LinkedPolygon,
+    ws: &mut QueryWorkspace,
+    rng: &mut SmallRng,
+) -> Certificate {
+    Clm.certified_with_workspace(kernel, p, q, rng, &mut ws.clm)
+}
+
 /// How one planned query will be answered.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Route {
@@ -120,6 +131,9 @@ enum Route {
     Sampled(usize, usize),
     Throwaway(usize, usize),
 }
+
+/// A planned query: its route and the keys of its P and Q.
+type Planned = (Route, (usize, usize));
 
 /// A scene of editable convex polygons with planned intersection queries; see the
 /// [module docs](super) for the planner's rule.
@@ -176,12 +190,14 @@ impl<K: Kernel> Scene<K> {
             costs: CostModel::default(),
             stats: PlannerStats::default(),
             workspace: QueryWorkspace::default(),
-            rng: SmallRng::seed_from_u64(0x5ce9e),
+            rng: crate::intersect::fresh_rng(),
         }
     }
 
-    /// Reseeds the RNG of the sampled test (answers do not depend on it under the exact
-    /// kernel; running times and the fast kernel's rare wrong answers do).
+    /// Reseeds the RNG of the sampled test, which is otherwise seeded from the operating
+    /// system (docs/design.md, "Randomness"): the same seed and the same operations give
+    /// the same draws. Answers do not depend on it under the exact kernel; running times
+    /// and the fast kernel's rare wrong answers do.
     pub fn seed(&mut self, seed: u64) {
         self.rng = SmallRng::seed_from_u64(seed);
     }
@@ -355,6 +371,51 @@ impl<K: Kernel> Scene<K> {
         Ok(old)
     }
 
+    /// Translates the polygon by `(dx, dy)`: every vertex becomes `(x + dx, y + dy)`, each
+    /// coordinate rounded to nearest (IEEE addition). O(n) to translate and validate, then
+    /// O(1) for the bounding box (shifted; rounding is monotone, so the shifted box still
+    /// contains, or equals, the translated polygon's box) and no reconversion: a valid
+    /// array snapshot is translated in place with the same roundings and stays valid.
+    /// Vertex handles stay valid. See docs/store.md for what is exact here.
+    ///
+    /// # Errors
+    /// `StalePolygon`; [`EditError::NonFinite`] when `dx` or `dy` is not finite or a
+    /// coordinate would overflow; [`EditError::RoundingBreaksConvexity`] when rounding
+    /// would leave the polygon not strictly convex. Nothing changes on error.
+    ///
+    /// ```
+    /// use polysect::store::Scene;
+    /// let mut scene = Scene::new();
+    /// let a = scene.insert_points([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+    /// let b = scene.insert_points([[3.0, 0.0], [4.0, 0.0], [4.0, 1.0]])?;
+    /// assert!(!scene.intersects(a, b)?);
+    /// scene.translate(b, -1.0, 0.5)?; // b's corner (2, 0.5) now lies on a's edge
+    /// assert!(scene.intersects(a, b)?);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn translate(&mut self, id: PolygonId, dx: f64, dy: f64) -> Result<(), SceneError> {
+        let key = self.key(id)?;
+        let e = &mut self.entries[key];
+        e.polygon.translate(dx, dy)?;
+        e.version += 1;
+        if let Some(s) = &mut e.snapshot {
+            s.translate_unchecked(dx, dy);
+        }
+        let shifted = BoundingBox {
+            min: Point::new(e.bbox.min.x + dx, e.bbox.min.y + dy),
+            max: Point::new(e.bbox.max.x + dx, e.bbox.max.y + dy),
+        };
+        if shifted.min.is_finite() && shifted.max.is_finite() {
+            e.bbox = shifted;
+        } else {
+            // A loose box reaching past the polygon overflowed: take the true box.
+            e.bbox = BoundingBox::of(e.polygon.iter().map(|(_, p)| p)).expect("a polygon has vertices");
+            e.bbox_tight = true;
+        }
+        self.broad.mark(key);
+        Ok(())
+    }
+
     fn grow_box(&mut self, key: usize, p: Point) {
         let e = &mut self.entries[key];
         let before = e.bbox;
@@ -475,8 +536,52 @@ impl<K: Kernel> Scene<K> {
         }
     }
 
-    /// Whether polygons `a` and `b` intersect (closed sets: touching counts).
-    pub fn intersects(&mut self, a: PolygonId, b: PolygonId) -> Result<bool, SceneError> {
+    /// The certificate of a planned query between keys `a` and `b` (the query's P and
+    /// Q): the certified call of the route's test, with the scene's kernel. A pair
+    /// rejected by its bounding boxes is known to be disjoint exactly, so its separating
+    /// edge is searched with the exact kernel (the array test when both snapshots are
+    /// valid, else the sampled test); a polygon against itself is proved by its first
+    /// vertex.
+    fn answer_certified(
+        &self,
+        route: Route,
+        (a, b): (usize, usize),
+        ws: &mut QueryWorkspace,
+        rng: &mut SmallRng,
+    ) -> Certificate {
+        let e = |k: usize| &self.entries[k];
+        match route {
+            Route::Known(true) => {
+                let first = e(a).polygon.first();
+                let point = e(a)
+                    .polygon
+                    .point(first)
+                    .expect("a live polygon has its first vertex");
+                Certificate::VertexInside { of: Which::P, point }
+            }
+            Route::Known(false) => match (&e(a).snapshot, &e(b).snapshot) {
+                (Some(p), Some(q)) => array_certified(Exact, p, q),
+                _ => sampled_certified(Exact, &e(a).polygon, &e(b).polygon, ws, rng),
+            },
+            Route::Arrays(a, b) => array_certified(
+                self.kernel,
+                e(a).snapshot.as_ref().expect("planned snapshot"),
+                e(b).snapshot.as_ref().expect("planned snapshot"),
+            ),
+            Route::Sampled(a, b) => sampled_certified(self.kernel, &e(a).polygon, &e(b).polygon, ws, rng),
+            Route::Throwaway(a, b) => {
+                array_certified(self.kernel, &e(a).polygon.to_convex(), &e(b).polygon.to_convex())
+            }
+        }
+    }
+
+    /// Plans one query, builds the conversions it chose and answers it with `answer`.
+    fn query<T>(
+        &mut self,
+        a: PolygonId,
+        b: PolygonId,
+        answer: impl FnOnce(&Self, Route, (usize, usize), &mut QueryWorkspace, &mut SmallRng) -> T,
+    ) -> Result<T, SceneError> {
         let (ka, kb) = (self.key(a)?, self.key(b)?);
         let mut pending = Vec::new();
         let route = self.plan(ka, kb, &mut pending);
@@ -485,35 +590,93 @@ impl<K: Kernel> Scene<K> {
         }
         let mut ws = std::mem::take(&mut self.workspace);
         let mut rng = std::mem::replace(&mut self.rng, SmallRng::seed_from_u64(0));
-        let answer = self.answer(route, &mut ws, &mut rng);
+        let answer = answer(self, route, (ka, kb), &mut ws, &mut rng);
         (self.workspace, self.rng) = (ws, rng);
         Ok(answer)
+    }
+
+    /// Whether polygons `a` and `b` intersect (closed sets: touching counts).
+    pub fn intersects(&mut self, a: PolygonId, b: PolygonId) -> Result<bool, SceneError> {
+        self.query(a, b, |s, route, _, ws, rng| s.answer(route, ws, rng))
+    }
+
+    /// [`intersects`](Self::intersects) with a [`Certificate`] of the answer (`a` is the
+    /// certificate's P, `b` its Q; the answer is
+    /// [`Certificate::intersects`]), planned exactly as `intersects` plans: the same
+    /// strategy, conversions and counters, and the certified call of the test the plan
+    /// chose. The certificate names vertices of the polygons as they are now;
+    /// [`verify_linked`](crate::intersect::verify_linked) checks it exactly.
+    ///
+    /// # Errors
+    /// [`SceneError::StalePolygon`] if either handle is stale.
+    ///
+    /// # Precision
+    /// Under the exact kernel the certificate always verifies; under the fast kernel it
+    /// may not, exactly when the fast answer may be wrong (docs/certificates.md).
+    ///
+    /// ```
+    /// use polysect::store::Scene;
+    /// use polysect::intersect::verify_linked;
+    /// let mut scene = Scene::new();
+    /// let a = scene.insert_points([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+    /// let b = scene.insert_points([[2.0, 1.0], [4.0, 0.0], [4.0, 3.0]])?;
+    /// let c = scene.intersects_certified(a, b)?;
+    /// assert!(c.intersects()); // (2, 1) lies on a's edge
+    /// assert_eq!(verify_linked(scene.polygon(a)?, scene.polygon(b)?, &c), Ok(()));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn intersects_certified(&mut self, a: PolygonId, b: PolygonId) -> Result<Certificate, SceneError> {
+        self.query(a, b, |s, route, keys, ws, rng| {
+            s.answer_certified(route, keys, ws, rng)
+        })
+    }
+
+    /// Plans `pairs` in order, builds the chosen conversions in parallel, then answers
+    /// the pairs in parallel with `answer`, each with its own seeded RNG.
+    fn batch<T: Send>(
+        &mut self,
+        pairs: &[(PolygonId, PolygonId)],
+        answer: impl Fn(&Self, Route, (usize, usize), &mut QueryWorkspace, &mut SmallRng) -> T + Sync,
+    ) -> Vec<Result<T, SceneError>> {
+        let mut pending = Vec::new();
+        let routes: Vec<Result<Planned, SceneError>> = pairs
+            .iter()
+            .map(|&(a, b)| {
+                let (ka, kb) = (self.key(a)?, self.key(b)?);
+                Ok((self.plan(ka, kb, &mut pending), (ka, kb)))
+            })
+            .collect();
+        self.convert_all(pending);
+        let base: u64 = rand::Rng::random(&mut self.rng);
+        let this = &*self;
+        routes
+            .par_iter()
+            .enumerate()
+            .map_init(QueryWorkspace::default, |ws, (i, route)| {
+                let (route, keys) = route.clone()?;
+                let mut rng = SmallRng::seed_from_u64(base ^ (i as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15));
+                Ok(answer(this, route, keys, ws, &mut rng))
+            })
+            .collect()
     }
 
     /// Answers many queries: planned in order, conversions built in parallel, then the
     /// pairs answered in parallel. Results are in input order and do not depend on the
     /// number of threads.
     pub fn intersects_batch(&mut self, pairs: &[(PolygonId, PolygonId)]) -> Vec<Result<bool, SceneError>> {
-        let mut pending = Vec::new();
-        let routes: Vec<Result<Route, SceneError>> = pairs
-            .iter()
-            .map(|&(a, b)| {
-                let (ka, kb) = (self.key(a)?, self.key(b)?);
-                Ok(self.plan(ka, kb, &mut pending))
-            })
-            .collect();
-        self.convert_all(pending);
-        let this = &*self;
-        routes
-            .par_iter()
-            .enumerate()
-            .map_init(QueryWorkspace::default, |ws, (i, route)| {
-                let route = route.clone()?;
-                let mut rng =
-                    SmallRng::seed_from_u64(0x9a1e_u64 ^ (i as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15));
-                Ok(this.answer(route, ws, &mut rng))
-            })
-            .collect()
+        self.batch(pairs, |s, route, _, ws, rng| s.answer(route, ws, rng))
+    }
+
+    /// [`intersects_batch`](Self::intersects_batch) with certificates, as
+    /// [`intersects_certified`](Self::intersects_certified) gives them (in each pair, the
+    /// first polygon is the certificate's P).
+    pub fn intersects_batch_certified(
+        &mut self,
+        pairs: &[(PolygonId, PolygonId)],
+    ) -> Vec<Result<Certificate, SceneError>> {
+        self.batch(pairs, |s, route, keys, ws, rng| {
+            s.answer_certified(route, keys, ws, rng)
+        })
     }
 
     fn convert_all(&mut self, mut keys: Vec<usize>) {
@@ -555,19 +718,26 @@ impl<K: Kernel> Scene<K> {
 
     /// All intersecting pairs `(a, b)` with `a` before `b` in slot order, sorted.
     pub fn intersecting_pairs(&mut self) -> Vec<(PolygonId, PolygonId)> {
-        self.flush_broad_phase();
-        let candidates: Vec<(PolygonId, PolygonId)> = self
-            .broad
-            .overlapping_pairs()
-            .into_iter()
-            .map(|(a, b)| (self.id_of(a), self.id_of(b)))
-            .collect();
+        let candidates = self.candidate_pairs();
         let answers = self.intersects_batch(&candidates);
         candidates
             .into_iter()
             .zip(answers)
             .filter(|(_, hit)| matches!(hit, Ok(true)))
             .map(|(pair, _)| pair)
+            .collect()
+    }
+
+    /// [`intersecting_pairs`](Self::intersecting_pairs), each with the certificate of
+    /// its intersection (`a` is the certificate's P). Pairs the broad phase rejects get
+    /// none: they are not in the answer.
+    pub fn intersecting_pairs_certified(&mut self) -> Vec<(PolygonId, PolygonId, Certificate)> {
+        let candidates = self.candidate_pairs();
+        let answers = self.intersects_batch_certified(&candidates);
+        candidates
+            .into_iter()
+            .zip(answers)
+            .filter_map(|((a, b), c)| c.ok().filter(Certificate::intersects).map(|c| (a, b, c)))
             .collect()
     }
 
