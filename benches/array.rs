@@ -1,5 +1,7 @@
 //! Intersection queries on sorted arrays: every algorithm in `Algorithm::ARRAY` (and
-//! the O(log n) ones also under the fast kernel), and the sublinear `clm` on the same
+//! the O(log n) ones also under the fast kernel), each followed by its certified call
+//! (`<name>-certified`: the answer with its certificate), and the sublinear `clm` (and
+//! `clm-certified`) on the same
 //! polygons linked once in a shuffled arena, against the peers geo (`Intersects`
 //! on `Polygon` and on `MonotoneChainPolygon`) and parry2d-f64 (`intersection_test`
 //! on `ConvexPolygon`), for n = 2^4, 2^6, …, 2^max vertices per polygon, intersecting
@@ -76,6 +78,14 @@ fn bench(c: &mut Criterion) {
                 group.bench_with_input(BenchmarkId::new(alg.name(), n), &(&p, &q), |b, (p, q)| {
                     b.iter(|| assert_eq!(alg.intersects(Precision::Exact, black_box(p), black_box(q)), want))
                 });
+                // The same query with its certificate, right after the plain one.
+                let id = BenchmarkId::new(format!("{}-certified", alg.name()), n);
+                group.bench_with_input(id, &(&p, &q), |b, (p, q)| {
+                    b.iter(|| {
+                        let c = alg.certified(Precision::Exact, black_box(p), black_box(q));
+                        assert_eq!(c.intersects(), want)
+                    })
+                });
             }
             // The sublinear test on the same polygons, linked once in shuffled arena order
             // outside the timed loop (linking is O(n)), with a reused workspace and RNG.
@@ -95,6 +105,18 @@ fn bench(c: &mut Criterion) {
                         &mut ws,
                     );
                     assert_eq!(hit, want)
+                })
+            });
+            group.bench_function(BenchmarkId::new("clm-certified", n), |b| {
+                b.iter(|| {
+                    let c = Clm.certified_with_workspace(
+                        Exact,
+                        black_box(&lp),
+                        black_box(&lq),
+                        &mut clm_rng,
+                        &mut ws,
+                    );
+                    assert_eq!(c.intersects(), want)
                 })
             });
             drop((lp, lq));

@@ -3,7 +3,8 @@
 //! Groups (filter by name as usual with criterion):
 //! * `clm/intersecting`, `clm/disjoint`: [`Clm`] for n = 2^4, 2^6, ... up to
 //!   2^`POLYSECT_BENCH_MAX_LOG2` (default 22) vertices per polygon, Rotated pairs linked
-//!   in shuffled arena order; the answer is asserted inside the loop.
+//!   in shuffled arena order; the answer is asserted inside the loop. `clm-certified`
+//!   is the certified call (answer and certificate) on the same pairs.
 //! * `convert_vs_clm`: [`Convert`] against [`Clm`] on the same pairs, n up to 2^16
 //!   (Convert is linear: beyond that it only burns machine time).
 //! * `clm_factor`: the sample factor c of [`ClmWithFactor`] at n = 2^12 and 2^18.
@@ -100,6 +101,18 @@ fn bench_clm(c: &mut Criterion) {
                     let got =
                         Clm.intersects_with_workspace(Exact, black_box(p), black_box(q), &mut rng, &mut ws);
                     assert_eq!(got, set.answer);
+                })
+            });
+            // The certified call on the same pairs, with the same RNG seed and a warm workspace.
+            let mut rng = SmallRng::seed_from_u64(SEED + 1);
+            let mut i = 0;
+            group.bench_with_input(BenchmarkId::new("clm-certified", n), &set, |b, set| {
+                b.iter(|| {
+                    let (p, q) = &set.pairs[i % set.pairs.len()];
+                    i += 1;
+                    let got =
+                        Clm.certified_with_workspace(Exact, black_box(p), black_box(q), &mut rng, &mut ws);
+                    assert_eq!(got.intersects(), set.answer);
                 })
             });
         }

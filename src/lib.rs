@@ -34,6 +34,7 @@
 //! ```
 #![forbid(unsafe_code)]
 
+pub mod certificate_json;
 pub mod crossings;
 // The measurements behind `polysect bench`: the tool's, not an API to build on.
 #[doc(hidden)]

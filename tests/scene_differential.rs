@@ -630,9 +630,9 @@ fn run_stream(seed: u64, ops: usize, tally: &mut Tally) {
             seed: Some(seed),
             certificate: false,
         };
-        let mut exact = SceneSession::with_kernel(Exact, options).unwrap();
+        let mut exact = SceneSession::with_kernel(Exact, options);
         compare(&mut exact, &stream, false, seed, strategy, tally);
-        let mut fast = SceneSession::with_kernel(Fast, options).unwrap();
+        let mut fast = SceneSession::with_kernel(Fast, options);
         compare(&mut fast, &stream, true, seed, strategy, tally);
     }
 }

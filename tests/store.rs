@@ -499,3 +499,60 @@ impl Centre for ConvexPolygon {
         Point::new(x, y)
     }
 }
+
+#[test]
+fn certified_scene_queries_verify_on_every_route() {
+    use polysect::intersect::verify_linked;
+    for strategy in Strategy::ALL {
+        let mut rng = SmallRng::seed_from_u64(0xce47);
+        let mut scene = scattered_scene(&mut rng, 16, 10);
+        scene.set_strategy(strategy);
+        let ids: Vec<_> = scene.ids().collect();
+        let mut queries = 0;
+        for step in 0..1_500 {
+            let a = ids[rng.random_range(0..ids.len())];
+            if rng.random_bool(0.2) {
+                let _ = random_edit(&mut scene, a, &mut rng);
+                continue;
+            }
+            let b = ids[rng.random_range(0..ids.len())];
+            let want = truth(&scene, a, b);
+            let c = scene.intersects_certified(a, b).unwrap();
+            let (p, q) = (scene.polygon(a).unwrap(), scene.polygon(b).unwrap());
+            assert_eq!(verify_linked(p, q, &c), Ok(()), "{strategy:?} step {step}: {c:?}");
+            assert_eq!(c.intersects(), want, "{strategy:?} step {step}");
+            queries += 1;
+        }
+        assert!(queries > 1_000);
+        // Every route was taken: boxes, a polygon against itself, and the strategy's tests.
+        let s = scene.stats();
+        assert!(s.box_rejects > 0, "{strategy:?}: {s:?}");
+        match strategy {
+            Strategy::Sampled => assert!(s.sampled_tests > 0),
+            Strategy::Convert => assert!(s.throwaway_conversions > 0),
+            Strategy::Cached => assert!(s.array_tests > 0),
+            Strategy::Planner => assert!(s.array_tests > 0 && s.sampled_tests + s.linear_tests > 0, "{s:?}"),
+        }
+        // The batches: the same pairs as the plain batch, each proved.
+        let plain = scene.intersecting_pairs();
+        let certified = scene.intersecting_pairs_certified();
+        assert_eq!(
+            plain,
+            certified.iter().map(|&(a, b, _)| (a, b)).collect::<Vec<_>>()
+        );
+        for (a, b, c) in &certified {
+            let (p, q) = (scene.polygon(*a).unwrap(), scene.polygon(*b).unwrap());
+            assert_eq!(verify_linked(p, q, c), Ok(()));
+        }
+        let pairs: Vec<_> = ids
+            .iter()
+            .flat_map(|&a| ids.iter().map(move |&b| (a, b)))
+            .collect();
+        for (&(a, b), c) in pairs.iter().zip(scene.intersects_batch_certified(&pairs)) {
+            let c = c.unwrap();
+            let (p, q) = (scene.polygon(a).unwrap(), scene.polygon(b).unwrap());
+            assert_eq!(verify_linked(p, q, &c), Ok(()));
+            assert_eq!(c.intersects(), truth(&scene, a, b));
+        }
+    }
+}

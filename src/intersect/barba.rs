@@ -62,6 +62,25 @@
 //! vertices or two of T_Q's edges, so six of the nine orientations of T_P's
 //! vertices against T_Q's lines carry over to the next iteration (a 3×3 cache).
 //!
+//! # Certificate
+//! [`ArrayIntersection::certified_probed`](super::ArrayIntersection::certified_probed)
+//! runs the same loop, recording how it ended:
+//! * a vertex of T_P in K (step 1) or of K in T_P (step 3): that vertex, inside;
+//! * an edge of T_P (a chord of P) meeting an edge of Q (step 4), or T_P meeting the
+//!   small Q' of the finish without a vertex of either inside the other: the chord is
+//!   reduced to an edge of P by one binary search within P' (the chain beyond it
+//!   crosses the line of Q's edge exactly once), giving two crossing edges or an end of
+//!   Q's edge inside P. O(log n) more; the plain run never localises P's boundary
+//!   there, so this is the certified call's extra work on intersecting pairs.
+//! * disjoint pieces: the last separating line is an edge of Q with P' strictly
+//!   outside (or an edge of P with Q' outside). If P's vertex deepest towards it is
+//!   extreme in all of P (two predicates), or P's extreme vertex found by a binary
+//!   search lies strictly outside, that edge separates P and Q. Otherwise the pieces'
+//!   separator is not one for the polygons (Q-pruning keeps only a pocket of Q), and a
+//!   second run with the roles exchanged usually ends on one that is; failing that,
+//!   only the answer is returned and the certified call completes it
+//!   ([`Fallback`](super::Fallback)).
+//!
 //! # Complexity
 //! O(log n + log m) time, O(1) memory, for polygons of n and m vertices, on every
 //! input: every iteration halves P' or Q' (or ends the test) and costs O(1)
@@ -84,8 +103,9 @@
 //! step 5 (no separating edge found) falls back to [`Linear`](super::Linear) on the
 //! remaining pieces.
 
-use super::{ArrayIntersection, Linear, Probe};
-use crate::kernel::{Kernel, Orientation, Point, Sign, line_meet_side, segments_intersect};
+use super::certificate::{extreme_left, resolve_chords, same_direction, separates, turn_gt};
+use super::{ArrayIntersection, Certificate, Derivation, Linear, Probe, Which};
+use crate::kernel::{Kernel, Orientation, Point, line_meet_side, point_on_segment, segments_intersect};
 use crate::polygon::ConvexPolygon;
 
 /// The Barba–Langerman O(log n) test; see the module docs.
@@ -112,7 +132,31 @@ impl ArrayIntersection for Barba {
         q: &ConvexPolygon,
         probe: &mut P,
     ) -> bool {
-        run(k, p.vertices(), q.vertices(), probe)
+        run::<K, P, Plain>(k, p.vertices(), q.vertices(), probe)
+    }
+
+    /// See the module docs' "Certificate" section.
+    fn derive_probed<K: Kernel, P: Probe>(
+        &self,
+        k: K,
+        p: &ConvexPolygon,
+        q: &ConvexPolygon,
+        probe: &mut P,
+    ) -> Derivation {
+        let (pv, qv) = (p.vertices(), q.vertices());
+        match run::<K, P, Record>(k, pv, qv, probe) {
+            Exit::Apart { pr, q, line } => lift(k, pv, qv, pr, q, line)
+                .or_else(|| {
+                    // The run with the roles exchanged ends on other pieces.
+                    match run::<K, (), Record>(k, qv, pv, &mut ()) {
+                        Exit::Apart { pr, q, line } => lift(k, qv, pv, pr, q, line).map(Certificate::swapped),
+                        _ => None,
+                    }
+                })
+                .map_or(Derivation::Answer(false), Derivation::Certified),
+            Exit::Stuck(answer) => Derivation::Answer(answer),
+            meet => meet_certificate(k, pv, qv, meet).map_or(Derivation::Answer(true), Derivation::Certified),
+        }
     }
 }
 
@@ -127,9 +171,13 @@ struct Range {
 
 impl Range {
     #[inline]
-    fn at(self, v: &[Point], pos: usize) -> Point {
+    fn idx(self, n: usize, pos: usize) -> usize {
         let i = self.start + pos;
-        v[if i >= v.len() { i - v.len() } else { i }]
+        if i >= n { i - n } else { i }
+    }
+    #[inline]
+    fn at(self, v: &[Point], pos: usize) -> Point {
+        v[self.idx(v.len(), pos)]
     }
     #[inline]
     fn sub(self, v: &[Point], from: usize, to: usize) -> Range {
@@ -144,21 +192,138 @@ impl Range {
     fn mid(self) -> usize {
         (self.len - 1) / 2
     }
+    /// The array indices of T_P's vertices.
+    #[inline]
+    fn triangle(self, n: usize) -> [usize; 3] {
+        [self.idx(n, 0), self.idx(n, self.mid()), self.idx(n, self.len - 1)]
+    }
 }
 
 /// Below this many vertices Q' is used as it is instead of through its edge hull.
 const SMALL_Q: usize = 7;
 
-/// What one iteration of the main loop decided.
+/// Q' given explicitly for the constant-size finish: the vertices of `range` (fewer
+/// than [`SMALL_Q`]), or only its first and last vertex when `chord` (the segment
+/// Q' shrinks to after a witness beyond Q's closing chord).
+#[derive(Clone, Copy, Debug)]
+struct SmallQ {
+    range: Range,
+    chord: bool,
+}
+
+impl SmallQ {
+    /// The array indices of its vertices (counter-clockwise), and how many there are.
+    fn indices(self, m: usize) -> ([usize; SMALL_Q], usize) {
+        let mut out = [0; SMALL_Q];
+        if self.chord {
+            out[0] = self.range.idx(m, 0);
+            out[1] = self.range.idx(m, self.range.len - 1);
+            (out, 2)
+        } else {
+            let len = self.range.len.min(SMALL_Q);
+            for (pos, slot) in out.iter_mut().enumerate().take(len) {
+                *slot = self.range.idx(m, pos);
+            }
+            (out, len)
+        }
+    }
+}
+
+/// The line by which a run found P' and Q' disjoint.
+#[derive(Clone, Copy, Debug)]
+enum Sep {
+    /// The line through vertices `i` → `j` of Q (an edge of Q', or a chord of Q when it
+    /// closes the small Q'), with Q' on its closed left and T_P strictly right.
+    QLine(usize, usize),
+    /// The edge of P starting at this index (a chain of P' without interior vertices).
+    PEdge(usize),
+    /// P''s closing chord.
+    PChord,
+}
+
+/// How a run ended: the plain call reduces it to the answer, the certified call
+/// turns it into a certificate.
+#[derive(Clone, Copy, Debug)]
+enum Exit {
+    /// Vertex `i` of P lies in K ⊆ Q (step 1).
+    PInside(usize),
+    /// Vertex `j` of Q lies in T_P ⊆ P (step 3).
+    QInside(usize),
+    /// The chord between vertices `a` and `b` of P meets the edge of Q starting at `e`
+    /// (step 4).
+    Chord { a: usize, b: usize, e: usize },
+    /// T_P of `pr` meets the explicit Q' `qs` (constant-size finish).
+    Small { pr: Range, qs: SmallQ },
+    /// P' = CH(`pr`) and Q' (`q`) are disjoint, by `line`.
+    Apart { pr: Range, q: SmallQ, line: Sep },
+    /// An inconsistent kernel: the reference's answer on the remaining pieces.
+    Stuck(bool),
+}
+
+/// What a run returns: the plain call's answer ([`Plain`]) or, for the certified call,
+/// the [`Exit`] ([`Record`]), built only in that case. The algorithm is written once.
+trait Mode {
+    type Out;
+    /// The run ended with this answer; `exit` says how.
+    fn done(meets: bool, exit: impl FnOnce() -> Exit) -> Self::Out;
+}
+
+/// The plain call: the answer alone.
+struct Plain;
+
+impl Mode for Plain {
+    type Out = bool;
+    #[inline(always)]
+    fn done(meets: bool, _exit: impl FnOnce() -> Exit) -> bool {
+        meets
+    }
+}
+
+/// The certified call: how the run ended.
+struct Record;
+
+impl Mode for Record {
+    type Out = Exit;
+    #[inline(always)]
+    fn done(_meets: bool, exit: impl FnOnce() -> Exit) -> Exit {
+        exit()
+    }
+}
+
+/// What one iteration of the main loop decided (small, so that it is returned in
+/// registers; [`run`] turns a decision into an [`Exit`]).
+#[derive(Clone, Copy)]
 enum Step {
-    Meet,
-    Apart,
+    /// T_P's vertex `i` lies in K (step 1).
+    InK(u8),
+    /// K's vertex `x` (the ends of T_Q's edges, in order) lies in T_P (step 3).
+    InTriangle(u8),
+    /// T_P's edge `a` → `a + 1` meets T_Q's edge `j` (step 4).
+    Crossing(u8, u8),
+    /// T_Q's line `j` has T_P strictly outside and P''s farthest point towards it is a
+    /// triangle vertex (step 2).
+    ApartLine(u8),
+    /// T_P's edge `a` separates and closes a chain without interior vertices, or is
+    /// P''s closing chord (`a` = 2) (step 5).
+    ApartEdge(u8),
     /// Keep chain 0 (`P[a..=mid]`) or 1 (`P[mid..=b]`).
     KeepP(usize),
     /// Keep the pocket beyond chord 0, 1 or 2.
     KeepQ(usize),
     /// Only an inconsistent kernel gets here.
     Stuck,
+}
+
+/// Positions in P' of T_P's vertices.
+#[inline]
+fn t_positions(pr: Range) -> [usize; 3] {
+    [0, pr.mid(), pr.len - 1]
+}
+
+/// Positions in Q' of the starts of T_Q's three edges.
+#[inline]
+fn e_positions(qr: Range) -> [usize; 3] {
+    [0, (qr.len - 2) / 2, qr.len - 2]
 }
 
 /// Orientations of T_P's vertices (rows) against T_Q's lines (columns), computed
@@ -179,7 +344,8 @@ impl SideCache {
     }
 }
 
-fn run<K: Kernel, P: Probe>(k: K, pv: &[Point], qv: &[Point], probe: &mut P) -> bool {
+/// The test, returning what mode `M` asks for.
+fn run<K: Kernel, P: Probe, M: Mode>(k: K, pv: &[Point], qv: &[Point], probe: &mut P) -> M::Out {
     let mut pr = Range {
         start: 0,
         len: pv.len(),
@@ -191,16 +357,45 @@ fn run<K: Kernel, P: Probe>(k: K, pv: &[Point], qv: &[Point], probe: &mut P) -> 
     let mut cache = SideCache([[None; 3]; 3]);
     loop {
         if qr.len < SMALL_Q {
-            let mut qs = [Point::default(); SMALL_Q];
-            for (i, slot) in qs.iter_mut().enumerate().take(qr.len) {
-                *slot = qr.at(qv, i);
-            }
-            return against_small(k, pv, pr, &qs[..qr.len], probe);
+            let qs = SmallQ {
+                range: qr,
+                chord: false,
+            };
+            return against_small::<K, P, M>(k, pv, pr, qv, qs, probe);
         }
         probe.iteration();
-        match step(k, pv, pr, qv, qr, &mut cache) {
-            Step::Meet => return true,
-            Step::Apart => return false,
+        let decision = step(k, pv, pr, qv, qr, &mut cache);
+        let (n, m) = (pv.len(), qv.len());
+        let (tp, ep) = (t_positions(pr), e_positions(qr));
+        let apart = |line| Exit::Apart {
+            pr,
+            q: SmallQ {
+                range: qr,
+                chord: false,
+            },
+            line,
+        };
+        match decision {
+            Step::InK(i) => return M::done(true, || Exit::PInside(pr.idx(n, tp[i as usize]))),
+            Step::InTriangle(x) => {
+                return M::done(true, || {
+                    Exit::QInside(qr.idx(m, ep[x as usize / 2] + x as usize % 2))
+                });
+            }
+            Step::Crossing(a, j) => {
+                let (a, b) = chord_in_range(a as usize);
+                return M::done(true, || Exit::Chord {
+                    a: pr.idx(n, tp[a]),
+                    b: pr.idx(n, tp[b]),
+                    e: qr.idx(m, ep[j as usize]),
+                });
+            }
+            Step::ApartLine(j) => {
+                let e = ep[j as usize];
+                return M::done(false, || apart(Sep::QLine(qr.idx(m, e), qr.idx(m, e + 1))));
+            }
+            Step::ApartEdge(2) => return M::done(false, || apart(Sep::PChord)),
+            Step::ApartEdge(a) => return M::done(false, || apart(Sep::PEdge(pr.idx(n, tp[a as usize])))),
             Step::KeepP(chain) => {
                 let mid = pr.mid();
                 pr = if chain == 0 {
@@ -211,8 +406,11 @@ fn run<K: Kernel, P: Probe>(k: K, pv: &[Point], qv: &[Point], probe: &mut P) -> 
                 cache.keep_rows(chain);
             }
             Step::KeepQ(2) => {
-                let chord = [qr.at(qv, 0), qr.at(qv, qr.len - 1)];
-                return against_small(k, pv, pr, &chord, probe);
+                let qs = SmallQ {
+                    range: qr,
+                    chord: true,
+                };
+                return against_small::<K, P, M>(k, pv, pr, qv, qs, probe);
             }
             Step::KeepQ(pocket) => {
                 let m1 = (qr.len - 2) / 2;
@@ -223,7 +421,10 @@ fn run<K: Kernel, P: Probe>(k: K, pv: &[Point], qv: &[Point], probe: &mut P) -> 
                 };
                 cache.keep_cols(pocket);
             }
-            Step::Stuck => return fallback(k, pv, pr, qv, qr),
+            Step::Stuck => {
+                let answer = fallback(k, pv, pr, qv, qr);
+                return M::done(answer, || Exit::Stuck(answer));
+            }
         }
     }
 }
@@ -251,25 +452,28 @@ fn step<K: Kernel>(k: K, pv: &[Point], pr: Range, qv: &[Point], qr: Range, cache
         if (0..3).all(|j| side(i, j) != Cw) {
             return match chords.iter().position(|c| k.orient(c.0, c.1, ti) == Cw) {
                 Some(pocket) => Step::KeepQ(pocket),
-                None => Step::Meet,
+                None => Step::InK(i as u8),
             };
         }
     }
     // 2. A line of T_Q with T_P strictly outside.
     for (j, &line) in lines.iter().enumerate() {
         if (0..3).all(|i| side(i, j) == Cw) {
-            return prune_by_line(k, pv, pr, line);
+            return match prune_by_line(k, pv, pr, line) {
+                Some(chain) => Step::KeepP(chain),
+                None => Step::ApartLine(j as u8),
+            };
         }
     }
     // 3. A vertex of K inside T_P.
     let kv = [
         lines[0].0, lines[0].1, lines[1].0, lines[1].1, lines[2].0, lines[2].1,
     ];
-    if kv
+    if let Some(x) = kv
         .iter()
-        .any(|&x| (0..3).all(|i| k.orient(t[i], t[(i + 1) % 3], x) != Cw))
+        .position(|&x| (0..3).all(|i| k.orient(t[i], t[(i + 1) % 3], x) != Cw))
     {
-        return Step::Meet;
+        return Step::InTriangle(x as u8);
     }
     // 4. Transversal crossings of T_P's edges with T_Q's lines.
     let sides: [[Orientation; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| side(i, j)));
@@ -282,7 +486,7 @@ fn step<K: Kernel>(k: K, pv: &[Point], pr: Range, qv: &[Point], qr: Range, cache
             }
             let (s, u) = lines[j];
             if segments_intersect(k, t[a], t[b], s, u) {
-                return Step::Meet;
+                return Step::Crossing(a as u8, j as u8);
             }
             // The crossing X lies on the segment t[a]t[b]: when both ends are on the
             // same side of another line, so is X, without the degree-4 predicate.
@@ -304,27 +508,42 @@ fn step<K: Kernel>(k: K, pv: &[Point], pr: Range, qv: &[Point], qr: Range, cache
     for a in 0..3 {
         let b = (a + 1) % 3;
         if kv.iter().all(|&x| k.orient(t[a], t[b], x) == Cw) && line_misses_hull(k, (t[a], t[b]), &lines) {
-            return if a == 2 { Step::Apart } else { keep_chain(pr, a) };
+            if a == 2 {
+                return Step::ApartEdge(2);
+            }
+            return match keep_chain(pr, a) {
+                Some(chain) => Step::KeepP(chain),
+                None => Step::ApartEdge(a as u8),
+            };
         }
     }
     Step::Stuck
 }
 
-/// Keeps chain `c` of P' when it has an interior vertex; otherwise P' ∩ Q' = ∅.
-fn keep_chain(pr: Range, c: usize) -> Step {
-    let mid = pr.mid();
-    let interior = if c == 0 { mid >= 2 } else { pr.len - 1 - mid >= 2 };
-    if interior { Step::KeepP(c) } else { Step::Apart }
+/// T_P's edge `a` → `a + 1` as a pair of triangle vertices whose counter-clockwise chain
+/// of P lies in P' (the closing edge 2 → 0 is given as 0 → 2), so that reducing the
+/// chord to an edge searches P' only.
+#[inline]
+fn chord_in_range(a: usize) -> (usize, usize) {
+    if a == 2 { (0, 2) } else { (a, a + 1) }
 }
 
-/// T_P lies strictly right of the line s→u and Q' on or left of it: keep the chain
-/// of P' that holds P''s farthest point towards the line strictly inside, if any.
+/// Chain `c` of P' if it has an interior vertex; otherwise (`None`) P' ∩ Q' = ∅.
+fn keep_chain(pr: Range, c: usize) -> Option<usize> {
+    let mid = pr.mid();
+    let interior = if c == 0 { mid >= 2 } else { pr.len - 1 - mid >= 2 };
+    interior.then_some(c)
+}
+
+/// T_P lies strictly right of the line s→u and Q' on or left of it: the chain of P'
+/// that holds P''s farthest point towards the line strictly inside, if any (`None`:
+/// P' ∩ Q' = ∅).
 ///
 /// The farthest point is where the edge directions pass the direction u→s (they
 /// turn monotonically), so chain c holds it strictly inside iff u→s is turned
 /// strictly beyond the chain's first edge and strictly before its last edge.
 /// Otherwise the farthest point is a triangle vertex, strictly right of the line.
-fn prune_by_line<K: Kernel>(k: K, pv: &[Point], pr: Range, (s, u): (Point, Point)) -> Step {
+fn prune_by_line<K: Kernel>(k: K, pv: &[Point], pr: Range, (s, u): (Point, Point)) -> Option<usize> {
     let mid = pr.mid();
     let last = pr.len - 1;
     let at = |i: usize| pr.at(pv, i);
@@ -333,37 +552,11 @@ fn prune_by_line<K: Kernel>(k: K, pv: &[Point], pr: Range, (s, u): (Point, Point
         !same_direction(k, first, (u, s)) && turn_gt(k, first, end, (u, s))
     };
     if mid >= 2 && holds_peak(0, mid) {
-        Step::KeepP(0)
+        Some(0)
     } else if last - mid >= 2 && holds_peak(mid, last) {
-        Step::KeepP(1)
+        Some(1)
     } else {
-        Step::Apart
-    }
-}
-
-fn same_direction<K: Kernel>(k: K, a: (Point, Point), b: (Point, Point)) -> bool {
-    k.cross(a.0, a.1, b.0, b.1) == Collinear && k.dot(a.0, a.1, b.0, b.1) == Sign::Positive
-}
-
-/// Whether direction `a` is turned further counter-clockwise from `base` than `c`,
-/// with turns measured in [0, 2π).
-fn turn_gt<K: Kernel>(k: K, base: (Point, Point), a: (Point, Point), c: (Point, Point)) -> bool {
-    let class = |d: (Point, Point)| match k.cross(base.0, base.1, d.0, d.1) {
-        Orientation::Ccw => 1,
-        Orientation::Cw => 3,
-        Orientation::Collinear => {
-            if k.dot(base.0, base.1, d.0, d.1) == Sign::Positive {
-                0
-            } else {
-                2
-            }
-        }
-    };
-    let (ca, cc) = (class(a), class(c));
-    if ca != cc {
-        ca > cc
-    } else {
-        (ca == 1 || ca == 3) && k.cross(c.0, c.1, a.0, a.1) == Orientation::Ccw
+        None
     }
 }
 
@@ -391,40 +584,59 @@ fn line_misses_hull<K: Kernel>(k: K, l: (Point, Point), lines: &[(Point, Point);
 }
 
 /// Prunes P' against a Q' of at most six vertices (or a segment) given explicitly.
-fn against_small<K: Kernel, P: Probe>(
+fn against_small<K: Kernel, P: Probe, M: Mode>(
     k: K,
     pv: &[Point],
     mut pr: Range,
-    qs: &[Point],
+    qv: &[Point],
+    small: SmallQ,
     probe: &mut P,
-) -> bool {
+) -> M::Out {
+    let (idx, len) = small.indices(qv.len());
+    let mut qs = [Point::default(); SMALL_Q];
+    for (slot, &i) in qs.iter_mut().zip(&idx[..len]) {
+        *slot = qv[i];
+    }
+    let qs = &qs[..len];
+    let n = pv.len();
     loop {
         probe.iteration();
         let mid = pr.mid();
         let t = [pr.at(pv, 0), pr.at(pv, mid), pr.at(pv, pr.len - 1)];
-        let verdict = match separating_axis(k, &t, qs) {
-            None => return true,
-            Some(Axis::OfQ(line)) => prune_by_line(k, pv, pr, line),
-            Some(Axis::OfTriangle(2)) => Step::Apart,
-            Some(Axis::OfTriangle(c)) => keep_chain(pr, c),
+        let Some(axis) = separating_axis(k, &t, qs) else {
+            return M::done(true, || Exit::Small { pr, qs: small });
         };
-        match verdict {
-            Step::KeepP(c) => {
+        let keep = match axis {
+            Axis::OfQ(i, j) => prune_by_line(k, pv, pr, (qs[i], qs[j])),
+            Axis::OfTriangle(2) => None,
+            Axis::OfTriangle(c) => keep_chain(pr, c),
+        };
+        match keep {
+            Some(c) => {
                 pr = if c == 0 {
                     pr.sub(pv, 0, mid)
                 } else {
                     pr.sub(pv, mid, pr.len - 1)
                 }
             }
-            _ => return false,
+            None => {
+                return M::done(false, || {
+                    let line = match axis {
+                        Axis::OfQ(i, j) => Sep::QLine(idx[i], idx[j]),
+                        Axis::OfTriangle(2) => Sep::PChord,
+                        Axis::OfTriangle(c) => Sep::PEdge(pr.idx(n, [0, mid][c])),
+                    };
+                    Exit::Apart { pr, q: small, line }
+                });
+            }
         }
     }
 }
 
 /// A strictly separating line between a triangle and a small convex set.
 enum Axis {
-    /// The line of an edge of the small set (directed, the set on or left of it).
-    OfQ((Point, Point)),
+    /// The line through the small set's points `i` → `j` (the set on or left of it).
+    OfQ(usize, usize),
     /// The line of triangle edge i → i+1 (the small set strictly right of it).
     OfTriangle(usize),
 }
@@ -435,11 +647,11 @@ enum Axis {
 /// (both directions for a segment).
 fn separating_axis<K: Kernel>(k: K, t: &[Point; 3], qs: &[Point]) -> Option<Axis> {
     let n = qs.len();
-    let q_edges = (0..n).map(|i| (qs[i], qs[(i + 1) % n]));
-    let reversed = (0..n).filter(move |_| n == 2).map(|i| (qs[(i + 1) % n], qs[i]));
-    for (s, u) in q_edges.chain(reversed) {
-        if t.iter().all(|&x| k.orient(s, u, x) == Cw) {
-            return Some(Axis::OfQ((s, u)));
+    let q_edges = (0..n).map(|i| (i, (i + 1) % n));
+    let reversed = (0..n).filter(move |_| n == 2).map(|i| ((i + 1) % n, i));
+    for (i, j) in q_edges.chain(reversed) {
+        if t.iter().all(|&x| k.orient(qs[i], qs[j], x) == Cw) {
+            return Some(Axis::OfQ(i, j));
         }
     }
     (0..3)
@@ -453,6 +665,172 @@ fn fallback<K: Kernel>(k: K, pv: &[Point], pr: Range, qv: &[Point], qr: Range) -
     let piece =
         |v: &[Point], r: Range| ConvexPolygon::from_ccw_unchecked((0..r.len).map(|i| r.at(v, i)).collect());
     Linear.intersects_with(k, &piece(pv, pr), &piece(qv, qr))
+}
+
+/// The witness of an intersecting pair from Barba's run, or `None` when the run finds
+/// the pair disjoint (or an inconsistent kernel gets stuck): what [`Linear`]'s and
+/// [`Dobkin`](super::Dobkin)'s certified calls use for intersecting pairs.
+pub(crate) fn meeting_certificate<K: Kernel>(k: K, pv: &[Point], qv: &[Point]) -> Option<Certificate> {
+    meet_certificate(k, pv, qv, run::<K, (), Record>(k, pv, qv, &mut ()))
+}
+
+/// The certificate of a meeting exit (`None` for the others).
+fn meet_certificate<K: Kernel>(k: K, pv: &[Point], qv: &[Point], exit: Exit) -> Option<Certificate> {
+    match exit {
+        Exit::PInside(i) => Some(Certificate::VertexInside {
+            of: Which::P,
+            point: pv[i],
+        }),
+        Exit::QInside(j) => Some(Certificate::VertexInside {
+            of: Which::Q,
+            point: qv[j],
+        }),
+        Exit::Chord { a, b, e } => resolve_chords(k, pv, (a, b), qv, (e, (e + 1) % qv.len())),
+        Exit::Small { pr, qs } => small_witness(k, pv, pr, qv, qs),
+        Exit::Apart { .. } | Exit::Stuck(_) => None,
+    }
+}
+
+/// T_P meets the hull of the explicit Q': a vertex of T_P in it (a vertex of P in Q), a
+/// vertex of it in T_P (a vertex of Q in P), or else an edge of T_P (a chord of P)
+/// crossing one of its edges (an edge of Q, or its closing chord), resolved by
+/// [`resolve_chords`] with one binary search within P'. All three questions are read
+/// off one table of the orientations of T_P's vertices against Q''s edges and of Q''s
+/// vertices against T_P's edges (at most 36 predicates).
+fn small_witness<K: Kernel>(
+    k: K,
+    pv: &[Point],
+    pr: Range,
+    qv: &[Point],
+    small: SmallQ,
+) -> Option<Certificate> {
+    let t = pr.triangle(pv.len());
+    let tp = t.map(|i| pv[i]);
+    let (qi, len) = small.indices(qv.len());
+    let qp: [Point; SMALL_Q] = std::array::from_fn(|j| qv[qi[j % len]]);
+    if len == 2 {
+        // Q' is a segment.
+        if let Some(&i) = t.iter().find(|&&i| point_on_segment(k, qp[0], qp[1], pv[i])) {
+            return Some(Certificate::VertexInside {
+                of: Which::P,
+                point: pv[i],
+            });
+        }
+        if let Some(j) = (0..2).find(|&j| (0..3).all(|a| k.orient(tp[a], tp[(a + 1) % 3], qp[j]) != Cw)) {
+            return Some(Certificate::VertexInside {
+                of: Which::Q,
+                point: qp[j],
+            });
+        }
+        let a = (0..3).find(|&a| segments_intersect(k, tp[a], tp[(a + 1) % 3], qp[0], qp[1]))?;
+        let (a, b) = chord_in_range(a);
+        return resolve_chords(k, pv, (t[a], t[b]), qv, (qi[0], qi[1]));
+    }
+    let mut t_side = [[Collinear; SMALL_Q]; 3];
+    for (a, row) in t_side.iter_mut().enumerate() {
+        for (e, o) in row.iter_mut().enumerate().take(len) {
+            *o = k.orient(qp[e], qp[(e + 1) % len], tp[a]);
+        }
+    }
+    if let Some(a) = (0..3).find(|&a| t_side[a][..len].iter().all(|&o| o != Cw)) {
+        return Some(Certificate::VertexInside {
+            of: Which::P,
+            point: tp[a],
+        });
+    }
+    let mut q_side = [[Collinear; 3]; SMALL_Q];
+    for (j, row) in q_side.iter_mut().enumerate().take(len) {
+        for (a, o) in row.iter_mut().enumerate() {
+            *o = k.orient(tp[a], tp[(a + 1) % 3], qp[j]);
+        }
+    }
+    if let Some(j) = (0..len).find(|&j| q_side[j].iter().all(|&o| o != Cw)) {
+        return Some(Certificate::VertexInside {
+            of: Which::Q,
+            point: qp[j],
+        });
+    }
+    // No vertex of either in the other, yet they meet: some edge of T_P crosses some
+    // edge of Q' properly. Edges of Q come before Q''s closing chord (one search less).
+    let straddle = |x: Orientation, y: Orientation| x != Collinear && y == x.reverse();
+    let (a, e) = (0..len).find_map(|e| {
+        (0..3)
+            .find(|&a| {
+                straddle(q_side[e][a], q_side[(e + 1) % len][a])
+                    && straddle(t_side[a][e], t_side[(a + 1) % 3][e])
+            })
+            .map(|a| (a, e))
+    })?;
+    let (a, b) = chord_in_range(a);
+    resolve_chords(k, pv, (t[a], t[b]), qv, (qi[e], qi[(e + 1) % len]))
+}
+
+/// A separating edge for the whole polygons from a run's final separation of the
+/// pieces, when the final line is an edge of P or of Q that also supports the other
+/// polygon: the piece's vertex deepest towards the line is checked to be extreme in
+/// the whole polygon ([`separates`], O(1)). `None` when that check fails (the line
+/// separates the pieces but not the polygons).
+fn lift<K: Kernel>(k: K, pv: &[Point], qv: &[Point], pr: Range, q: SmallQ, line: Sep) -> Option<Certificate> {
+    let (n, m) = (pv.len(), qv.len());
+    let deepest = |(s, u): (Point, Point), v: &[Point], cands: &[usize]| {
+        cands.iter().copied().reduce(|best, c| {
+            if k.cross(s, u, v[best], v[c]) == Orientation::Ccw {
+                c
+            } else {
+                best
+            }
+        })
+    };
+    let line = match line {
+        // P' is all of P: its closing chord is an edge.
+        Sep::PChord if pr.len == n => Sep::PEdge(pr.idx(n, pr.len - 1)),
+        other => other,
+    };
+    match line {
+        Sep::QLine(i, j) if (i + 1) % m == j => {
+            let (s, u) = (qv[i], qv[j]);
+            let w = deepest((s, u), pv, &pr.triangle(n))?;
+            // P' lies strictly right of the edge; so does P if P''s deepest vertex is
+            // P's, else P's deepest vertex is outside P' and a search finds it.
+            let w = if separates(k, s, u, pv, w) {
+                w
+            } else {
+                extreme_left(k, pv, (s, u))
+            };
+            separates(k, s, u, pv, w).then_some(Certificate::Separated {
+                of: Which::Q,
+                from: s,
+                to: u,
+            })
+        }
+        Sep::PEdge(e) => {
+            let (s, u) = (pv[e], pv[(e + 1) % n]);
+            let (idx, len) = if q.range.len < SMALL_Q || q.chord {
+                q.indices(m)
+            } else {
+                // K's six vertices.
+                let r = q.range;
+                let m1 = (r.len - 2) / 2;
+                let mut out = [0; SMALL_Q];
+                for (slot, pos) in out.iter_mut().zip([0, 1, m1, m1 + 1, r.len - 2, r.len - 1]) {
+                    *slot = r.idx(m, pos);
+                }
+                (out, 6)
+            };
+            let w = deepest((s, u), qv, &idx[..len])?;
+            let w = if separates(k, s, u, qv, w) {
+                w
+            } else {
+                extreme_left(k, qv, (s, u))
+            };
+            separates(k, s, u, qv, w).then_some(Certificate::Separated {
+                of: Which::P,
+                from: s,
+                to: u,
+            })
+        }
+        _ => None,
+    }
 }
 
 #[cfg(test)]

@@ -60,6 +60,20 @@
 //! finishes with all pairs of edges, which is not logarithmic when the other chain
 //! is long; case 4 keeps pruning the long chain. See docs/algorithms.md.
 //!
+//! # Certificate
+//! * A ∈ Q: A is a vertex inside.
+//! * The finish found a vertex w of G on A's side of F inside the window: w is a vertex
+//!   of Q inside P (the ray from A to w stays in P up to F).
+//! * The finish found a vertex z of F on or beyond G: the segment from A to z (a chord of
+//!   P) meets G's edge there, resolved into a vertex inside or two crossing edges by at
+//!   most two binary searches.
+//! * The pencil misses P: a pencil line through A supports both polygons, and an edge
+//!   at A or at the tangent point separates (O(1)).
+//! * The finish found h < 0 on the window: edges at the final chains' vertices are
+//!   tried (O(1)); but the maximum of h in the projective frame need not be where the
+//!   polygons are closest, and then only the answer is returned (completed by
+//!   [`Dobkin`](super::Dobkin)'s separation).
+//!
 //! # Complexity
 //! O(log n + log m) time, O(1) memory, on every input: three binary searches on Q,
 //! two on P, at most about 2·(log₂ n + log₂ m) pruning iterations (each reported to
@@ -81,7 +95,8 @@
 //! [`Fast`](crate::Fast) wrong signs near degeneracies can give wrong answers but
 //! every step still shortens a chain, so the test always terminates.
 
-use super::{ArrayIntersection, Probe};
+use super::certificate::{from_faces, from_support, resolve_chords};
+use super::{ArrayIntersection, Certificate, Derivation, Probe, Which};
 use crate::kernel::{Kernel, Orientation, Point, Sign};
 use crate::polygon::ConvexPolygon;
 
@@ -109,7 +124,53 @@ impl ArrayIntersection for ChazelleDobkin {
         q: &ConvexPolygon,
         probe: &mut P,
     ) -> bool {
-        intersects(k, p.vertices(), q.vertices(), probe)
+        run(k, p.vertices(), q.vertices(), probe).meets()
+    }
+
+    /// See the module docs' "Certificate" section.
+    fn derive_probed<K: Kernel, P: Probe>(
+        &self,
+        k: K,
+        p: &ConvexPolygon,
+        q: &ConvexPolygon,
+        probe: &mut P,
+    ) -> Derivation {
+        let (pv, qv) = (p.vertices(), q.vertices());
+        let exit = run(k, pv, qv, probe);
+        let found = match exit {
+            Exit::AInside => Some(Certificate::VertexInside {
+                of: Which::P,
+                point: pv[0],
+            }),
+            // A pencil line through A supports both polygons.
+            Exit::Misses { ql, qr } => [ql, qr]
+                .into_iter()
+                .find_map(|t| from_support(k, (pv[0], qv[t]), pv, 0, qv, t)),
+            Exit::Finish {
+                f, g, hit: Some(hit), ..
+            } => match hit {
+                Hit::F { z, e } => resolve_chords(k, pv, (0, f.index(z)), qv, (g.index(e), g.index(e + 1))),
+                Hit::G { w } => Some(Certificate::VertexInside {
+                    of: Which::Q,
+                    point: qv[g.index(w)],
+                }),
+            },
+            Exit::Finish {
+                f,
+                g,
+                hit: None,
+                tangents,
+            } => {
+                let face_f = [f.index(f.lo), f.index(f.lo + 1), f.index(f.hi), 0];
+                let face_g = [g.index(g.lo), g.index(g.lo + 1), g.index(g.hi)];
+                from_faces(k, pv, &face_f, qv, &face_g).or_else(|| {
+                    tangents
+                        .into_iter()
+                        .find_map(|t| from_support(k, (pv[0], qv[t]), pv, 0, qv, t))
+                })
+            }
+        };
+        found.map_or(Derivation::Answer(exit.meets()), Derivation::Certified)
     }
 }
 
@@ -155,6 +216,56 @@ impl Chain<'_> {
     fn middle(&self) -> usize {
         self.lo + (self.edges() - 1) / 2
     }
+
+    /// The array index of position `i`.
+    #[inline]
+    fn index(&self, i: usize) -> usize {
+        let len = self.pts.len();
+        let i = i % len;
+        if self.forward {
+            (self.start + i) % len
+        } else {
+            (self.start + len - i) % len
+        }
+    }
+}
+
+/// How a run ended: the plain call reduces it to the answer, the certified call turns
+/// it into a certificate.
+#[derive(Clone, Copy, Debug)]
+enum Exit<'a> {
+    /// The pivot P[0] lies in Q.
+    AInside,
+    /// The pencil from the pivot does not enter P; `ql` and `qr` are the tangent
+    /// points' indices in Q.
+    Misses { ql: usize, qr: usize },
+    /// The constant-size finish on the chains F and G, and the vertex that decided it
+    /// (none: the polygons are disjoint).
+    Finish {
+        f: Chain<'a>,
+        g: Chain<'a>,
+        hit: Option<Hit>,
+        /// The tangent points, as for [`Exit::Misses`].
+        tangents: [usize; 2],
+    },
+}
+
+impl Exit<'_> {
+    #[inline]
+    fn meets(&self) -> bool {
+        !matches!(self, Exit::Misses { .. } | Exit::Finish { hit: None, .. })
+    }
+}
+
+/// The chain vertex that decided the finish.
+#[derive(Clone, Copy, Debug)]
+enum Hit {
+    /// Vertex `z` of F lies on or beyond G's edge starting at position `e`: the
+    /// segment from the pivot to `z` (a chord of P) meets that edge of Q.
+    F { z: usize, e: usize },
+    /// Vertex `w` of G lies on the pivot's side of F (or on it), inside the window:
+    /// a vertex of Q in P.
+    G { w: usize },
 }
 
 /// The geometry of one query: the pivot and the pencil's tangent points, which fix
@@ -273,11 +384,15 @@ fn pencil<K: Kernel>(k: K, q: &[Point], a: Point) -> Option<(usize, usize)> {
     Some((first, last))
 }
 
-fn intersects<K: Kernel, P: Probe>(k: K, pv: &[Point], qv: &[Point], probe: &mut P) -> bool {
+fn run<'a, K: Kernel, P: Probe>(k: K, pv: &'a [Point], qv: &'a [Point], probe: &mut P) -> Exit<'a> {
     let (n, m) = (pv.len(), qv.len());
     let a = pv[0];
     let Some((first, last)) = pencil(k, qv, a) else {
-        return true;
+        return Exit::AInside;
+    };
+    let misses = Exit::Misses {
+        ql: (last + 1) % m,
+        qr: first,
     };
     // G: the visible chain of Q from q_L = q[last + 1] back to q_R = q[first].
     let g_edges = (last + m - first) % m + 1;
@@ -307,7 +422,7 @@ fn intersects<K: Kernel, P: Probe>(k: K, pv: &[Point], qv: &[Point], probe: &mut
     } else if fr.in_arc(p1, ql, qr) {
         (p1, 1)
     } else {
-        return false; // the pencil does not enter P: P ∩ W(A) = {A} and A ∉ Q
+        return misses; // the pencil does not enter P: P ∩ W(A) = {A} and A ∉ Q
     };
     let (mut dhi, k1) = if fr.in_arc(qr, p1, pl) {
         // Smallest k with p_k at or counter-clockwise of q_R.
@@ -324,7 +439,7 @@ fn intersects<K: Kernel, P: Probe>(k: K, pv: &[Point], qv: &[Point], probe: &mut
     } else if fr.in_arc(pl, ql, qr) {
         (pl, n - 1)
     } else {
-        return false; // unreachable under an exact kernel: the arcs overlap
+        return misses; // unreachable under an exact kernel: the arcs overlap
     };
     let k1 = k1.max(k0 + 1);
     let mut f = Chain {
@@ -385,6 +500,7 @@ fn intersects<K: Kernel, P: Probe>(k: K, pv: &[Point], qv: &[Point], probe: &mut
             let j = g.middle();
             let (w1, w2) = (g.at(j), g.at(j + 1));
             let e = edge_right_of(&fr, &f, w2);
+            let e = (f.at(e), f.at(e + 1));
             if fr.slope_cmp(e, (w1, w2)) != Sign::Positive {
                 g.hi = j + 1;
                 shrink_hi(&fr, &mut dhi, w2);
@@ -397,6 +513,7 @@ fn intersects<K: Kernel, P: Probe>(k: K, pv: &[Point], qv: &[Point], probe: &mut
             let i = f.middle();
             let (v1, v2) = (f.at(i), f.at(i + 1));
             let e = edge_right_of(&fr, &g, v2);
+            let e = (g.at(e), g.at(e + 1));
             if fr.slope_cmp(e, (v1, v2)) != Sign::Negative {
                 f.hi = i + 1;
                 shrink_hi(&fr, &mut dhi, v2);
@@ -406,7 +523,9 @@ fn intersects<K: Kernel, P: Probe>(k: K, pv: &[Point], qv: &[Point], probe: &mut
             }
         }
     }
-    finish(&fr, &f, &g, dlo, dhi)
+    let hit = finish(&fr, &f, &g, dlo, dhi);
+    let tangents = [(last + 1) % m, first];
+    Exit::Finish { f, g, hit, tangents }
 }
 
 #[inline]
@@ -423,42 +542,43 @@ fn grow_lo<K: Kernel>(fr: &Frame<K>, lo: &mut Point, v: Point) {
     }
 }
 
-/// The edge of a chain of at most two edges that holds the part just right of `x`.
+/// The position of the edge of a chain of at most two edges that holds the part just
+/// right of `x`.
 #[inline]
-fn edge_right_of<K: Kernel>(fr: &Frame<K>, c: &Chain<'_>, x: Point) -> (Point, Point) {
+fn edge_right_of<K: Kernel>(fr: &Frame<K>, c: &Chain<'_>, x: Point) -> usize {
     if c.edges() >= 2 && !fr.before(x, c.at(c.lo + 1)) {
-        (c.at(c.lo + 1), c.at(c.lo + 2))
+        c.lo + 1
     } else {
-        (c.at(c.lo), c.at(c.lo + 1))
+        c.lo
     }
 }
 
 /// Case 5: both chains have at most two edges. h = f − g is concave and piecewise
 /// linear with breakpoints at chain vertices, and the window's ends are chain
 /// vertices, so h ≥ 0 somewhere iff it is at a chain vertex inside the window.
-fn finish<K: Kernel>(fr: &Frame<K>, f: &Chain<'_>, g: &Chain<'_>, dlo: Point, dhi: Point) -> bool {
+fn finish<K: Kernel>(fr: &Frame<K>, f: &Chain<'_>, g: &Chain<'_>, dlo: Point, dhi: Point) -> Option<Hit> {
     let k = fr.k;
     for i in f.lo..=f.hi {
         let z = f.at(i);
         if fr.in_arc(z, dlo, dhi) {
-            let (w1, w2) = edge_right_of(fr, g, z);
+            let e = edge_right_of(fr, g, z);
             // z on or above g (not strictly on A's side of the edge's line).
-            if k.orient(w1, w2, z) != Ccw {
-                return true;
+            if k.orient(g.at(e), g.at(e + 1), z) != Ccw {
+                return Some(Hit::F { z: i, e });
             }
         }
     }
     for j in g.lo..=g.hi {
         let w = g.at(j);
         if fr.in_arc(w, dlo, dhi) {
-            let (v1, v2) = edge_right_of(fr, f, w);
+            let e = edge_right_of(fr, f, w);
             // w on or below f (on A's side of the edge's line, or on it).
-            if k.orient(v1, v2, w) != Cw {
-                return true;
+            if k.orient(f.at(e), f.at(e + 1), w) != Cw {
+                return Some(Hit::G { w: j });
             }
         }
     }
-    false
+    None
 }
 
 #[cfg(test)]

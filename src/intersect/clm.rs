@@ -32,6 +32,25 @@
 //! r = Θ(√n). The constant c = [`Clm::SAMPLE_FACTOR`] was chosen by measurement
 //! (docs/sublinear.md, `benches/clm.rs`).
 //!
+//! # Certificate
+//! The certified call records which LP decided and every separating line it found
+//! (nothing in the plain call: the recording is chosen at compile time).
+//! * **Disjoint.** Each LP line touches an input point of each set; if both are
+//!   extreme in their whole polygons (each neighbour checked, four predicates), the
+//!   line supports both polygons and an edge at its tangent vertices separates. The
+//!   lines are tried from the last; the chain LPs' lines almost always qualify.
+//! * **Intersecting.** The LP reports a witness of intersecting hulls (at most nine
+//!   points: the violating point, the one or two points that bounded its 1D problem,
+//!   the previous optimum's tangent points, and a₀, b₀ and the bounding pair, which
+//!   restrict separators to the LP's half-circle of directions). A point of one set in
+//!   the hull of the other's is a vertex inside. Else the points the LP examined (a few
+//!   dozen) are searched the same way. Else two of the points form crossing chords,
+//!   resolved by walks along the boundaries started from the sample or chain vertex
+//!   nearest the chord's line, so each walk stays within one gap between those
+//!   vertices: expected O(n/r + r), i.e. O(√n) like the test itself, but far more than
+//!   an intersecting query that stopped after a few dozen points.
+//! * Otherwise (an inconsistent kernel) only the answer, completed on the walked arrays.
+//!
 //! # Complexity
 //! Expected O((c + 1/c)·(√n + √m)) for polygons of n and m vertices, over the random
 //! samples and the LP's random orders, for **every** input (no assumption on the
@@ -54,10 +73,14 @@
 //! [`Linear`](super::Linear) on every input. Under [`Fast`](crate::Fast) chain walks are
 //! capped at n steps, so the test always terminates.
 
-use super::Probe;
+use super::certificate::{
+    Radon, WitnessScratch, WitnessVertex, examined_witness, from_support, resolve_linked_chords,
+    supports_left, supports_right, witness_certificate,
+};
 use super::linked::LinkedIntersection;
+use super::{Certificate, Derivation, Probe, Which};
 use crate::kernel::{Kernel, Orientation, Point};
-use crate::lp::{ArenaPoints, LpWorkspace, Separation, separating_line};
+use crate::lp::{ArenaPoints, Bitangent, LpWorkspace, Separation, WitnessPoint, separating_line};
 use crate::polygon::{LinkedPolygon, SampleWorkspace};
 use rand::Rng;
 
@@ -106,6 +129,39 @@ pub struct ClmWorkspace {
     chain2: Vec<u32>,
     lp: LpWorkspace,
     walked: u64,
+    /// What the last certified query found, for its certificate.
+    trace: Trace,
+    scratch: WitnessScratch,
+}
+
+/// The point sets an LP of [`clm`] ran on: samples, first chains, second chains.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Set {
+    Rp,
+    Rq,
+    Cp,
+    Cq,
+    Chain,
+    Chain2,
+}
+
+impl Set {
+    /// The polygon the set's positions belong to.
+    fn of(self) -> Which {
+        match self {
+            Set::Rp | Set::Cp | Set::Chain => Which::P,
+            Set::Rq | Set::Cq | Set::Chain2 => Which::Q,
+        }
+    }
+}
+
+/// What a certified query recorded: the LP that found intersecting hulls (its
+/// witness is in the LP workspace), or every separating line with the sets it
+/// separates (A on its right, B on its left).
+#[derive(Clone, Debug, Default)]
+struct Trace {
+    meet: Option<(Set, Set)>,
+    lines: Vec<(Bitangent, Set, Set)>,
 }
 
 impl ClmWorkspace {
@@ -138,6 +194,19 @@ impl LinkedIntersection for Clm {
     ) -> bool {
         ClmWithFactor(Clm::SAMPLE_FACTOR).intersects_in(kernel, p, q, rng, workspace, probe)
     }
+
+    #[inline]
+    fn derive_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
+        &self,
+        kernel: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        rng: &mut R,
+        workspace: &mut ClmWorkspace,
+        probe: &mut P,
+    ) -> Derivation {
+        ClmWithFactor(Clm::SAMPLE_FACTOR).derive_in(kernel, p, q, rng, workspace, probe)
+    }
 }
 
 impl LinkedIntersection for ClmWithFactor {
@@ -154,12 +223,104 @@ impl LinkedIntersection for ClmWithFactor {
         probe: &mut P,
     ) -> bool {
         let work_before = ws.lp.work + ws.walked;
-        let answer = clm(k, self.0, p, q, rng, ws);
+        let answer = clm::<K, R, false>(k, self.0, p, q, rng, ws);
         for _ in work_before..ws.lp.work + ws.walked {
             probe.iteration();
         }
         answer
     }
+
+    /// See the module docs' "Certificate" section.
+    fn derive_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
+        &self,
+        k: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        rng: &mut R,
+        ws: &mut ClmWorkspace,
+        probe: &mut P,
+    ) -> Derivation {
+        let work_before = ws.lp.work + ws.walked;
+        let answer = clm::<K, R, true>(k, self.0, p, q, rng, ws);
+        for _ in work_before..ws.lp.work + ws.walked {
+            probe.iteration();
+        }
+        certify(k, answer, p, q, ws).map_or(Derivation::Answer(answer), Derivation::Certified)
+    }
+}
+
+/// The certificate of a certified query from its trace (module docs), or `None` when
+/// the trace gives none in O(1) (then the caller walks the polygons).
+fn certify<K: Kernel>(
+    k: K,
+    answer: bool,
+    p: &LinkedPolygon,
+    q: &LinkedPolygon,
+    ws: &mut ClmWorkspace,
+) -> Option<Certificate> {
+    let mut scratch = std::mem::take(&mut ws.scratch);
+    let certificate = certify_with(k, answer, p, q, ws, &mut scratch);
+    ws.scratch = scratch;
+    certificate
+}
+
+fn certify_with<K: Kernel>(
+    k: K,
+    answer: bool,
+    p: &LinkedPolygon,
+    q: &LinkedPolygon,
+    ws: &ClmWorkspace,
+    scratch: &mut WitnessScratch,
+) -> Option<Certificate> {
+    let set = |s: Set| -> (&[u32], &LinkedPolygon) {
+        let positions = match s {
+            Set::Rp => &ws.rp,
+            Set::Rq => &ws.rq,
+            Set::Cp => &ws.cp,
+            Set::Cq => &ws.cq,
+            Set::Chain => &ws.chain,
+            Set::Chain2 => &ws.chain2,
+        };
+        (positions, if s.of() == Which::P { p } else { q })
+    };
+    if answer {
+        // The LP's witness; else a vertex inside among the points it examined; else its
+        // two crossing chords, resolved by walks from the nearest sample or chain vertex.
+        let (a, b) = ws.trace.meet?;
+        let (a_pos, b_pos) = (set(a).0, set(b).0);
+        let vertex = |w: WitnessPoint| {
+            let (s, positions) = if w.in_b { (b, b_pos) } else { (a, a_pos) };
+            WitnessVertex {
+                point: w.point,
+                of: s.of(),
+                pos: w.index.map(|i| positions[i] as usize),
+            }
+        };
+        let (pc, qc) = match witness_certificate(k, ws.lp.witness().map(vertex)) {
+            Radon::Inside(c) => return Some(c),
+            Radon::Chords(pc, qc) => (pc, qc),
+            Radon::Nothing => return None,
+        };
+        if let Some(c) = examined_witness(k, ws.lp.examined().map(vertex), scratch) {
+            return Some(c);
+        }
+        let (p_starts, q_starts) = if a.of() == Which::P {
+            (a_pos, b_pos)
+        } else {
+            (b_pos, a_pos)
+        };
+        return resolve_linked_chords(k, p, (pc[0]?, pc[1]?), p_starts, q, (qc[0]?, qc[1]?), q_starts);
+    }
+    // The lines whose tangent vertices are extreme in the whole polygons separate them.
+    ws.trace.lines.iter().rev().find_map(|&(t, a, b)| {
+        let ((a_pos, a_poly), (b_pos, b_poly)) = (set(a), set(b));
+        let (ta, tb) = (a_pos[t.a] as usize, b_pos[t.b] as usize);
+        let line = (t.start, t.end);
+        if !supports_right(k, line, a_poly, ta) || !supports_left(k, line, b_poly, tb) {
+            return None;
+        }
+        from_support(k, line, a_poly, ta, b_poly, tb).map(|c| c.relative_to(a.of()))
+    })
 }
 
 /// Appends `r` random vertex positions of `poly` to `out`: all of them when r ≥ n; r
@@ -189,7 +350,8 @@ fn sample_size(c: f64, n: usize) -> usize {
     if r.is_finite() && r >= 3.0 { r as usize } else { 3 }
 }
 
-fn clm<K: Kernel, R: Rng + ?Sized>(
+/// The test; with `CERT` it also records in `ws.trace` what its certificate needs.
+fn clm<K: Kernel, R: Rng + ?Sized, const CERT: bool>(
     k: K,
     c: f64,
     p: &LinkedPolygon,
@@ -197,6 +359,11 @@ fn clm<K: Kernel, R: Rng + ?Sized>(
     rng: &mut R,
     ws: &mut ClmWorkspace,
 ) -> bool {
+    if CERT {
+        ws.trace.meet = None;
+        ws.trace.lines.clear();
+    }
+    ws.lp.record_witness(CERT);
     ws.rp.clear();
     ws.rq.clear();
     sample(p, sample_size(c, p.len()), rng, &mut ws.sample, &mut ws.rp);
@@ -213,8 +380,16 @@ fn clm<K: Kernel, R: Rng + ?Sized>(
         Ok(Separation::Separated(t)) => t,
         // Samples are never empty (polygons have ≥ 3 vertices), so only a real
         // intersection of the sample hulls gets here.
-        _ => return true,
+        _ => {
+            if CERT {
+                ws.trace.meet = Some((Set::Rp, Set::Rq));
+            }
+            return true;
+        }
     };
+    if CERT {
+        ws.trace.lines.push((t, Set::Rp, Set::Rq));
+    }
     if ws.rp.len() == p.len() && ws.rq.len() == q.len() {
         return false; // the LP saw both polygons whole
     }
@@ -238,6 +413,7 @@ fn clm<K: Kernel, R: Rng + ?Sized>(
         chain2,
         lp,
         walked,
+        trace,
         ..
     } = ws;
     // P against CH(C_Q) and Q against CH(C_P): first each sample against the other's
@@ -257,6 +433,17 @@ fn clm<K: Kernel, R: Rng + ?Sized>(
             _ => None,
         }
     });
+    if CERT {
+        // The LP workspace keeps the witness of the last LP that found intersecting
+        // hulls, so that LP's sets are recorded.
+        let sets = [(Set::Rp, Set::Cq), (Set::Rq, Set::Cp)];
+        for (line, (a, b)) in lines.iter().zip(sets) {
+            match line {
+                Some(t) => trace.lines.push((*t, a, b)),
+                None => trace.meet = Some((a, b)),
+            }
+        }
+    }
     let [Some(lp_line), Some(lq_line)] = lines else {
         return true;
     };
@@ -285,12 +472,13 @@ fn clm<K: Kernel, R: Rng + ?Sized>(
         chain2,
     );
     *walked += (chain.len() + chain2.len()) as u64;
-    let meets = |near: &[u32],
-                 x: &LinkedPolygon,
-                 far: &[u32],
-                 y: &LinkedPolygon,
-                 rng: &mut R,
-                 lp: &mut LpWorkspace| {
+    let mut meets = |near: &[u32],
+                     x: &LinkedPolygon,
+                     far: &[u32],
+                     y: &LinkedPolygon,
+                     rng: &mut R,
+                     lp: &mut LpWorkspace,
+                     sets: (Set, Set)| {
         let near = ArenaPoints {
             polygon: x,
             positions: near,
@@ -299,12 +487,23 @@ fn clm<K: Kernel, R: Rng + ?Sized>(
             polygon: y,
             positions: far,
         };
-        !matches!(
-            separating_line(k, &near, &far, rng, lp),
-            Ok(Separation::Separated(_))
-        )
+        match separating_line(k, &near, &far, rng, lp) {
+            Ok(Separation::Separated(t)) => {
+                if CERT {
+                    trace.lines.push((t, sets.0, sets.1));
+                }
+                false
+            }
+            _ => {
+                if CERT {
+                    trace.meet = Some(sets);
+                }
+                true
+            }
+        }
     };
-    (p_open && meets(chain, p, cq, q, rng, lp)) || (q_open && meets(chain2, q, cp, p, rng, lp))
+    (p_open && meets(chain, p, cq, q, rng, lp, (Set::Chain, Set::Cq)))
+        || (q_open && meets(chain2, q, cp, p, rng, lp, (Set::Chain2, Set::Cp)))
 }
 
 /// One chain walk (see [`far_chains`]): from the tangent vertex at position `t` of

@@ -44,6 +44,23 @@
 //!    edge at that height (found by binary search) or one comparison of x
 //!    coordinates when both chains have a vertex there.
 //!
+//! # Certificate
+//! * **Disjoint.** The search that failed found g = x_R − x_L negative at its maximum
+//!   y*, at a tested vertex w with the other chain's edge at that height. A supporting
+//!   slope σ common to both chains at y* (a supergradient of the concave g is 0) gives
+//!   parallel supporting lines of the two polygons with a gap, so one of the edges at w
+//!   and at the other chain's vertices there separates (the faces' argument in
+//!   [`certificate`](super::certificate)); at an end of the common y-interval the
+//!   argument is the same with a one-sided σ, and if the y-ranges are disjoint the
+//!   faces are the higher polygon's bottom and the lower one's top. The edge of the
+//!   other chain at y* is tried first. O(1) beyond the test, plus one binary search on
+//!   heights for w's position. Under the exact kernel this always succeeds (the tests
+//!   check it), which makes it the completing search of every algorithm's "disjoint".
+//! * **Intersecting.** Both searches met at a vertex w inside the other polygon's
+//!   region on one side; if w also lies inside the other side's chain at its height
+//!   (one binary search on heights and one `orient`), w is a vertex inside. Otherwise
+//!   only the answer, completed with [`Barba`](super::Barba)'s witness.
+//!
 //! # Complexity
 //! O(log n + log m) time, O(1) memory, for polygons of n and m vertices, on every
 //! input: four binary searches for the extreme vertices, two chain-pair searches
@@ -64,7 +81,8 @@
 //! searches may misjudge near-degenerate input but always terminate: every loop
 //! shrinks an index range.
 
-use super::{ArrayIntersection, Probe};
+use super::certificate::{Boundary, from_faces, separates};
+use super::{ArrayIntersection, Certificate, Derivation, Probe, Which};
 use crate::kernel::{Kernel, Orientation, Point};
 use crate::polygon::ConvexPolygon;
 
@@ -92,32 +110,135 @@ impl ArrayIntersection for Dobkin {
         q: &ConvexPolygon,
         probe: &mut P,
     ) -> bool {
+        run(k, p.vertices(), q.vertices(), probe, |outcome, _| {
+            outcome == Outcome::Meet
+        })
+    }
+
+    /// See the module docs' "Certificate" section.
+    fn derive_probed<K: Kernel, P: Probe>(
+        &self,
+        k: K,
+        p: &ConvexPolygon,
+        q: &ConvexPolygon,
+        probe: &mut P,
+    ) -> Derivation {
         let (pv, qv) = (p.vertices(), q.vertices());
-        let [p_top, p_bottom, q_top, q_bottom] = extremes(k, pv, qv);
-        let (pl, pr) = chains(pv, p_top, p_bottom);
-        let (ql, qr) = chains(qv, q_top, q_bottom);
-        // Both chain pairs advance in lockstep: their memory accesses are
-        // independent, so the processor overlaps the cache misses on large arrays.
-        let mut a = PairSearch::new(pv, pl, qv, qr);
-        let mut b = PairSearch::new(qv, ql, pv, pr);
-        let (mut ra, mut rb) = (None, None);
-        loop {
-            if ra.is_none() {
-                ra = a.step(k, probe);
-                if ra == Some(false) {
-                    return false;
-                }
-            }
-            if rb.is_none() {
-                rb = b.step(k, probe);
-                if rb == Some(false) {
-                    return false;
-                }
-            }
-            if let (Some(x), Some(y)) = (ra, rb) {
-                return x && y;
+        run(k, pv, qv, probe, |outcome, searches| {
+            let found = match outcome {
+                Outcome::Apart(s) => separation(k, searches, s),
+                Outcome::Meet => (0..2).find_map(|s| match searches[s].verdict() {
+                    Some(Verdict::Meet(t)) => vertex_inside(k, searches, s, t),
+                    _ => None,
+                }),
+            };
+            found.map_or(
+                Derivation::Answer(outcome == Outcome::Meet),
+                Derivation::Certified,
+            )
+        })
+    }
+}
+
+/// How both chain-pair searches ended (each search's `verdict` says why).
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Outcome {
+    /// Search `s` found its regions disjoint: the polygons are disjoint.
+    Apart(usize),
+    /// Both searches met.
+    Meet,
+}
+
+/// The height test where search `s` met tested a vertex w inside one of the other
+/// polygon's chains; if w also lies inside that polygon's opposite chain at its height
+/// (found by a binary search on heights, then one `orient`), w is a vertex inside.
+fn vertex_inside<K: Kernel>(
+    k: K,
+    searches: &[PairSearch<'_>; 2],
+    s: usize,
+    t: Tested,
+) -> Option<Certificate> {
+    let other = &searches[1 - s];
+    let w = t.w.p;
+    let (inside, of) = match t.w.side {
+        // w is a vertex of this search's left-chain polygon A, inside R_B at its height:
+        // it is in B iff it is also inside L_B, the other search's left chain.
+        Side::Left => {
+            let (l, len) = (|i| other.lp(i), other.l.len);
+            let within = l(len - 1).y <= w.y && w.y <= l(0).y;
+            (within && inside_left_chain(k, &l, 0, len - 1, w).0, SEARCH_A[s])
+        }
+        // w is a vertex of B, inside L_A: it is in A iff also inside R_A.
+        Side::Right => {
+            let (r, len) = (|j| other.rp(j), other.r.len);
+            let within = r(0).y <= w.y && w.y <= r(len - 1).y;
+            (
+                within && inside_right_chain(k, &r, 0, len - 1, w).0,
+                SEARCH_A[s].other(),
+            )
+        }
+    };
+    inside.then_some(Certificate::VertexInside { of, point: w })
+}
+
+/// The polygon that owns the left chain of each chain-pair search (the other owns the
+/// right chain): search 0 is L_P against R_Q, search 1 is L_Q against R_P.
+const SEARCH_A: [Which; 2] = [Which::P, Which::Q];
+
+/// Runs both chain-pair searches until one finds its regions disjoint (the polygons
+/// are disjoint) or both meet.
+/// Then hands the outcome and the searches to `then` (so that they stay on this frame).
+#[inline]
+fn run<K: Kernel, P: Probe, T>(
+    k: K,
+    pv: &[Point],
+    qv: &[Point],
+    probe: &mut P,
+    then: impl FnOnce(Outcome, &[PairSearch<'_>; 2]) -> T,
+) -> T {
+    let [p_top, p_bottom, q_top, q_bottom] = extremes(k, pv, qv);
+    let (pl, pr) = chains(pv, p_top, p_bottom);
+    let (ql, qr) = chains(qv, q_top, q_bottom);
+    // Both chain pairs advance in lockstep: their memory accesses are
+    // independent, so the processor overlaps the cache misses on large arrays.
+    let mut a = PairSearch::new(pv, pl, qv, qr);
+    let mut b = PairSearch::new(qv, ql, pv, pr);
+    let (mut ra, mut rb) = (None, None);
+    let outcome = loop {
+        if ra.is_none() {
+            ra = a.step(k, probe);
+            if ra == Some(false) {
+                break Outcome::Apart(0);
             }
         }
+        if rb.is_none() {
+            rb = b.step(k, probe);
+            if rb == Some(false) {
+                break Outcome::Apart(1);
+            }
+        }
+        if ra.is_some() && rb.is_some() {
+            break Outcome::Meet;
+        }
+    };
+    then(outcome, &[a, b])
+}
+
+/// A separating edge of two polygons found disjoint by Dobkin's test, or `None` when
+/// the test finds them intersecting: [`Barba`](super::Barba)'s certified call falls
+/// back on this when its last separating line does not lift to the whole polygons.
+pub(crate) fn separating_certificate<K: Kernel>(k: K, pv: &[Point], qv: &[Point]) -> Option<Certificate> {
+    run(k, pv, qv, &mut (), |outcome, searches| match outcome {
+        Outcome::Apart(s) => separation(k, searches, s),
+        Outcome::Meet => None,
+    })
+}
+
+/// The separating edge of search `s`, which found its regions disjoint.
+fn separation<K: Kernel>(k: K, searches: &[PairSearch<'_>; 2], s: usize) -> Option<Certificate> {
+    match searches[s].verdict() {
+        Some(Verdict::Apart(why)) => searches[s].separation(k, why).map(|c| c.relative_to(SEARCH_A[s])),
+        _ => None,
     }
 }
 
@@ -225,10 +346,45 @@ fn extremes<K: Kernel>(k: K, p: &[Point], q: &[Point]) -> [usize; 4] {
 }
 
 /// Which chain a vertex bounding the y-interval belongs to.
-#[derive(Clone, Copy)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Side {
     Left,
     Right,
+}
+
+/// A vertex bounding the common y-interval: its chain and its point (its position is
+/// found again by [`PairSearch::position`] when a certificate needs it).
+#[derive(Clone, Copy, Debug)]
+struct Bound {
+    side: Side,
+    p: Point,
+}
+
+/// A height test at the bounding vertex `w`: `other` is the position in the other chain
+/// of the vertex at or just below (right chain) or above (left chain) that height, the
+/// start of the other chain's edge there.
+#[derive(Clone, Copy, Debug)]
+struct Tested {
+    w: Bound,
+    other: usize,
+}
+
+/// Why a chain-pair search found its two regions disjoint.
+#[derive(Clone, Copy, Debug)]
+enum Apart {
+    /// The y-ranges are disjoint: `lo` is the higher bottom, `hi` the lower top.
+    Heights { lo: Bound, hi: Bound },
+    /// g < 0 at its maximum, the height of this test (or of one of these two, where g
+    /// is linear on the interval).
+    At(Tested, Option<Tested>),
+}
+
+/// A decided chain-pair search.
+#[derive(Clone, Copy, Debug)]
+enum Verdict {
+    /// The regions meet: this test found x_L ≤ x_R.
+    Meet(Tested),
+    Apart(Apart),
 }
 
 /// The search of step 4 of the module docs: whether the region right of left chain
@@ -244,9 +400,25 @@ struct PairSearch<'a> {
     i1: usize,
     j0: usize,
     j1: usize,
-    /// The vertices whose heights bound the common y-interval I, and their chains.
-    lo: (Side, Point),
-    hi: (Side, Point),
+    /// The vertices whose heights bound the common y-interval I.
+    lo: Bound,
+    hi: Bound,
+    /// Which height test decided the search (read back by [`PairSearch::verdict`]).
+    decided: Decided,
+}
+
+/// Which test decided a chain-pair search: each test's answer and the position it
+/// found in the other chain.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Decided {
+    Not,
+    /// The y-ranges are disjoint.
+    Heights,
+    /// The test at `lo`, or at `hi`.
+    Lo(bool, usize),
+    Hi(bool, usize),
+    /// g linear on I: the test at `lo`, then (if it failed) the one at `hi`.
+    Both((bool, usize), Option<(bool, usize)>),
 }
 
 impl<'a> PairSearch<'a> {
@@ -254,15 +426,16 @@ impl<'a> PairSearch<'a> {
         let (i0, i1, j0, j1) = (0, l.len - 1, 0, r.len - 1);
         let (lt, lb) = (at(lv, l, i0), at(lv, l, i1));
         let (rb, rt) = (at(rv, r, j0), at(rv, r, j1));
+        let bound = |side, p| Bound { side, p };
         let lo = if lb.y >= rb.y {
-            (Side::Left, lb)
+            bound(Side::Left, lb)
         } else {
-            (Side::Right, rb)
+            bound(Side::Right, rb)
         };
         let hi = if lt.y <= rt.y {
-            (Side::Left, lt)
+            bound(Side::Left, lt)
         } else {
-            (Side::Right, rt)
+            bound(Side::Right, rt)
         };
         PairSearch {
             lv,
@@ -275,6 +448,7 @@ impl<'a> PairSearch<'a> {
             j1,
             lo,
             hi,
+            decided: Decided::Not,
         }
     }
 
@@ -288,78 +462,247 @@ impl<'a> PairSearch<'a> {
         at(self.rv, self.r, j)
     }
 
-    /// Is `x_L ≤ x_R` at the height of the bounding vertex `w`?
-    fn test<K: Kernel>(&self, k: K, (side, w): (Side, Point)) -> bool {
-        match side {
-            Side::Left => inside_right_chain(k, &|j| self.rp(j), self.j0, self.j1, w),
-            Side::Right => inside_left_chain(k, &|i| self.lp(i), self.i0, self.i1, w),
+    /// Is `x_L ≤ x_R` at the height of the bounding vertex `w`? With the position in
+    /// the other chain of the vertex at or next to that height.
+    #[inline]
+    fn test<K: Kernel>(&self, k: K, w: Bound) -> (bool, usize) {
+        match w.side {
+            Side::Left => inside_right_chain(k, &|j| self.rp(j), self.j0, self.j1, w.p),
+            Side::Right => inside_left_chain(k, &|i| self.lp(i), self.i0, self.i1, w.p),
         }
     }
 
-    /// One pruning iteration; `Some(answer)` once the search is decided.
+    /// Decides the search by one height test, where the maximum of g is.
+    #[inline]
+    fn at_height<K: Kernel>(&mut self, k: K, lo: bool) -> bool {
+        let (inside, other) = self.test(k, if lo { self.lo } else { self.hi });
+        self.decided = if lo {
+            Decided::Lo(inside, other)
+        } else {
+            Decided::Hi(inside, other)
+        };
+        inside
+    }
+
+    /// Why the search was decided (its final state, which deciding leaves unchanged,
+    /// and the deciding tests). For certificates only.
+    fn verdict(&self) -> Option<Verdict> {
+        let at = |w: Bound, (inside, other): (bool, usize)| {
+            let t = Tested { w, other };
+            if inside {
+                Verdict::Meet(t)
+            } else {
+                Verdict::Apart(Apart::At(t, None))
+            }
+        };
+        Some(match self.decided {
+            Decided::Not => return None,
+            Decided::Heights => Verdict::Apart(Apart::Heights {
+                lo: self.lo,
+                hi: self.hi,
+            }),
+            Decided::Lo(inside, other) => at(self.lo, (inside, other)),
+            Decided::Hi(inside, other) => at(self.hi, (inside, other)),
+            Decided::Both(lo, None) => at(self.lo, lo),
+            Decided::Both(lo, Some(hi)) => match (at(self.lo, lo), at(self.hi, hi)) {
+                (Verdict::Apart(Apart::At(a, _)), Verdict::Apart(Apart::At(b, _))) => {
+                    Verdict::Apart(Apart::At(a, Some(b)))
+                }
+                (_, hi) => hi,
+            },
+        })
+    }
+
+    /// Decides the search by the tests at both ends of I (g is linear there).
+    #[inline]
+    fn at_both_ends<K: Kernel>(&mut self, k: K) -> bool {
+        let lo = self.test(k, self.lo);
+        let hi = if lo.0 { None } else { Some(self.test(k, self.hi)) };
+        self.decided = Decided::Both(lo, hi);
+        lo.0 || hi.is_some_and(|h| h.0)
+    }
+
+    /// One pruning iteration; `Some(answer)` once the search is decided (then
+    /// `verdict` says why).
     fn step<K: Kernel, P: Probe>(&mut self, k: K, probe: &mut P) -> Option<bool> {
-        let (lo, hi) = (self.lo, self.hi);
-        if lo.1.y > hi.1.y {
+        // Only the heights are read on the way: copying the bounds costs more.
+        let (lo_y, hi_y) = (self.lo.p.y, self.hi.p.y);
+        if lo_y > hi_y {
+            self.decided = Decided::Heights;
             return Some(false);
         }
-        if lo.1.y == hi.1.y {
-            return Some(self.test(k, lo));
+        if lo_y == hi_y {
+            return Some(self.at_height(k, true));
         }
         let (le, re) = (self.i1 - self.i0, self.j1 - self.j0);
         // Both chains linear on I (or, with an inconsistent kernel, a chain that no
         // longer covers I): g is linear, test both ends.
         if (le <= 1 && re <= 1) || le == 0 || re == 0 {
-            return Some(self.test(k, lo) || self.test(k, hi));
+            return Some(self.at_both_ends(k));
         }
         probe.iteration();
         let ke = self.i0 + le / 2; // e = (lp(ke), lp(ke + 1)), top to bottom
         let kf = self.j0 + re / 2; // f = (rp(kf), rp(kf + 1)), bottom to top
         let (e_top, e_bot) = (self.lp(ke), self.lp(ke + 1));
         let (f_bot, f_top) = (self.rp(kf), self.rp(kf + 1));
+        let left = |p| Bound { side: Side::Left, p };
+        let right = |p| Bound { side: Side::Right, p };
         if k.cross(f_bot, f_top, e_bot, e_top) != Orientation::Cw {
             // s_R ≥ s_L: g is non-decreasing below min(top(e), top(f)).
             if e_top.y <= f_top.y {
-                if e_top.y >= hi.1.y {
-                    return Some(self.test(k, hi));
+                if e_top.y >= hi_y {
+                    return Some(self.at_height(k, false));
                 }
                 self.i1 = ke;
-                if e_top.y > lo.1.y {
-                    self.lo = (Side::Left, e_top);
+                if e_top.y > lo_y {
+                    self.lo = left(e_top);
                 }
             } else {
-                if f_top.y >= hi.1.y {
-                    return Some(self.test(k, hi));
+                if f_top.y >= hi_y {
+                    return Some(self.at_height(k, false));
                 }
                 self.j0 = kf + 1;
-                if f_top.y > lo.1.y {
-                    self.lo = (Side::Right, f_top);
+                if f_top.y > lo_y {
+                    self.lo = right(f_top);
                 }
             }
         } else if e_bot.y >= f_bot.y {
             // s_R < s_L: g is decreasing above max(bottom(e), bottom(f)).
-            if e_bot.y <= lo.1.y {
-                return Some(self.test(k, lo));
+            if e_bot.y <= lo_y {
+                return Some(self.at_height(k, true));
             }
             self.i0 = ke + 1;
-            if e_bot.y < hi.1.y {
-                self.hi = (Side::Left, e_bot);
+            if e_bot.y < hi_y {
+                self.hi = left(e_bot);
             }
         } else {
-            if f_bot.y <= lo.1.y {
-                return Some(self.test(k, lo));
+            if f_bot.y <= lo_y {
+                return Some(self.at_height(k, true));
             }
             self.j1 = kf;
-            if f_bot.y < hi.1.y {
-                self.hi = (Side::Right, f_bot);
+            if f_bot.y < hi_y {
+                self.hi = right(f_bot);
             }
         }
         None
     }
+
+    /// The position of vertex `p` in its chain (chains are strictly monotone in y):
+    /// a binary search on heights, for certificates only.
+    fn position(&self, b: Bound) -> usize {
+        match b.side {
+            Side::Left => first(self.l.len, |i| self.lp(i).y > b.p.y),
+            Side::Right => first(self.r.len, |j| self.rp(j).y < b.p.y),
+        }
+    }
+
+    /// The array index of a chain position.
+    #[inline]
+    fn index(&self, side: Side, pos: usize) -> usize {
+        let (v, c) = match side {
+            Side::Left => (self.lv, self.l),
+            Side::Right => (self.rv, self.r),
+        };
+        (c.start + pos) % v.len()
+    }
+
+    /// A separating edge of the two polygons once this search found its regions
+    /// disjoint, named with the left chain's polygon as P (module docs, "Certificate").
+    fn separation<K: Kernel>(&self, k: K, why: Apart) -> Option<Certificate> {
+        let (a, b) = (self.lv, self.rv);
+        match why {
+            Apart::Heights { lo, hi } => {
+                // The higher polygon's bottom and the lower one's top, each with the other
+                // end of a horizontal edge there.
+                let face = |bound: Bound, top: bool| {
+                    let v = if bound.side == Side::Left { a } else { b };
+                    let i = self.index(bound.side, self.position(bound));
+                    // Bottom-left's horizontal neighbour follows it, top-left's precedes it;
+                    // on the right chain, bottom-right's precedes it, top-right's follows.
+                    let nb = match (bound.side, top) {
+                        (Side::Left, false) | (Side::Right, true) => v.next(i),
+                        _ => v.prev(i),
+                    };
+                    (bound.side, [i, nb], if v[nb].y == v[i].y { 2 } else { 1 })
+                };
+                let (f1, f2) = (face(lo, false), face(hi, true));
+                let (fa, fb) = if f1.0 == Side::Left { (f1, f2) } else { (f2, f1) };
+                from_faces(k, a, &fa.1[..fa.2], b, &fb.1[..fb.2])
+            }
+            Apart::At(t, other) => self
+                .separation_at(k, t)
+                .or_else(|| other.and_then(|t| self.separation_at(k, t))),
+        }
+    }
+
+    /// Candidates at the height of a failed test where g is maximal: the tested vertex
+    /// and the other chain's edge there (then their neighbours).
+    fn separation_at<K: Kernel>(&self, k: K, t: Tested) -> Option<Certificate> {
+        let (a, b) = (self.lv, self.rv);
+        let w = self.index(t.w.side, self.position(t.w));
+        let (other_side, other_len) = match t.w.side {
+            Side::Left => (Side::Right, self.r.len),
+            Side::Right => (Side::Left, self.l.len),
+        };
+        let e0 = self.index(other_side, t.other);
+        let mut edge = [e0, e0];
+        let mut len = 1;
+        if t.other + 1 < other_len {
+            edge[1] = self.index(other_side, t.other + 1);
+            len = 2;
+        }
+        let (wv, ev) = if t.w.side == Side::Left { (a, b) } else { (b, a) };
+        let wide_w = [w, wv.prev(w), wv.next(w)];
+        let wide_e = [ev.prev(edge[0]), edge[0], edge[len - 1], ev.next(edge[len - 1])];
+        // Where g is maximal inside I the other chain's edge there is the separating
+        // edge (the slopes bracket it): try it first.
+        if len == 2 && separates(k, ev[edge[0]], ev[edge[1]], wv, w) {
+            let of = if t.w.side == Side::Left {
+                Which::Q
+            } else {
+                Which::P
+            };
+            return Some(Certificate::Separated {
+                of,
+                from: ev[edge[0]],
+                to: ev[edge[1]],
+            });
+        }
+        let found = |fw: &[usize], fe: &[usize]| {
+            if t.w.side == Side::Left {
+                from_faces(k, a, fw, b, fe)
+            } else {
+                from_faces(k, b, fw, a, fe).map(Certificate::swapped)
+            }
+        };
+        found(&[w], &edge[..len]).or_else(|| found(&wide_w, &wide_e))
+    }
+}
+
+/// The first position in `0..len` (the last if none) where `before` turns false;
+/// `before` must be true on a prefix and false after it.
+fn first(len: usize, before: impl Fn(usize) -> bool) -> usize {
+    let (mut lo, mut hi) = (0, len - 1);
+    while lo < hi {
+        let mid = lo + (hi - lo) / 2;
+        if before(mid) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    lo
 }
 
 /// Whether `w` lies on or left of the ascending right chain (positions `j0..=j1`) at
-/// the height of `w`.
-fn inside_right_chain<K: Kernel>(k: K, rp: &impl Fn(usize) -> Point, j0: usize, j1: usize, w: Point) -> bool {
+/// the height of `w`, and the position of the chain's vertex at or just below it.
+fn inside_right_chain<K: Kernel>(
+    k: K,
+    rp: &impl Fn(usize) -> Point,
+    j0: usize,
+    j1: usize,
+    w: Point,
+) -> (bool, usize) {
     // Last position with y ≤ w.y (clamped to the range).
     let (mut lo, mut hi) = (j0, j1);
     while lo < hi {
@@ -372,14 +715,20 @@ fn inside_right_chain<K: Kernel>(k: K, rp: &impl Fn(usize) -> Point, j0: usize, 
     }
     let a = rp(lo);
     if a.y == w.y || lo == j1 {
-        return w.x <= a.x;
+        return (w.x <= a.x, lo);
     }
-    k.orient(a, rp(lo + 1), w) != Orientation::Cw
+    (k.orient(a, rp(lo + 1), w) != Orientation::Cw, lo)
 }
 
 /// Whether `w` lies on or right of the descending left chain (positions `i0..=i1`)
-/// at the height of `w`.
-fn inside_left_chain<K: Kernel>(k: K, lp: &impl Fn(usize) -> Point, i0: usize, i1: usize, w: Point) -> bool {
+/// at the height of `w`, and the position of the chain's vertex at or just above it.
+fn inside_left_chain<K: Kernel>(
+    k: K,
+    lp: &impl Fn(usize) -> Point,
+    i0: usize,
+    i1: usize,
+    w: Point,
+) -> (bool, usize) {
     // Last position with y ≥ w.y (clamped to the range).
     let (mut lo, mut hi) = (i0, i1);
     while lo < hi {
@@ -392,9 +741,9 @@ fn inside_left_chain<K: Kernel>(k: K, lp: &impl Fn(usize) -> Point, i0: usize, i
     }
     let a = lp(lo);
     if a.y == w.y || lo == i1 {
-        return a.x <= w.x;
+        return (a.x <= w.x, lo);
     }
-    k.orient(a, lp(lo + 1), w) != Orientation::Cw
+    (k.orient(a, lp(lo + 1), w) != Orientation::Cw, lo)
 }
 
 #[cfg(test)]

@@ -16,12 +16,17 @@
 //! containment is intersection. Edges of Q parallel to the current edge are plateaus
 //! of the pointer's objective; stopping at either end gives the same answer.
 //!
+//! # Certificate
+//! A separating edge is the sweep's own answer. For intersecting polygons the sweep
+//! only learns that no edge separates; the certified call takes the witness (a vertex
+//! inside, or two crossing edges) from [`Barba`](super::Barba), O(log n + log m).
+//!
 //! # Precision
 //! Decided by `orient` and `cross` on input points only: exact under [`Exact`](crate::Exact).
 //! Under an inconsistent kernel ([`Fast`](crate::Fast) near degeneracies) each pointer
 //! advance is capped at m steps, so the test always terminates.
 
-use super::{ArrayIntersection, Probe};
+use super::{ArrayIntersection, Certificate, Derivation, Probe, Which};
 use crate::kernel::{Kernel, Orientation, Point, segments_intersect};
 use crate::polygon::ConvexPolygon;
 
@@ -49,18 +54,55 @@ impl ArrayIntersection for Linear {
         q: &ConvexPolygon,
         probe: &mut P,
     ) -> bool {
-        !has_separating_edge(k, p, q, probe) && !has_separating_edge(k, q, p, probe)
+        let (pv, qv) = (p.vertices(), q.vertices());
+        separating_edge(k, pv, qv, probe).is_none() && separating_edge(k, qv, pv, probe).is_none()
+    }
+
+    /// Disjoint: the separating edge the sweep stopped at. Intersecting: the sweep only
+    /// learns that no edge separates, so only the answer (the certified call takes the
+    /// witness from [`Barba`](super::Barba), O(log n + log m), small beside the sweep).
+    fn derive_probed<K: Kernel, P: Probe>(
+        &self,
+        k: K,
+        p: &ConvexPolygon,
+        q: &ConvexPolygon,
+        probe: &mut P,
+    ) -> Derivation {
+        match separating_certificate(k, p.vertices(), q.vertices(), probe) {
+            Some(c) => Derivation::Certified(c),
+            None => Derivation::Answer(true),
+        }
     }
 }
 
-/// True when some edge of `a` has every vertex of `b` strictly on its outer (right) side.
-fn has_separating_edge<K: Kernel, P: Probe>(
+/// The certificate of a separating edge of `pv` (then of `qv`), if the sweep finds one.
+pub(crate) fn separating_certificate<K: Kernel, P: Probe>(
     k: K,
-    a: &ConvexPolygon,
-    b: &ConvexPolygon,
+    pv: &[Point],
+    qv: &[Point],
     probe: &mut P,
-) -> bool {
-    let (av, bv) = (a.vertices(), b.vertices());
+) -> Option<Certificate> {
+    let edge = |v: &[Point], e: usize| (v[e], v[(e + 1) % v.len()]);
+    if let Some(e) = separating_edge(k, pv, qv, probe) {
+        let (from, to) = edge(pv, e);
+        return Some(Certificate::Separated {
+            of: Which::P,
+            from,
+            to,
+        });
+    }
+    separating_edge(k, qv, pv, probe).map(|e| {
+        let (from, to) = edge(qv, e);
+        Certificate::Separated {
+            of: Which::Q,
+            from,
+            to,
+        }
+    })
+}
+
+/// The first edge of `av` that has every vertex of `bv` strictly on its outer (right) side.
+fn separating_edge<K: Kernel, P: Probe>(k: K, av: &[Point], bv: &[Point], probe: &mut P) -> Option<usize> {
     let (n, m) = (av.len(), bv.len());
     // Deepest vertex of b for edge 0: w is deeper than v iff (a1 − a0) × (w − v) > 0.
     let mut j = 0;
@@ -78,10 +120,10 @@ fn has_separating_edge<K: Kernel, P: Probe>(
         }
         probe.iteration();
         if k.orient(s, t, bv[j]) == Orientation::Cw {
-            return true;
+            return Some(e);
         }
     }
-    false
+    None
 }
 
 /// The O(n·m) oracle: the polygons intersect iff two edges meet (closed segments)

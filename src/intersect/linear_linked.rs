@@ -26,9 +26,9 @@
 //! an inconsistent kernel each pointer advance is capped at m steps, so the test always
 //! terminates.
 
-use super::Probe;
 use super::linked::LinkedIntersection;
-use crate::kernel::{Kernel, Orientation};
+use super::{Certificate, Derivation, Probe, Which};
+use crate::kernel::{Kernel, Orientation, Point};
 use crate::polygon::LinkedPolygon;
 use rand::Rng;
 
@@ -61,17 +61,39 @@ impl LinkedIntersection for LinearLinked {
         _workspace: &mut (),
         probe: &mut P,
     ) -> bool {
-        !has_separating_edge(kernel, p, q, probe) && !has_separating_edge(kernel, q, p, probe)
+        separating_edge(kernel, p, q, probe).is_none() && separating_edge(kernel, q, p, probe).is_none()
+    }
+
+    /// A separated pair is certified by the edge the walk found; an intersecting one
+    /// is left to the certified call's completion (the walk saw every edge fail, which
+    /// names no witness).
+    #[inline]
+    fn derive_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
+        &self,
+        kernel: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        _rng: &mut R,
+        _workspace: &mut (),
+        probe: &mut P,
+    ) -> Derivation {
+        for (of, a, b) in [(Which::P, p, q), (Which::Q, q, p)] {
+            if let Some((from, to)) = separating_edge(kernel, a, b, probe) {
+                return Derivation::Certified(Certificate::Separated { of, from, to });
+            }
+        }
+        Derivation::Answer(true)
     }
 }
 
-/// True when some edge of `a` has every vertex of `b` strictly on its outer (right) side.
-fn has_separating_edge<K: Kernel, P: Probe>(
+/// An edge of `a` (counter-clockwise) with every vertex of `b` strictly on its outer
+/// (right) side, if there is one.
+fn separating_edge<K: Kernel, P: Probe>(
     k: K,
     a: &LinkedPolygon,
     b: &LinkedPolygon,
     probe: &mut P,
-) -> bool {
+) -> Option<(Point, Point)> {
     let (n, m) = (a.len(), b.len());
     let (s0, t0) = (a.point_at(0), a.point_at(a.next_at(0)));
     // Deepest vertex of b for edge 0: w is deeper than v iff (t0 − s0) × (w − v) > 0.
@@ -108,11 +130,11 @@ fn has_separating_edge<K: Kernel, P: Probe>(
         }
         probe.iteration();
         if k.orient(s, t, bj) == Orientation::Cw {
-            return true;
+            return Some((s, t));
         }
         (pos, s) = (next, t);
     }
-    false
+    None
 }
 
 #[cfg(test)]
@@ -152,6 +174,14 @@ mod tests {
                                 LinearLinked.intersects(y, x),
                                 want,
                                 "{family:?} {relation:?} n {n}"
+                            );
+                            // Certified: the walk's separating edge, or the completion.
+                            let c = LinearLinked.certified(x, y);
+                            assert_eq!(c.intersects(), want, "{family:?} {relation:?} n {n}");
+                            assert_eq!(
+                                crate::intersect::verify_linked(x, y, &c),
+                                Ok(()),
+                                "{family:?} {relation:?} n {n}: {c:?}"
                             );
                         }
                         // The fast kernel terminates (its answer may differ near ties).

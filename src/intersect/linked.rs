@@ -5,7 +5,8 @@
 //! against (thesis 4.4, Figure 4.8): O(n) for the walk whatever the array algorithm
 //! costs, but with a small constant, so it wins on small polygons.
 
-use super::{ArrayIntersection, Barba, Probe};
+use super::fallback::complete_linked;
+use super::{ArrayIntersection, Barba, Certificate, Derivation, Probe};
 use crate::kernel::{Exact, Kernel, Point};
 use crate::polygon::{ConvexPolygon, LinkedPolygon};
 use rand::Rng;
@@ -99,6 +100,86 @@ pub trait LinkedIntersection {
     fn intersects(&self, p: &LinkedPolygon, q: &LinkedPolygon) -> bool {
         self.intersects_with(Exact, p, q)
     }
+
+    /// The test's run with what it can prove from its own findings: a certificate, or
+    /// only the answer; arguments as [`intersects_in`](Self::intersects_in).
+    fn derive_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
+        &self,
+        kernel: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        rng: &mut R,
+        workspace: &mut Self::Workspace,
+        probe: &mut P,
+    ) -> Derivation;
+
+    /// The answer with a [`Certificate`] that proves it ([`verify_linked`] checks it):
+    /// the test's own ([`derive_in`](Self::derive_in)), completed on the walked arrays
+    /// (O(n + m)) where it gave only the answer; arguments as
+    /// [`intersects_in`](Self::intersects_in). The probe also hears of each fallback.
+    ///
+    /// # Precision
+    /// Under [`Exact`] the certificate always verifies; under an inconsistent kernel it
+    /// may not (see [`ArrayIntersection::certified_probed`]).
+    ///
+    /// [`verify_linked`]: super::verify_linked
+    #[inline]
+    fn certified_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
+        &self,
+        kernel: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        rng: &mut R,
+        workspace: &mut Self::Workspace,
+        probe: &mut P,
+    ) -> Certificate {
+        let derivation = self.derive_in(kernel, p, q, rng, workspace, probe);
+        complete_linked(kernel, p, q, derivation, probe)
+    }
+
+    /// [`certified_in`](Self::certified_in) without a probe.
+    #[inline]
+    fn certified_with_workspace<K: Kernel, R: Rng + ?Sized>(
+        &self,
+        kernel: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        rng: &mut R,
+        workspace: &mut Self::Workspace,
+    ) -> Certificate {
+        self.certified_in(kernel, p, q, rng, workspace, &mut ())
+    }
+
+    /// A one-off certified query: a fresh workspace and a generator seeded from the
+    /// operating system, as [`intersects_with`](Self::intersects_with).
+    fn certified_with<K: Kernel>(&self, kernel: K, p: &LinkedPolygon, q: &LinkedPolygon) -> Certificate {
+        self.certified_in(
+            kernel,
+            p,
+            q,
+            &mut fresh_rng(),
+            &mut Self::Workspace::default(),
+            &mut (),
+        )
+    }
+
+    /// A one-off certified query with a generator seeded with `seed`, as
+    /// [`intersects_seeded`](Self::intersects_seeded).
+    fn certified_seeded<K: Kernel>(
+        &self,
+        kernel: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        seed: u64,
+    ) -> Certificate {
+        let mut rng = SmallRng::seed_from_u64(seed);
+        self.certified_in(kernel, p, q, &mut rng, &mut Self::Workspace::default(), &mut ())
+    }
+
+    /// A one-off certified query with the exact kernel.
+    fn certified(&self, p: &LinkedPolygon, q: &LinkedPolygon) -> Certificate {
+        self.certified_with(Exact, p, q)
+    }
 }
 
 /// Walks both linked lists into sorted arrays (O(n + m)) and runs the array test `A`.
@@ -152,14 +233,54 @@ impl<A: ArrayIntersection> LinkedIntersection for Convert<A> {
         ws: &mut ConvertWorkspace,
         probe: &mut P,
     ) -> bool {
+        self.walked(p, q, ws, |pa, qa| self.0.intersects_probed(kernel, pa, qa, probe))
+    }
+
+    /// The array algorithm's derivation on the walked arrays: coordinates are the
+    /// vertices themselves, so its certificate holds for the linked polygons.
+    fn derive_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
+        &self,
+        kernel: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        _rng: &mut R,
+        ws: &mut ConvertWorkspace,
+        probe: &mut P,
+    ) -> Derivation {
+        self.walked(p, q, ws, |pa, qa| self.0.derive_probed(kernel, pa, qa, probe))
+    }
+
+    /// As the array algorithm's certified call on the walked arrays.
+    fn certified_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
+        &self,
+        kernel: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        _rng: &mut R,
+        ws: &mut ConvertWorkspace,
+        probe: &mut P,
+    ) -> Certificate {
+        self.walked(p, q, ws, |pa, qa| self.0.certified_probed(kernel, pa, qa, probe))
+    }
+}
+
+impl<A: ArrayIntersection> Convert<A> {
+    /// Walks both lists into the workspace's arrays and runs `f` on them.
+    fn walked<T>(
+        &self,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        ws: &mut ConvertWorkspace,
+        f: impl FnOnce(&ConvexPolygon, &ConvexPolygon) -> T,
+    ) -> T {
         walk_into(p, &mut ws.p);
         walk_into(q, &mut ws.q);
         // The linked polygon is strictly convex and counter-clockwise by invariant.
         let pa = ConvexPolygon::from_ccw_unchecked(std::mem::take(&mut ws.p));
         let qa = ConvexPolygon::from_ccw_unchecked(std::mem::take(&mut ws.q));
-        let answer = self.0.intersects_probed(kernel, &pa, &qa, probe);
+        let out = f(&pa, &qa);
         ws.p = pa.into_vertices();
         ws.q = qa.into_vertices();
-        answer
+        out
     }
 }

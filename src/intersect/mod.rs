@@ -24,18 +24,31 @@
 //! order (as the thesis's experiments do) with a generator seeded from the operating
 //! system, or the caller's generator ([`Algorithm::run_rng`]) for reproducible runs.
 
+//! # Certificates
+//! Every test also has a certified call ([`ArrayIntersection::certified_with`],
+//! [`LinkedIntersection::certified_with`], [`Algorithm::certified`]) that returns a
+//! [`Certificate`] of its answer, derived from what the algorithm found
+//! ([`ArrayIntersection::derive_probed`], each algorithm's module docs) and completed
+//! by a slower search where that gives only the answer ([`Fallback`]). [`verify`]
+//! checks any certificate exactly in O(n + m), independently of every algorithm:
+//! run it when in doubt. docs/certificates.md has the details and the measured cost.
+
 mod barba;
+mod certificate;
 mod chazelle_dobkin;
 mod clm;
 mod dobkin;
+mod fallback;
 mod linear;
 mod linear_linked;
 mod linked;
 
 pub use barba::Barba;
+pub use certificate::{Certificate, CertificateError, Derivation, Which, verify, verify_linked};
 pub use chazelle_dobkin::ChazelleDobkin;
 pub use clm::{Clm, ClmWithFactor, ClmWorkspace};
 pub use dobkin::Dobkin;
+pub use fallback::{exact_certificate, proven, proven_linked};
 pub use linear::{Linear, brute_force};
 pub use linear_linked::LinearLinked;
 pub(crate) use linked::fresh_rng;
@@ -52,6 +65,23 @@ use std::str::FromStr;
 pub trait Probe {
     #[inline]
     fn iteration(&mut self) {}
+
+    /// Called when a certified call could not derive its certificate from what the
+    /// algorithm found and completed the answer with a slower search (see
+    /// [`Derivation`]); tests count these.
+    #[inline]
+    fn fallback(&mut self, _kind: Fallback) {}
+}
+
+/// How a certified call completed an answer its algorithm did not certify.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Fallback {
+    /// An O(log n + log m) search that certifies the answer under the exact kernel:
+    /// Dobkin's separation for "disjoint", Barba's witness for "intersecting".
+    Search,
+    /// [`exact_certificate`], O(n + m): the search contradicted the answer, which only
+    /// an inconsistent kernel makes possible.
+    Reference,
 }
 
 impl Probe for () {}
@@ -91,6 +121,54 @@ pub trait ArrayIntersection {
     #[inline]
     fn intersects(&self, p: &ConvexPolygon, q: &ConvexPolygon) -> bool {
         self.intersects_with(Exact, p, q)
+    }
+
+    /// The algorithm's run with what it can prove from its own findings: a certificate,
+    /// or only the answer (docs/certificates.md says which exits give which).
+    fn derive_probed<K: Kernel, P: Probe>(
+        &self,
+        kernel: K,
+        p: &ConvexPolygon,
+        q: &ConvexPolygon,
+        probe: &mut P,
+    ) -> Derivation;
+
+    /// The answer with a [`Certificate`] that proves it: the algorithm's own
+    /// ([`derive_probed`](Self::derive_probed)), completed where it gave only the answer
+    /// ([`Fallback`]). Reports each pruning iteration and each fallback to `probe`. The
+    /// answer is [`Certificate::intersects`], the same as
+    /// [`intersects_probed`](Self::intersects_probed)'s.
+    ///
+    /// # Complexity
+    /// That of the algorithm, plus O(log n + log m) where a derivation needs a search.
+    ///
+    /// # Precision
+    /// Under [`Exact`] the certificate always passes [`verify`]. Under an inconsistent
+    /// kernel ([`Fast`] near degeneracies) it may not; where the completing search
+    /// contradicts the answer, [`exact_certificate`] supplies the certificate (and then
+    /// the certified answer can differ from the plain call's, and be right).
+    #[inline]
+    fn certified_probed<K: Kernel, P: Probe>(
+        &self,
+        kernel: K,
+        p: &ConvexPolygon,
+        q: &ConvexPolygon,
+        probe: &mut P,
+    ) -> Certificate {
+        let derivation = self.derive_probed(kernel, p, q, probe);
+        fallback::complete(kernel, p.vertices(), q.vertices(), derivation, probe)
+    }
+
+    /// [`certified_probed`](Self::certified_probed) without a probe.
+    #[inline]
+    fn certified_with<K: Kernel>(&self, kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Certificate {
+        self.certified_probed(kernel, p, q, &mut ())
+    }
+
+    /// The answer with its certificate, with the exact kernel.
+    #[inline]
+    fn certified(&self, p: &ConvexPolygon, q: &ConvexPolygon) -> Certificate {
+        self.certified_with(Exact, p, q)
     }
 }
 
@@ -208,6 +286,87 @@ impl Algorithm {
     pub fn intersects(self, precision: Precision, p: &ConvexPolygon, q: &ConvexPolygon) -> bool {
         self.run(precision, p, q).0
     }
+
+    /// Runs the certified call of the algorithm with the kernel named by `precision`,
+    /// returning the [`Certificate`] (whose [`intersects`](Certificate::intersects) is the
+    /// answer) and the number of pruning iterations. Linked-polygon tests link the
+    /// inputs as [`Algorithm::run`] does.
+    ///
+    /// ```
+    /// use polysect::{ConvexPolygon, Precision};
+    /// use polysect::intersect::{Algorithm, verify};
+    /// let p = ConvexPolygon::new([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+    /// let q = ConvexPolygon::new([[2.0, 2.0], [3.0, 2.0], [3.0, 3.0]])?;
+    /// for &alg in Algorithm::ALL {
+    ///     let c = alg.certified(Precision::Exact, &p, &q);
+    ///     assert!(c.intersects()); // the shared vertex (2, 2)
+    ///     assert_eq!(verify(&p, &q, &c), Ok(()));
+    /// }
+    /// # Ok::<(), polysect::PolygonError>(())
+    /// ```
+    pub fn run_certified(
+        self,
+        precision: Precision,
+        p: &ConvexPolygon,
+        q: &ConvexPolygon,
+    ) -> (Certificate, u64) {
+        self.run_certified_rng(precision, p, q, &mut fresh_rng())
+    }
+
+    /// [`run_certified`](Self::run_certified) drawing from `rng`, as
+    /// [`run_rng`](Self::run_rng).
+    pub fn run_certified_rng<R: Rng + ?Sized>(
+        self,
+        precision: Precision,
+        p: &ConvexPolygon,
+        q: &ConvexPolygon,
+        rng: &mut R,
+    ) -> (Certificate, u64) {
+        match precision {
+            Precision::Fast => self.run_certified_with_rng(Fast, p, q, rng),
+            Precision::Exact => self.run_certified_with_rng(Exact, p, q, rng),
+        }
+    }
+
+    /// [`run_certified`](Self::run_certified) with a kernel chosen at compile time.
+    pub fn run_certified_with<K: Kernel>(
+        self,
+        k: K,
+        p: &ConvexPolygon,
+        q: &ConvexPolygon,
+    ) -> (Certificate, u64) {
+        self.run_certified_with_rng(k, p, q, &mut fresh_rng())
+    }
+
+    /// [`run_certified_with`](Self::run_certified_with) drawing from `rng`.
+    pub fn run_certified_with_rng<K: Kernel, R: Rng + ?Sized>(
+        self,
+        k: K,
+        p: &ConvexPolygon,
+        q: &ConvexPolygon,
+        rng: &mut R,
+    ) -> (Certificate, u64) {
+        let mut it = Iterations::default();
+        let certificate = match self {
+            Algorithm::Linear => Linear.certified_probed(k, p, q, &mut it),
+            Algorithm::Barba => Barba.certified_probed(k, p, q, &mut it),
+            Algorithm::Dobkin => Dobkin.certified_probed(k, p, q, &mut it),
+            Algorithm::ChazelleDobkin => ChazelleDobkin.certified_probed(k, p, q, &mut it),
+            Algorithm::Clm => run_linked_certified(&Clm, k, p, q, rng, &mut it),
+            Algorithm::Convert => run_linked_certified(&<Convert>::default(), k, p, q, rng, &mut it),
+        };
+        (certificate, it.0)
+    }
+
+    /// The certificate alone, with a kernel chosen at compile time.
+    pub fn certified_with<K: Kernel>(self, k: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Certificate {
+        self.run_certified_with(k, p, q).0
+    }
+
+    /// The certificate alone, with the kernel named by `precision`.
+    pub fn certified(self, precision: Precision, p: &ConvexPolygon, q: &ConvexPolygon) -> Certificate {
+        self.run_certified(precision, p, q).0
+    }
 }
 
 /// Links `p` and `q` in shuffled arena order and runs a linked-polygon test on them.
@@ -222,6 +381,20 @@ fn run_linked<L: LinkedIntersection, K: Kernel, R: Rng + ?Sized, P: Probe>(
     let lp = crate::polygon::LinkedPolygon::from_convex_shuffled(p, rng);
     let lq = crate::polygon::LinkedPolygon::from_convex_shuffled(q, rng);
     alg.intersects_in(k, &lp, &lq, rng, &mut L::Workspace::default(), probe)
+}
+
+/// [`run_linked`] with the certified call.
+fn run_linked_certified<L: LinkedIntersection, K: Kernel, R: Rng + ?Sized, P: Probe>(
+    alg: &L,
+    k: K,
+    p: &ConvexPolygon,
+    q: &ConvexPolygon,
+    rng: &mut R,
+    probe: &mut P,
+) -> Certificate {
+    let lp = crate::polygon::LinkedPolygon::from_convex_shuffled(p, rng);
+    let lq = crate::polygon::LinkedPolygon::from_convex_shuffled(q, rng);
+    alg.certified_in(k, &lp, &lq, rng, &mut L::Workspace::default(), probe)
 }
 
 impl fmt::Display for Algorithm {

@@ -69,4 +69,6 @@
 
 mod seidel;
 
-pub use seidel::{ArenaPoints, Bitangent, LpError, LpWorkspace, PointSet, Separation, separating_line};
+pub use seidel::{
+    ArenaPoints, Bitangent, LpError, LpWorkspace, PointSet, Separation, WitnessPoint, separating_line,
+};

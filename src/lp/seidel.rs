@@ -107,12 +107,31 @@ impl fmt::Display for LpError {
 
 impl std::error::Error for LpError {}
 
+/// At most this many points make up the witness of intersecting hulls.
+const WITNESS: usize = 9;
+
+/// A point of the witness of intersecting hulls ([`LpWorkspace::witness`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WitnessPoint {
+    /// The point itself.
+    pub point: Point,
+    /// Whether it belongs to B (else to A).
+    pub in_b: bool,
+    /// Its index in its set, when known (points collected on the final line are
+    /// reported by coordinates only).
+    pub index: Option<usize>,
+}
+
 /// Scratch memory for [`separating_line`]: the points, copied once and shuffled in place
 /// (24 bytes per point). Reuse it across
 /// calls so the LP allocates nothing in the steady state.
 #[derive(Clone, Debug, Default)]
 pub struct LpWorkspace {
     items: Vec<Item>,
+    /// Whether [`Separation::Intersecting`] answers record their witness.
+    record: bool,
+    /// The witness of the last recorded [`Separation::Intersecting`] answer.
+    witness: Witness,
     /// Constraints examined (violation tests and one-dimensional steps) since creation:
     /// the LP's work, for experiments.
     pub work: u64,
@@ -124,6 +143,85 @@ pub struct LpWorkspace {
 impl LpWorkspace {
     pub fn new() -> Self {
         Self::default()
+    }
+
+    /// Whether answers [`Separation::Intersecting`] record their witness
+    /// ([`witness`](Self::witness), [`examined`](Self::examined)). Off by default: a
+    /// recorded witness costs a few stores per intersecting answer.
+    pub fn record_witness(&mut self, on: bool) {
+        self.record = on;
+    }
+
+    /// After an answer [`Separation::Intersecting`] (recorded, see
+    /// [`record_witness`](Self::record_witness)): at most nine points of A and B
+    /// whose hulls already intersect (CH(A′) ∩ CH(B′) ≠ ∅), so that a constant-size
+    /// search finds a point of one set in the other's hull or two crossing segments.
+    /// They are the point that made the LP infeasible, the earlier points that bounded
+    /// its one-dimensional problem and the two points the optimum before it was tight
+    /// on (Seidel's lemma: no separator with a direction in the frame's half-circle H
+    /// satisfies these), plus a₀, b₀ and the two bounding points, which rule out every
+    /// other direction; or a point shared by both sets; or the points of both sets on a
+    /// final line whose intervals overlap.
+    pub fn witness(&self) -> impl Iterator<Item = WitnessPoint> + '_ {
+        let w = &self.witness.points[..self.witness.len];
+        w.iter()
+            .enumerate()
+            .filter(|&(i, x)| !w[..i].iter().any(|y| y.in_b == x.in_b && y.point == x.point))
+            .map(|(_, &x)| x)
+    }
+
+    /// After an answer [`Separation::Intersecting`] found by the incremental loop: every
+    /// point it had examined (a few dozen, usually), whose hulls intersect; a superset
+    /// of [`witness`](Self::witness) that more often holds a point of one set inside
+    /// the other's hull. Empty when the answer came from elsewhere.
+    pub fn examined(&self) -> impl Iterator<Item = WitnessPoint> + '_ {
+        self.items[..self.witness.examined.min(self.items.len())]
+            .iter()
+            .map(|&it| WitnessPoint::of(it))
+    }
+}
+
+/// The witness of intersecting hulls, as [`LpWorkspace::witness`] and
+/// [`LpWorkspace::examined`] report it.
+#[derive(Clone, Debug)]
+struct Witness {
+    points: [WitnessPoint; WITNESS],
+    len: usize,
+    /// How many leading items the incremental loop had examined (0 if another step
+    /// found the intersection).
+    examined: usize,
+}
+
+impl Default for Witness {
+    fn default() -> Self {
+        let none = WitnessPoint {
+            point: Point::default(),
+            in_b: false,
+            index: None,
+        };
+        Witness {
+            points: [none; WITNESS],
+            len: 0,
+            examined: 0,
+        }
+    }
+}
+
+impl Witness {
+    fn set(&mut self, points: &[WitnessPoint], examined: usize) {
+        self.len = points.len().min(WITNESS);
+        self.points[..self.len].copy_from_slice(&points[..self.len]);
+        self.examined = examined;
+    }
+}
+
+impl WitnessPoint {
+    fn of(item: Item) -> Self {
+        WitnessPoint {
+            point: item.p,
+            in_b: item.enc & B_BIT != 0,
+            index: Some((item.enc & !B_BIT) as usize),
+        }
     }
 }
 
@@ -195,15 +293,34 @@ where
     list_items(a.len(), b.len(), workspace);
     let na = a.len();
     let src = Source { a, b };
-    let LpWorkspace { items, work, redone } = workspace;
-    Ok(match solve(kernel, &src, items, na, rng, work) {
+    let LpWorkspace {
+        items,
+        work,
+        redone,
+        record,
+        witness,
+    } = workspace;
+    // The examined prefix points into the items, which are about to change (the
+    // witness points carry their own coordinates and indices).
+    witness.examined = 0;
+    // Recording is chosen at compile time, so the plain instance carries no trace of it.
+    let solve_as =
+        |k_exact: bool, items: &mut Vec<Item>, rng: &mut R, work: &mut u64, witness: &mut Witness| match (
+            k_exact, *record,
+        ) {
+            (false, false) => solve::<K, R, A, B, false>(kernel, &src, items, na, rng, work, witness),
+            (false, true) => solve::<K, R, A, B, true>(kernel, &src, items, na, rng, work, witness),
+            (true, false) => solve::<Exact, R, A, B, false>(Exact, &src, items, na, rng, work, witness),
+            (true, true) => solve::<Exact, R, A, B, true>(Exact, &src, items, na, rng, work, witness),
+        };
+    Ok(match solve_as(false, items, rng, work, witness) {
         Some(s) => s,
         // Only an inconsistent (fast) kernel gets here: redo it exactly.
         None => {
             *redone += 1;
             // `solve` reordered the items: restore A-first order by origin.
             items.sort_unstable_by_key(|it| it.enc);
-            solve(Exact, &src, items, na, rng, work).unwrap_or(Separation::Intersecting)
+            solve_as(true, items, rng, work, witness).unwrap_or(Separation::Intersecting)
         }
     })
 }
@@ -232,8 +349,10 @@ impl Line {
 enum Step {
     /// The new optimum, tight on the violating point and on `partner`.
     Line(Line, Item),
-    /// The constraints seen so far admit no separator: the hulls intersect.
-    Infeasible,
+    /// The constraints seen so far admit no separator: the hulls intersect. No line
+    /// through the violating point satisfies the earlier points at these one or two
+    /// indices.
+    Infeasible(usize, usize),
     /// The kernel contradicted itself (fast kernel only).
     Inconsistent,
 }
@@ -247,6 +366,7 @@ enum StepOut {
         on_line: OnLine,
         last_change: usize,
     },
+    /// The hulls intersect (the witness is recorded if asked for).
     Infeasible,
     Inconsistent,
 }
@@ -303,16 +423,20 @@ impl<A: PointSet + ?Sized, B: PointSet + ?Sized> Source<'_, A, B> {
 
 /// The LP on `items` (A's points first, `na` of them, then B's). Reorders `items`.
 /// `None` when the final certification fails (inconsistent kernel).
-fn solve<K: Kernel, R: Rng + ?Sized, A: PointSet + ?Sized, B: PointSet + ?Sized>(
+fn solve<K: Kernel, R: Rng + ?Sized, A: PointSet + ?Sized, B: PointSet + ?Sized, const RECORD: bool>(
     k: K,
     src: &Source<'_, A, B>,
     items: &mut [Item],
     na: usize,
     rng: &mut R,
     work: &mut u64,
+    witness: &mut Witness,
 ) -> Option<Separation> {
     let (a0, b0) = (src.load(&mut items[0]), src.load(&mut items[na]));
     if a0 == b0 {
+        if RECORD {
+            witness.set(&[WitnessPoint::of(items[0]), WitnessPoint::of(items[na])], 0);
+        }
         return Some(Separation::Intersecting);
     }
     // x′(q) − x′(p) > 0  ⟺  d₀ × (q − p) < 0.
@@ -358,7 +482,18 @@ fn solve<K: Kernel, R: Rng + ?Sized, A: PointSet + ?Sized, B: PointSet + ?Sized>
         for i in (3..items.len()).rev() {
             items.swap(i, rng.random_range(2..=i));
         }
-        match incremental(k, src, Line { s: al.p, e: br.p }, al, br, a0, b0, items, work) {
+        match incremental::<K, A, B, RECORD>(
+            k,
+            src,
+            Line { s: al.p, e: br.p },
+            al,
+            br,
+            a0,
+            b0,
+            items,
+            work,
+            witness,
+        ) {
             StepOut::Line {
                 line,
                 ta,
@@ -370,7 +505,7 @@ fn solve<K: Kernel, R: Rng + ?Sized, A: PointSet + ?Sized, B: PointSet + ?Sized>
             StepOut::Inconsistent => return None,
         }
     };
-    certify(k, line, ta, tb, on_line, &items[..checked], work)
+    certify::<K, RECORD>(k, line, ta, tb, on_line, &items[..checked], work, witness)
 }
 
 /// The extreme points, along the current line, of each set's points found on it.
@@ -417,7 +552,7 @@ impl OnLine {
 /// changed the line, and the on-line extremes of the points after it (each of which was
 /// tested against the final line).
 #[allow(clippy::too_many_arguments)]
-fn incremental<K: Kernel, A: PointSet + ?Sized, B: PointSet + ?Sized>(
+fn incremental<K: Kernel, A: PointSet + ?Sized, B: PointSet + ?Sized, const RECORD: bool>(
     k: K,
     src: &Source<'_, A, B>,
     mut line: Line,
@@ -427,6 +562,7 @@ fn incremental<K: Kernel, A: PointSet + ?Sized, B: PointSet + ?Sized>(
     b0: Point,
     items: &mut [Item],
     work: &mut u64,
+    witness: &mut Witness,
 ) -> StepOut {
     let (mut ta, mut tb) = ((al.enc, al.p), (br.enc, br.p));
     let mut on_line = OnLine::at(al.p, br.p);
@@ -472,8 +608,17 @@ fn incremental<K: Kernel, A: PointSet + ?Sized, B: PointSet + ?Sized>(
                 on_line = OnLine::at(ta.1, tb.1);
                 last_change = t;
             }
-            Step::Infeasible => {
+            Step::Infeasible(q, q2) => {
                 *work += w;
+                if RECORD {
+                    let item = |(enc, p)| Item { p, enc, loaded: true };
+                    let (a, b) = (item(ta), item(tb));
+                    let frame = [item((0, a0)), item((B_BIT, b0)), al, br];
+                    let points = [
+                        items[t], items[q], items[q2], a, b, frame[0], frame[1], frame[2], frame[3],
+                    ];
+                    witness.set(&points.map(WitnessPoint::of), t + 1);
+                }
                 return StepOut::Infeasible;
             }
             Step::Inconsistent => {
@@ -493,7 +638,9 @@ fn incremental<K: Kernel, A: PointSet + ?Sized, B: PointSet + ?Sized>(
 }
 
 /// The one-dimensional LP: the most counter-clockwise direction in H of a line through
-/// `p` that keeps every earlier point on its side.
+/// `p` that keeps every earlier point on its side. (Inlined into each instance of the
+/// incremental loop, as it always was before the loop had a recording instance.)
+#[inline(always)]
 fn step<K: Kernel>(k: K, p: Point, p_in_b: bool, earlier: &[Item], a0: Point, b0: Point) -> Step {
     // The tightest bounds so far, as (index into `earlier`, direction from → to); plain
     // locals rather than an `Option<struct>` keep this hot loop free of memory traffic.
@@ -505,7 +652,7 @@ fn step<K: Kernel>(k: K, p: Point, p_in_b: bool, earlier: &[Item], a0: Point, b0
         let opposite = q_in_b != p_in_b;
         if q == p {
             if opposite {
-                return Step::Infeasible; // a point of both sets
+                return Step::Infeasible(i, i); // a point of both sets
             }
             continue;
         }
@@ -528,7 +675,7 @@ fn step<K: Kernel>(k: K, p: Point, p_in_b: bool, earlier: &[Item], a0: Point, b0
                 if ok {
                     continue;
                 }
-                return Step::Infeasible;
+                return Step::Infeasible(i, i);
             }
             // x′(q − p) > 0
             Orientation::Cw => q_in_b,
@@ -566,7 +713,7 @@ fn step<K: Kernel>(k: K, p: Point, p_in_b: bool, earlier: &[Item], a0: Point, b0
     let mut partner = earlier[up];
     if lo != NONE {
         match k.cross(lo_from, lo_to, up_from, up_to) {
-            Orientation::Cw => return Step::Infeasible,
+            Orientation::Cw => return Step::Infeasible(up, lo),
             Orientation::Collinear if !up_opp && lo_opp => partner = earlier[lo],
             _ => {}
         }
@@ -575,8 +722,10 @@ fn step<K: Kernel>(k: K, p: Point, p_in_b: bool, earlier: &[Item], a0: Point, b0
 }
 
 /// Checks `items` against the line (the points not yet tested against it), adds those
-/// on it to `on_line`, and compares the parts of the two sets on the line.
-fn certify<K: Kernel>(
+/// on it to `on_line`, and compares the parts of the two sets on the line; overlapping
+/// parts are the witness of intersecting hulls.
+#[allow(clippy::too_many_arguments)]
+fn certify<K: Kernel, const RECORD: bool>(
     k: K,
     line: Line,
     ta: u32,
@@ -584,6 +733,7 @@ fn certify<K: Kernel>(
     mut on_line: OnLine,
     items: &[Item],
     work: &mut u64,
+    witness: &mut Witness,
 ) -> Option<Separation> {
     let Line { s, e } = line;
     // The tangent points are on the line (this fails only under an inconsistent kernel).
@@ -609,6 +759,22 @@ fn certify<K: Kernel>(
     } = on_line;
     let overlap = k.dot(s, e, a_min, b_max) != Sign::Negative && k.dot(s, e, b_min, a_max) != Sign::Negative;
     Some(if overlap {
+        if RECORD {
+            let on = |point, in_b| WitnessPoint {
+                point,
+                in_b,
+                index: None,
+            };
+            witness.set(
+                &[
+                    on(a_min, false),
+                    on(a_max, false),
+                    on(b_min, true),
+                    on(b_max, true),
+                ],
+                0,
+            );
+        }
         Separation::Intersecting
     } else {
         Separation::Separated(Bitangent {

@@ -3,7 +3,8 @@
 //! `{"intersects": true|false}` or `{"points": [[x, y], ...]}`, or `{"error": ...}`.
 
 use super::line::{Channel, Stop, each_line, serve};
-use super::points_json;
+use super::{certified_answer_json, points_json};
+use crate::intersect::Certificate;
 use crate::kernel::Point;
 use crate::polygon::{ConvexPolygon, SimplePolygon};
 use std::io::{self, Read, Write};
@@ -171,6 +172,33 @@ fn parse_expected<R: Read, W: Write>(ch: &mut Channel<R, W>) -> Result<(PairLine
     Ok((pair, expected))
 }
 
+/// Runs `check --certificate`: as [`check`], each answer with the certificate that
+/// `answer` gives for the two polygons as cleaned, `{"intersects": BOOL, "certificate":
+/// {...}}` ([`certified_answer_json`](super::certified_answer_json)).
+///
+/// # Errors
+/// Only I/O errors; bad lines get error lines.
+///
+/// ```
+/// use polysect::intersect::{ArrayIntersection, Barba};
+/// let input = br#"{"p": [[0,0],[1,0],[0,1]], "q": [[2,0],[3,0],[3,1]]}"#;
+/// let mut out = Vec::new();
+/// polysect::protocol::check::check_certified(&input[..], &mut out, |p, q| Barba.certified(p, q))?;
+/// assert!(String::from_utf8(out).unwrap().starts_with(r#"{"intersects": false, "certificate": {"separating_edge": "#));
+/// # Ok::<(), std::io::Error>(())
+/// ```
+pub fn check_certified<R: Read, W: Write>(
+    input: R,
+    output: W,
+    mut answer: impl FnMut(&ConvexPolygon, &ConvexPolygon) -> Certificate,
+) -> io::Result<()> {
+    let mut ch = Channel::new(input, output);
+    serve(&mut ch, parse_pair, |pair| {
+        let (p, q) = convex_pair(pair)?;
+        Ok(certified_answer_json(&answer(&p, &q)))
+    })
+}
+
 /// Runs the `crossings` protocol: one reply line per input line, `{"points": [[x, y],
 /// ...]}` from `answer` on two simple polygons, or an error line.
 ///
@@ -192,6 +220,14 @@ pub fn crossings<R: Read, W: Write>(
 /// reply without its newline; the line is numbered 1 in messages.
 pub fn check_line(line: &[u8], answer: impl FnMut(&ConvexPolygon, &ConvexPolygon) -> bool) -> String {
     one_line(line, |input, out| check(input, out, answer))
+}
+
+/// Answers one `check --certificate` line as [`check_certified`] would.
+pub fn check_certified_line(
+    line: &[u8],
+    answer: impl FnMut(&ConvexPolygon, &ConvexPolygon) -> Certificate,
+) -> String {
+    one_line(line, |input, out| check_certified(input, out, answer))
 }
 
 /// Answers one `crossings` line as [`crossings`] would.

@@ -37,6 +37,7 @@ mod json;
 mod line;
 pub mod scene;
 
+use crate::intersect::Certificate;
 use crate::kernel::Point;
 use std::fmt::Write as _;
 
@@ -45,6 +46,54 @@ pub(crate) fn write_point(out: &mut String, p: Point) {
     // `{:?}` prints the shortest decimal that round-trips, with an exponent when long;
     // every finite value prints as a valid JSON number.
     let _ = write!(out, "[{:?},{:?}]", p.x, p.y);
+}
+
+/// Appends the reply body of a certified answer: `"intersects": BOOL, "certificate":
+/// {...}` in the CLI contract's form (`check --certificate`, the scene's `intersects`
+/// with `--certificate`), every coordinate printed so that it parses back to the same
+/// `f64`. [`certificate_from_json`](crate::certificate_json::certificate_from_json)
+/// reads the certificate object back.
+///
+/// ```
+/// use polysect::Point;
+/// use polysect::intersect::{Certificate, Which};
+/// let c = Certificate::Separated { of: Which::Q, from: Point::new(0.1, 5e-324), to: Point::new(-0.0, 1e300) };
+/// assert_eq!(
+///     polysect::protocol::certified_answer_json(&c),
+///     r#""intersects": false, "certificate": {"separating_edge": {"of": "q", "from": [0.1,5e-324], "to": [-0.0,1e300]}}"#
+/// );
+/// ```
+pub fn certified_answer_json(certificate: &Certificate) -> String {
+    let mut out = String::with_capacity(128);
+    let _ = write!(
+        out,
+        "\"intersects\": {}, \"certificate\": {{",
+        certificate.intersects()
+    );
+    match *certificate {
+        Certificate::Separated { of, from, to } => {
+            let _ = write!(
+                out,
+                "\"separating_edge\": {{\"of\": \"{}\", \"from\": ",
+                of.name()
+            );
+            write_point(&mut out, from);
+            out.push_str(", \"to\": ");
+            write_point(&mut out, to);
+        }
+        Certificate::VertexInside { of, point } => {
+            let _ = write!(out, "\"vertex_inside\": {{\"of\": \"{}\", \"point\": ", of.name());
+            write_point(&mut out, point);
+        }
+        Certificate::CrossingEdges { p, q } => {
+            out.push_str("\"crossing_edges\": {\"p\": ");
+            out.push_str(&points_json(&p));
+            out.push_str(", \"q\": ");
+            out.push_str(&points_json(&q));
+        }
+    }
+    out.push_str("}}");
+    out
 }
 
 /// A vertex list as JSON, each number printed so that it parses back to the same `f64`.

@@ -21,12 +21,13 @@
 
 use super::json::shown;
 use super::line::{Channel, Stop, json_string, serve};
-use super::write_point;
+use super::{certified_answer_json, write_point};
+use crate::intersect::proven_linked;
 use crate::kernel::{Exact, Kernel, Point};
 use crate::polygon::{ConvexPolygon, EditError, LinkedPolygon, VertexId};
 use crate::store::{PolygonId, Scene, SceneError, Strategy};
 use std::collections::{BTreeMap, HashMap};
-use std::fmt::{self, Write as _};
+use std::fmt::Write as _;
 use std::io::{self, Read, Write};
 
 /// How a session answers; see [`SceneSession::with_kernel`].
@@ -41,26 +42,6 @@ pub struct SceneOptions {
     pub certificate: bool,
 }
 
-/// An option the session cannot honour.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum OptionError {
-    /// Certificates are not available in this build.
-    CertificatesUnavailable,
-}
-
-impl fmt::Display for OptionError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            OptionError::CertificatesUnavailable => write!(
-                f,
-                "--certificate: intersection certificates are not available in this build yet"
-            ),
-        }
-    }
-}
-
-impl std::error::Error for OptionError {}
-
 /// A polygon of the session: its handle, its ids and the next id to give.
 #[derive(Clone, Debug)]
 struct Named {
@@ -73,7 +54,7 @@ struct Named {
 ///
 /// ```
 /// use polysect::protocol::scene::{SceneOptions, SceneSession};
-/// let mut session = SceneSession::new(SceneOptions::default())?;
+/// let mut session = SceneSession::new(SceneOptions::default());
 /// let input = br#"{"op": "add", "name": "a", "points": [[0,0],[0,2],[2,2],[2,0]]}
 /// {"op": "vertices", "name": "a"}
 /// {"op": "insert", "name": "a", "after": 0, "point": [1, -1]}
@@ -102,10 +83,7 @@ pub struct SceneSession<K: Kernel = Exact> {
 
 impl SceneSession<Exact> {
     /// A session on the exact kernel.
-    ///
-    /// # Errors
-    /// As [`SceneSession::with_kernel`].
-    pub fn new(options: SceneOptions) -> Result<Self, OptionError> {
+    pub fn new(options: SceneOptions) -> Self {
         SceneSession::with_kernel(Exact, options)
     }
 }
@@ -183,26 +161,21 @@ fn survivor_ids(input: &[Point], cleaned: &[Point]) -> Option<Vec<u64>> {
 }
 
 impl<K: Kernel> SceneSession<K> {
-    /// A session whose queries use `kernel`, with the options' strategy and seed.
-    ///
-    /// # Errors
-    /// [`OptionError::CertificatesUnavailable`] when certificates are asked for.
-    pub fn with_kernel(kernel: K, options: SceneOptions) -> Result<Self, OptionError> {
-        if options.certificate {
-            return Err(OptionError::CertificatesUnavailable);
-        }
+    /// A session whose queries use `kernel`, with the options' strategy, seed and
+    /// certificates.
+    pub fn with_kernel(kernel: K, options: SceneOptions) -> Self {
         let mut scene = Scene::with_kernel(kernel);
         scene.set_strategy(options.strategy);
         if let Some(seed) = options.seed {
             scene.seed(seed);
         }
-        Ok(SceneSession {
+        SceneSession {
             scene,
             polygons: HashMap::new(),
             names: HashMap::new(),
             certificate: options.certificate,
             lines: 0,
-        })
+        }
     }
 
     /// The scene (read-only).
@@ -450,17 +423,29 @@ impl<K: Kernel> SceneSession<K> {
         Ok(format!("\"vertex\": {id}"))
     }
 
-    /// The `intersects` reply. With certificates enabled, this is where the certificate
-    /// for the pair is added to the reply (`"certificate": {...}` after the answer, in
-    /// the format of `check --certificate`); until they exist the session refuses the
-    /// option at construction.
+    /// The `intersects` reply; with certificates, the certificate for the pair (`a` is
+    /// its P, `b` its Q) after the answer, in the format of `check --certificate`. Under
+    /// a kernel other than the exact one the certificate is verified exactly before it
+    /// is printed (O(n + m)) and replaced by the exact reference's if it fails, so every
+    /// printed certificate verifies.
     fn intersects(&mut self, a: &str, b: &str) -> Result<String, String> {
         let (ia, ib) = (self.named(a)?.id, self.named(b)?.id);
+        if self.certificate {
+            let internal = |e: SceneError| format!("internal error: {e}");
+            let mut certificate = self.scene.intersects_certified(ia, ib).map_err(internal)?;
+            if K::NAME != Exact::NAME {
+                let (p, q) = (
+                    self.scene.polygon(ia).map_err(internal)?,
+                    self.scene.polygon(ib).map_err(internal)?,
+                );
+                certificate = proven_linked(p, q, certificate);
+            }
+            return Ok(certified_answer_json(&certificate));
+        }
         let hit = self
             .scene
             .intersects(ia, ib)
             .map_err(|e| format!("internal error: {e}"))?;
-        debug_assert!(!self.certificate, "refused at construction");
         Ok(format!("\"intersects\": {hit}"))
     }
 

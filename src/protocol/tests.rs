@@ -485,7 +485,6 @@ fn every_reply_is_flushed_before_a_read_that_could_block() {
         out: out.clone(),
     };
     SceneSession::new(SceneOptions::default())
-        .unwrap()
         .run(reader, out.clone())
         .unwrap();
     // Bulk input already read is answered without a flush per line.
@@ -531,7 +530,7 @@ fn every_protocol_refuses_every_shape_that_is_not_its_object() {
         (r#"{"id": 5}"#, "missing field"),
         ("{\"x\": 1} {}", "trailing characters"),
     ];
-    let mut session = SceneSession::new(SceneOptions::default()).unwrap();
+    let mut session = SceneSession::new(SceneOptions::default());
     for (shape, needle) in shapes {
         let replies = [
             check_line(shape.as_bytes(), |_, _| true),

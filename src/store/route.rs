@@ -3,10 +3,11 @@
 //! scene; both the cost model (which times these tests) and the scene use it.
 
 use crate::intersect::{
-    ArrayIntersection, Barba, Clm, ClmWorkspace, Linear, LinearLinked, LinkedIntersection,
+    ArrayIntersection, Barba, Certificate, Clm, ClmWorkspace, Linear, LinearLinked, LinkedIntersection,
 };
 use crate::kernel::Kernel;
 use crate::polygon::{ConvexPolygon, LinkedPolygon};
+use rand::SeedableRng;
 use rand::rngs::SmallRng;
 
 /// Per-query scratch memory, reused so that queries allocate nothing in the steady state.
@@ -28,7 +29,13 @@ pub(crate) fn sampled_test<K: Kernel>(
 
 /// The linear test walking both linked polygons (no conversion, no allocation).
 pub(crate) fn linear_test<K: Kernel>(kernel: K, p: &LinkedPolygon, q: &LinkedPolygon) -> bool {
-    LinearLinked.intersects_with(kernel, p, q)
+    LinearLinked.intersects_in(kernel, p, q, &mut unused_rng(), &mut (), &mut ())
+}
+
+/// The linear walk draws no random numbers; the trait wants a generator, and a
+/// constant-seeded one costs nothing next to the OS-seeded one of a one-off call.
+fn unused_rng() -> SmallRng {
+    SmallRng::seed_from_u64(0)
 }
 
 /// Barba–Langerman on two snapshots, O(log n).
@@ -48,6 +55,36 @@ pub(crate) fn array_test<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPoly
         linear_array_test(kernel, p, q)
     } else {
         barba_test(kernel, p, q)
+    }
+}
+
+/// [`sampled_test`]'s certified call.
+pub(crate) fn sampled_certified<K: Kernel>(
+    kernel: K,
+    p: &LinkedPolygon,
+    q: &LinkedPolygon,
+    ws: &mut QueryWorkspace,
+    rng: &mut SmallRng,
+) -> Certificate {
+    Clm.certified_with_workspace(kernel, p, q, rng, &mut ws.clm)
+}
+
+/// [`linear_test`]'s certified call.
+pub(crate) fn linear_certified<K: Kernel>(kernel: K, p: &LinkedPolygon, q: &LinkedPolygon) -> Certificate {
+    LinearLinked.certified_in(kernel, p, q, &mut unused_rng(), &mut (), &mut ())
+}
+
+/// [`array_test`]'s certified call.
+pub(crate) fn array_certified<K: Kernel>(
+    kernel: K,
+    p: &ConvexPolygon,
+    q: &ConvexPolygon,
+    linear: bool,
+) -> Certificate {
+    if linear {
+        Linear.certified_with(kernel, p, q)
+    } else {
+        Barba.certified_with(kernel, p, q)
     }
 }
 

@@ -2,7 +2,11 @@
 
 use super::broad::{BoundingBox, BroadPhase};
 use super::planner::{Account, Arena, CostModel, PlannerStats, Strategy};
-use super::route::{QueryWorkspace, Route, array_test, linear_test, sampled_test};
+use super::route::{
+    QueryWorkspace, Route, array_certified, array_test, linear_certified, linear_test, sampled_certified,
+    sampled_test,
+};
+use crate::intersect::{Certificate, Which};
 use crate::kernel::{Exact, Kernel, Point};
 use crate::polygon::{ConvexPolygon, EditError, Identity, LinkedPolygon, PolygonError, VertexId};
 use rand::rngs::SmallRng;
@@ -126,6 +130,8 @@ struct Entry {
 /// and the estimated costs of the conversions and of the answers, in nanoseconds.
 struct Plan {
     routes: Vec<Result<Route, SceneError>>,
+    /// The keys of each query's P and Q, beside its route ((0, 0) for an error).
+    keys: Vec<(usize, usize)>,
     chosen: Vec<usize>,
     convert_ns: f64,
     answer_ns: f64,
@@ -572,7 +578,9 @@ impl<K: Kernel> Scene<K> {
     fn plan(&mut self, pairs: impl Iterator<Item = Result<(usize, usize), SceneError>>) -> Plan {
         let mut routes: Vec<Result<Route, SceneError>> = Vec::with_capacity(pairs.size_hint().0);
         let mut touched = Vec::new();
+        let mut keys = Vec::with_capacity(routes.capacity());
         for pair in pairs {
+            keys.push(*pair.as_ref().unwrap_or(&(0, 0)));
             let route = pair.map(|(a, b)| self.plan_boxes(a, b, &mut touched));
             routes.push(route);
         }
@@ -619,6 +627,7 @@ impl<K: Kernel> Scene<K> {
         }
         Plan {
             routes,
+            keys,
             chosen,
             convert_ns,
             answer_ns,
@@ -736,11 +745,94 @@ impl<K: Kernel> Scene<K> {
         }
     }
 
+    /// The certificate of a planned query between keys `a` and `b` (the query's P and
+    /// Q): the certified call of the route's test, with the scene's kernel. A pair
+    /// rejected by its bounding boxes is known to be disjoint exactly, so its separating
+    /// edge is searched with the exact kernel (the array test when both snapshots are
+    /// valid, else the sampled test); a polygon against itself is proved by its first
+    /// vertex.
+    fn answer_certified(
+        &self,
+        route: Route,
+        (a, b): (usize, usize),
+        ws: &mut QueryWorkspace,
+        seed: u64,
+    ) -> Certificate {
+        let e = |k: usize| &self.entries[k];
+        let snapshot = |k: usize| e(k).snapshot.as_ref().expect("planned snapshot");
+        match route {
+            Route::Known(true) => {
+                let point = e(a).polygon.point_at(0);
+                Certificate::VertexInside { of: Which::P, point }
+            }
+            Route::Known(false) => match (&e(a).snapshot, &e(b).snapshot) {
+                (Some(p), Some(q)) => array_certified(Exact, p, q, false),
+                _ => {
+                    let mut rng = SmallRng::seed_from_u64(seed);
+                    sampled_certified(Exact, &e(a).polygon, &e(b).polygon, ws, &mut rng)
+                }
+            },
+            Route::Arrays(a, b, linear) => array_certified(self.kernel, snapshot(a), snapshot(b), linear),
+            Route::Linear(a, b) => linear_certified(self.kernel, &e(a).polygon, &e(b).polygon),
+            Route::Sampled(a, b) => {
+                let mut rng = SmallRng::seed_from_u64(seed);
+                sampled_certified(self.kernel, &e(a).polygon, &e(b).polygon, ws, &mut rng)
+            }
+            Route::Throwaway(a, b, linear) => array_certified(
+                self.kernel,
+                &e(a).polygon.to_convex(),
+                &e(b).polygon.to_convex(),
+                linear,
+            ),
+        }
+    }
+
     /// Whether polygons `a` and `b` intersect (closed sets: touching counts).
     ///
     /// # Errors
     /// `StalePolygon`, `ForeignPolygon` for either handle.
     pub fn intersects(&mut self, a: PolygonId, b: PolygonId) -> Result<bool, SceneError> {
+        self.query(a, b, |s, route, _, ws, seed| s.answer(route, ws, seed))
+    }
+
+    /// [`intersects`](Self::intersects) with a [`Certificate`] of the answer (`a` is the
+    /// certificate's P, `b` its Q; the answer is [`Certificate::intersects`]), planned
+    /// exactly as `intersects` plans: the same strategy, conversions and counters, and
+    /// the certified call of the test the plan chose. The certificate names vertices of
+    /// the polygons as they are now; [`verify_linked`](crate::intersect::verify_linked)
+    /// checks it exactly.
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon` for either handle.
+    ///
+    /// # Precision
+    /// Under the exact kernel the certificate always verifies; under the fast kernel it
+    /// may not, exactly when the fast answer may be wrong (docs/certificates.md).
+    ///
+    /// ```
+    /// use polysect::store::Scene;
+    /// use polysect::intersect::verify_linked;
+    /// let mut scene = Scene::new();
+    /// let a = scene.insert_points([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+    /// let b = scene.insert_points([[2.0, 1.0], [4.0, 0.0], [4.0, 3.0]])?;
+    /// let c = scene.intersects_certified(a, b)?;
+    /// assert!(c.intersects()); // (2, 1) lies on a's edge
+    /// assert_eq!(verify_linked(scene.polygon(a)?, scene.polygon(b)?, &c), Ok(()));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn intersects_certified(&mut self, a: PolygonId, b: PolygonId) -> Result<Certificate, SceneError> {
+        self.query(a, b, |s, route, keys, ws, seed| {
+            s.answer_certified(route, keys, ws, seed)
+        })
+    }
+
+    /// Plans one query, builds the conversions it chose and answers it with `answer`.
+    fn query<T>(
+        &mut self,
+        a: PolygonId,
+        b: PolygonId,
+        answer: impl FnOnce(&Self, Route, (usize, usize), &mut QueryWorkspace, u64) -> T,
+    ) -> Result<T, SceneError> {
         let (ka, kb) = (self.key(a)?, self.key(b)?);
         let mut plan = self.plan(std::iter::once(Ok((ka, kb))));
         for k in plan.chosen {
@@ -749,7 +841,7 @@ impl<K: Kernel> Scene<K> {
         let route = plan.routes.pop().expect("one route")?;
         let mut ws = std::mem::take(&mut self.workspace);
         let seed = self.rng.next_u64();
-        let answer = self.answer(route, &mut ws, seed);
+        let answer = answer(self, route, (ka, kb), &mut ws, seed);
         self.workspace = ws;
         Ok(answer)
     }
@@ -767,10 +859,37 @@ impl<K: Kernel> Scene<K> {
         self.run_plan(plan)
     }
 
+    /// [`intersects_batch`](Self::intersects_batch) with certificates, as
+    /// [`intersects_certified`](Self::intersects_certified) gives them (in each pair, the
+    /// first polygon is the certificate's P).
+    pub fn intersects_batch_certified(
+        &mut self,
+        pairs: &[(PolygonId, PolygonId)],
+    ) -> Vec<Result<Certificate, SceneError>> {
+        let keys = pairs.iter().map(|&(a, b)| Ok((self.key(a)?, self.key(b)?)));
+        let keys: Vec<Result<(usize, usize), SceneError>> = keys.collect();
+        let plan = self.plan(keys.into_iter());
+        self.run_plan_certified(plan)
+    }
+
+    fn run_plan(&mut self, plan: Plan) -> Vec<Result<bool, SceneError>> {
+        self.run_plan_with(plan, |s, route, _, ws, seed| s.answer(route, ws, seed))
+    }
+
+    fn run_plan_certified(&mut self, plan: Plan) -> Vec<Result<Certificate, SceneError>> {
+        self.run_plan_with(plan, |s, route, keys, ws, seed| {
+            s.answer_certified(route, keys, ws, seed)
+        })
+    }
+
     /// Converts the chosen polygons and answers the routes; the sampled test of route `i`
     /// is seeded from one draw of the scene's generator and `i`, so answers do not
     /// depend on the number of threads.
-    fn run_plan(&mut self, plan: Plan) -> Vec<Result<bool, SceneError>> {
+    fn run_plan_with<T: Send>(
+        &mut self,
+        plan: Plan,
+        answer: impl Fn(&Self, Route, (usize, usize), &mut QueryWorkspace, u64) -> T + Sync,
+    ) -> Vec<Result<T, SceneError>> {
         let base: u64 = self.rng.next_u64();
         let threads = rayon::current_num_threads() > 1;
         let parallel_convert = threads && plan.chosen.len() > 1 && plan.convert_ns >= PARALLEL_MIN_NS;
@@ -778,9 +897,11 @@ impl<K: Kernel> Scene<K> {
         self.convert_all(plan.chosen, parallel_convert);
         let mut ws = std::mem::take(&mut self.workspace);
         let this = &*self;
+        let keys = &plan.keys;
         let answer = |ws: &mut QueryWorkspace, (i, route): (usize, &Result<Route, SceneError>)| {
             let route = route.clone()?;
-            Ok(this.answer(route, ws, base ^ (i as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15)))
+            let seed = base ^ (i as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15);
+            Ok(answer(this, route, keys[i], ws, seed))
         };
         let answers = if parallel {
             plan.routes
@@ -853,6 +974,24 @@ impl<K: Kernel> Scene<K> {
             .zip(answers)
             .filter(|(_, hit)| matches!(hit, Ok(true)))
             .map(|((a, b), _)| (self.id_of(a), self.id_of(b)))
+            .collect()
+    }
+
+    /// [`intersecting_pairs`](Self::intersecting_pairs), each with the certificate of
+    /// its intersection (`a` is the certificate's P). Pairs the broad phase rejects get
+    /// none: they are not in the answer.
+    pub fn intersecting_pairs_certified(&mut self) -> Vec<(PolygonId, PolygonId, Certificate)> {
+        self.flush_broad_phase();
+        let candidates = self.broad.overlapping_pairs();
+        let plan = self.plan(candidates.iter().map(|&pair| Ok(pair)));
+        let answers = self.run_plan_certified(plan);
+        candidates
+            .into_iter()
+            .zip(answers)
+            .filter_map(|((a, b), c)| {
+                let c = c.ok().filter(Certificate::intersects)?;
+                Some((self.id_of(a), self.id_of(b), c))
+            })
             .collect()
     }
 

@@ -1,0 +1,1321 @@
+//! [`Certificate`]s: answers that anyone can check exactly without trusting the
+//! algorithm that produced them, and [`verify`], the check.
+//!
+//! # The three certificates, and why one always exists
+//! Two closed convex polygons P and Q either share a point or they do not.
+//!
+//! * **Disjoint**: some edge of P or of Q has the whole other polygon strictly on its
+//!   outer side ([`Certificate::Separated`]). This is the separating axis theorem for
+//!   convex polygons: 0 lies outside the Minkowski difference P − Q, a convex polygon
+//!   whose every edge is an edge of P or of −Q translated by a vertex of the other
+//!   polygon (the one extreme against that edge). A point outside a convex polygon is
+//!   strictly outside the line of one of its edges, and "0 strictly outside edge e − w"
+//!   reads "the vertex w of the other polygon, and with it that whole polygon, lies
+//!   strictly on the outer side of e".
+//! * **Intersecting**: a vertex of one polygon lies in the other, boundary included
+//!   ([`Certificate::VertexInside`]), or an edge of P and an edge of Q share a point
+//!   ([`Certificate::CrossingEdges`]). If no vertex of P lies in Q, then P ⊄ Q, so P has
+//!   points inside and outside Q; P is connected, so ∂Q meets P. If ∂Q meets ∂P, some
+//!   edge of Q meets some edge of P. Otherwise ∂Q lies in the interior of P, so Q ⊆ P
+//!   and every vertex of Q lies in P.
+//!
+//! Coordinates in a certificate are always input vertices, never constructed points,
+//! and edges are two consecutive vertices in counter-clockwise order (the order the
+//! polygons are stored in after cleaning).
+//!
+//! # Checking
+//! [`verify`] (arrays) and [`verify_linked`] (linked polygons) check a certificate
+//! with the [`Exact`] kernel in O(n + m), independently of every algorithm. Run them
+//! whenever an answer matters more than the microseconds: the certificate of a fast
+//! kernel's answer may be wrong, and a wrong one is always caught.
+//!
+//! # How the algorithms derive them
+//! Each algorithm has a certified call beside its boolean one
+//! ([`ArrayIntersection::certified_with`](super::ArrayIntersection::certified_with),
+//! [`LinkedIntersection::certified_with`](super::LinkedIntersection::certified_with),
+//! [`Algorithm::certified`](super::Algorithm::certified)); docs/certificates.md says how each
+//! one turns what it found into a certificate. The shared steps live here:
+//!
+//! * [`separates`]: an edge and an opposite vertex that is locally (hence globally, by
+//!   convexity) the deepest against it prove separation in O(1).
+//! * [`from_faces`]: given the faces (one or two vertices) where a common closed
+//!   separating line supports both polygons, one of the few edges at those faces is a
+//!   separating edge (the Minkowski argument above, at the vertex of P − Q extreme in
+//!   the line's normal direction); O(1).
+//! * [`resolve_chords`]: a chord of P (two of its vertices) that meets a chord of Q is
+//!   turned into a vertex inside or two crossing edges by at most two binary searches,
+//!   O(log n + log m).
+//!
+//! Where an algorithm's findings give no certificate at that cost, it returns only its
+//! answer ([`Derivation::Answer`]) and the certified call completes it with a search
+//! that always certifies that answer under [`Exact`]: [`Dobkin`](super::Dobkin)'s
+//! separation for "disjoint", [`Barba`](super::Barba)'s witness for "intersecting",
+//! and [`exact_certificate`](super::exact_certificate) as the last resort when an
+//! inconsistent kernel leaves even those without one.
+
+use crate::kernel::{
+    Exact, Kernel, Orientation, Point, SegmentContact, Sign, point_on_segment, segment_contact,
+};
+use crate::polygon::{ConvexPolygon, LinkedPolygon};
+use std::fmt;
+
+use Orientation::{Ccw, Collinear, Cw};
+
+/// One of the two polygons of a query: `P` is the first argument, `Q` the second.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Which {
+    P,
+    Q,
+}
+
+impl Which {
+    /// The other polygon.
+    #[inline]
+    pub fn other(self) -> Which {
+        match self {
+            Which::P => Which::Q,
+            Which::Q => Which::P,
+        }
+    }
+
+    /// `"p"` or `"q"`, as in the CLI's JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Which::P => "p",
+            Which::Q => "q",
+        }
+    }
+}
+
+impl fmt::Display for Which {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Which::P => "P",
+            Which::Q => "Q",
+        })
+    }
+}
+
+/// A proof of an intersection test's answer, checkable exactly by [`verify`]; see the
+/// module docs for why one always exists.
+///
+/// ```
+/// use polysect::{ConvexPolygon, Point};
+/// use polysect::intersect::{ArrayIntersection, Barba, Certificate, Linear, Which, verify};
+/// let p = ConvexPolygon::new([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+/// let q = ConvexPolygon::new([[3.0, 0.0], [4.0, 0.0], [4.0, 1.0]])?;
+/// // The reference names the first separating edge of P it meets: x = 2, from (2, 0)
+/// // up to (2, 2), with Q strictly on its outer side.
+/// let c = Linear.certified(&p, &q);
+/// assert_eq!(c, Certificate::Separated { of: Which::P, from: Point::new(2.0, 0.0), to: Point::new(2.0, 2.0) });
+/// assert_eq!(verify(&p, &q, &c), Ok(()));
+/// // Other algorithms may name another separating edge; every one verifies.
+/// let c = Barba.certified(&p, &q);
+/// assert!(!c.intersects());
+/// assert_eq!(verify(&p, &q, &c), Ok(()));
+/// # Ok::<(), polysect::PolygonError>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Certificate {
+    /// The polygons are disjoint: `from` → `to` is an edge of polygon `of` (consecutive
+    /// vertices, counter-clockwise) and the other polygon lies strictly on its outer
+    /// (right) side.
+    Separated { of: Which, from: Point, to: Point },
+    /// The polygons intersect: `point` is a vertex of polygon `of` lying in the other
+    /// polygon, boundary included.
+    VertexInside { of: Which, point: Point },
+    /// The polygons intersect: `p` is an edge of P and `q` an edge of Q (consecutive
+    /// vertices, counter-clockwise) and the two closed segments share a point.
+    CrossingEdges { p: [Point; 2], q: [Point; 2] },
+}
+
+impl Certificate {
+    /// The answer the certificate proves.
+    #[inline]
+    pub fn intersects(&self) -> bool {
+        !matches!(self, Certificate::Separated { .. })
+    }
+
+    /// The same certificate for the query with P and Q exchanged.
+    #[inline]
+    pub fn swapped(self) -> Certificate {
+        match self {
+            Certificate::Separated { of, from, to } => Certificate::Separated {
+                of: of.other(),
+                from,
+                to,
+            },
+            Certificate::VertexInside { of, point } => Certificate::VertexInside {
+                of: of.other(),
+                point,
+            },
+            Certificate::CrossingEdges { p, q } => Certificate::CrossingEdges { p: q, q: p },
+        }
+    }
+
+    /// The certificate as the caller of a query with P and Q given as `(first, second)`
+    /// sees it, when it was derived with `a` in the role of P: unchanged if `a` is P.
+    #[inline]
+    pub(crate) fn relative_to(self, a: Which) -> Certificate {
+        match a {
+            Which::P => self,
+            Which::Q => self.swapped(),
+        }
+    }
+}
+
+/// What an algorithm's certified run derived from its own findings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Derivation {
+    /// A certificate of the answer.
+    Certified(Certificate),
+    /// Only the answer: what the algorithm found gives no certificate at the cost the
+    /// algorithm allows itself; the certified call completes it with a slower search
+    /// (and reports that to the [`Probe`](super::Probe)).
+    Answer(bool),
+}
+
+/// Why [`verify`] rejected a certificate. Every variant names the polygon and the
+/// points involved; the `Display` text says what is wrong.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum CertificateError {
+    /// A certificate coordinate is not a vertex of the polygon it names.
+    NotAVertex { of: Which, point: Point },
+    /// `from` and `to` are vertices but not consecutive: `from`'s counter-clockwise
+    /// successor is `next`.
+    NotAnEdge {
+        of: Which,
+        from: Point,
+        to: Point,
+        next: Point,
+    },
+    /// `from` → `to` is an edge walked clockwise (`to` precedes `from`); edges are given
+    /// counter-clockwise, so that their outer side is their right side.
+    Clockwise { of: Which, from: Point, to: Point },
+    /// A vertex of the other polygon is not strictly on the outer side of the edge.
+    NotSeparating {
+        of: Which,
+        from: Point,
+        to: Point,
+        vertex: Point,
+        side: Orientation,
+    },
+    /// The vertex lies strictly outside the other polygon: strictly right of its edge
+    /// `from` → `to`.
+    Outside {
+        of: Which,
+        point: Point,
+        from: Point,
+        to: Point,
+    },
+    /// The two edges have no common point.
+    EdgesDisjoint { p: [Point; 2], q: [Point; 2] },
+}
+
+impl fmt::Display for CertificateError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let pt = |p: &Point| format!("({:?}, {:?})", p.x, p.y);
+        match self {
+            CertificateError::NotAVertex { of, point } => {
+                write!(f, "{} is not a vertex of {of}", pt(point))
+            }
+            CertificateError::NotAnEdge { of, from, to, next } => write!(
+                f,
+                "{} → {} is not an edge of {of}: the vertex after {} (counter-clockwise) is {}",
+                pt(from),
+                pt(to),
+                pt(from),
+                pt(next)
+            ),
+            CertificateError::Clockwise { of, from, to } => write!(
+                f,
+                "{} → {} runs clockwise along {of}; edges are given counter-clockwise ({} → {})",
+                pt(from),
+                pt(to),
+                pt(to),
+                pt(from)
+            ),
+            CertificateError::NotSeparating {
+                of,
+                from,
+                to,
+                vertex,
+                side,
+            } => {
+                let where_ = match side {
+                    Ccw => "on its inner side",
+                    Collinear => "on its line",
+                    Cw => "strictly outside", // never reported
+                };
+                write!(
+                    f,
+                    "edge {} → {} of {of} does not separate: vertex {} of {} lies {where_}",
+                    pt(from),
+                    pt(to),
+                    pt(vertex),
+                    of.other()
+                )
+            }
+            CertificateError::Outside { of, point, from, to } => write!(
+                f,
+                "vertex {} of {of} is outside {}: strictly right of its edge {} → {}",
+                pt(point),
+                of.other(),
+                pt(from),
+                pt(to)
+            ),
+            CertificateError::EdgesDisjoint { p, q } => write!(
+                f,
+                "edge {} → {} of P and edge {} → {} of Q have no common point",
+                pt(&p[0]),
+                pt(&p[1]),
+                pt(&q[0]),
+                pt(&q[1])
+            ),
+        }
+    }
+}
+
+impl std::error::Error for CertificateError {}
+
+/// Cyclic access to a convex polygon's boundary: a slice of counter-clockwise vertices
+/// (indices mod n) or a [`LinkedPolygon`] (arena positions, which are exactly `0..len`).
+pub(crate) trait Boundary {
+    fn count(&self) -> usize;
+    fn at(&self, v: usize) -> Point;
+    fn next(&self, v: usize) -> usize;
+    fn prev(&self, v: usize) -> usize;
+}
+
+impl Boundary for [Point] {
+    #[inline]
+    fn count(&self) -> usize {
+        self.len()
+    }
+    #[inline]
+    fn at(&self, v: usize) -> Point {
+        self[v]
+    }
+    #[inline]
+    fn next(&self, v: usize) -> usize {
+        if v + 1 == self.len() { 0 } else { v + 1 }
+    }
+    #[inline]
+    fn prev(&self, v: usize) -> usize {
+        if v == 0 { self.len() - 1 } else { v - 1 }
+    }
+}
+
+impl Boundary for LinkedPolygon {
+    #[inline]
+    fn count(&self) -> usize {
+        self.len()
+    }
+    #[inline]
+    fn at(&self, v: usize) -> Point {
+        self.point_at(v)
+    }
+    #[inline]
+    fn next(&self, v: usize) -> usize {
+        self.next_at(v)
+    }
+    #[inline]
+    fn prev(&self, v: usize) -> usize {
+        self.prev_at(v)
+    }
+}
+
+/// Checks `certificate` for the query "do `p` and `q` intersect?" exactly, with no
+/// trust in whoever produced it. `Ok(())` means the certificate proves its answer
+/// ([`Certificate::intersects`]).
+///
+/// # Complexity
+/// O(n + m) for polygons of n and m vertices: the named vertices are found by a scan,
+/// then a separating edge is tested against every vertex of the other polygon, or a
+/// vertex against every edge of the other polygon, or two edges against each other.
+///
+/// # Precision
+/// Every test is an [`Exact`] predicate on input coordinates; vertices are matched by
+/// exact `f64` equality (a point one ulp away from a vertex is not that vertex).
+///
+/// # Errors
+/// A [`CertificateError`] saying what is wrong: a coordinate that is not a vertex, two
+/// vertices that are not an edge or are given clockwise, a vertex of the other polygon
+/// on the wrong side of a claimed separating edge, a vertex outside the polygon it is
+/// claimed to lie in, or two claimed crossing edges that do not meet.
+///
+/// ```
+/// use polysect::{ConvexPolygon, Point};
+/// use polysect::intersect::{Certificate, CertificateError, Which, verify};
+/// let p = ConvexPolygon::new([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+/// let q = ConvexPolygon::new([[1.0, 1.0], [3.0, 1.0], [3.0, 3.0]])?;
+/// let inside = Certificate::VertexInside { of: Which::Q, point: Point::new(1.0, 1.0) };
+/// assert_eq!(verify(&p, &q, &inside), Ok(()));
+/// let wrong = Certificate::Separated { of: Which::P, from: Point::new(2.0, 0.0), to: Point::new(2.0, 2.0) };
+/// assert!(matches!(verify(&p, &q, &wrong), Err(CertificateError::NotSeparating { .. })));
+/// # Ok::<(), polysect::PolygonError>(())
+/// ```
+pub fn verify(
+    p: &ConvexPolygon,
+    q: &ConvexPolygon,
+    certificate: &Certificate,
+) -> Result<(), CertificateError> {
+    verify_on(p.vertices(), q.vertices(), certificate)
+}
+
+/// [`verify`] for linked polygons, walking them in place (no conversion).
+///
+/// # Errors
+/// As [`verify`].
+pub fn verify_linked(
+    p: &LinkedPolygon,
+    q: &LinkedPolygon,
+    certificate: &Certificate,
+) -> Result<(), CertificateError> {
+    verify_on(p, q, certificate)
+}
+
+fn verify_on<A: Boundary + ?Sized, B: Boundary + ?Sized>(
+    p: &A,
+    q: &B,
+    certificate: &Certificate,
+) -> Result<(), CertificateError> {
+    let k = Exact;
+    match *certificate {
+        Certificate::Separated { of, from, to } => match of {
+            Which::P => check_separated(k, p, q, of, from, to),
+            Which::Q => check_separated(k, q, p, of, from, to),
+        },
+        Certificate::VertexInside { of, point } => match of {
+            Which::P => check_inside(k, p, q, of, point),
+            Which::Q => check_inside(k, q, p, of, point),
+        },
+        Certificate::CrossingEdges { p: pe, q: qe } => {
+            find_edge(p, Which::P, pe[0], pe[1])?;
+            find_edge(q, Which::Q, qe[0], qe[1])?;
+            match segment_contact(k, pe[0], pe[1], qe[0], qe[1]) {
+                SegmentContact::Disjoint => Err(CertificateError::EdgesDisjoint { p: pe, q: qe }),
+                _ => Ok(()),
+            }
+        }
+    }
+}
+
+/// The position of vertex `point` of `poly` (a scan; exact equality).
+fn find_vertex<A: Boundary + ?Sized>(poly: &A, of: Which, point: Point) -> Result<usize, CertificateError> {
+    (0..poly.count())
+        .find(|&v| poly.at(v) == point)
+        .ok_or(CertificateError::NotAVertex { of, point })
+}
+
+/// Checks that `from` → `to` is a counter-clockwise edge of `poly`.
+fn find_edge<A: Boundary + ?Sized>(
+    poly: &A,
+    of: Which,
+    from: Point,
+    to: Point,
+) -> Result<(), CertificateError> {
+    let v = find_vertex(poly, of, from)?;
+    find_vertex(poly, of, to)?;
+    let next = poly.at(poly.next(v));
+    if next == to {
+        Ok(())
+    } else if poly.at(poly.prev(v)) == to {
+        Err(CertificateError::Clockwise { of, from, to })
+    } else {
+        Err(CertificateError::NotAnEdge { of, from, to, next })
+    }
+}
+
+fn check_separated<A: Boundary + ?Sized, B: Boundary + ?Sized>(
+    k: Exact,
+    a: &A,
+    b: &B,
+    of: Which,
+    from: Point,
+    to: Point,
+) -> Result<(), CertificateError> {
+    find_edge(a, of, from, to)?;
+    for v in 0..b.count() {
+        let vertex = b.at(v);
+        let side = k.orient(from, to, vertex);
+        if side != Cw {
+            return Err(CertificateError::NotSeparating {
+                of,
+                from,
+                to,
+                vertex,
+                side,
+            });
+        }
+    }
+    Ok(())
+}
+
+fn check_inside<A: Boundary + ?Sized, B: Boundary + ?Sized>(
+    k: Exact,
+    a: &A,
+    b: &B,
+    of: Which,
+    point: Point,
+) -> Result<(), CertificateError> {
+    find_vertex(a, of, point)?;
+    for v in 0..b.count() {
+        let (from, to) = (b.at(v), b.at(b.next(v)));
+        if k.orient(from, to, point) == Cw {
+            return Err(CertificateError::Outside { of, point, from, to });
+        }
+    }
+    Ok(())
+}
+
+// ---------------------------------------------------------------------------------
+// Derivation helpers shared by the algorithms.
+// ---------------------------------------------------------------------------------
+
+/// Whether the edge `u` → `v` of one polygon separates the other polygon `b`, given
+/// that polygon's vertex `w`: `w` is strictly right of the edge's line and neither of
+/// its neighbours lies deeper on the inner side (`w` is extreme against the edge, and
+/// on a convex polygon a local extreme is global). Three predicates.
+#[inline]
+pub(crate) fn separates<K: Kernel, B: Boundary + ?Sized>(k: K, u: Point, v: Point, b: &B, w: usize) -> bool {
+    let x = b.at(w);
+    k.orient(u, v, x) == Cw
+        && k.cross(u, v, x, b.at(b.next(w))) != Ccw
+        && k.cross(u, v, x, b.at(b.prev(w))) != Ccw
+}
+
+/// A separating edge at the faces where one closed separating line supports both
+/// polygons: `face_a` holds the vertices of `a` extreme in the line's normal direction
+/// (towards `b`), `face_b` those of `b` extreme the other way (one vertex, or the two
+/// ends of an edge parallel to the line; extra vertices only cost time). Tries the
+/// edges of `b` at `face_b` against `face_a`, then the edges of `a` at `face_a`
+/// against `face_b`, each with [`separates`].
+///
+/// Some candidate succeeds whenever the faces are right and the polygons disjoint: the
+/// vertex of a − b extreme in the line's normal direction lies at the faces, and one
+/// of the edges of a − b next to that face separates 0 (module docs). The certificate
+/// names `a` as [`Which::P`].
+pub(crate) fn from_faces<K: Kernel, A: Boundary + ?Sized, B: Boundary + ?Sized>(
+    k: K,
+    a: &A,
+    face_a: &[usize],
+    b: &B,
+    face_b: &[usize],
+) -> Option<Certificate> {
+    for &x in face_b {
+        for (u, v) in [(b.prev(x), x), (x, b.next(x))] {
+            let (pu, pv) = (b.at(u), b.at(v));
+            if face_a.iter().any(|&y| separates(k, pu, pv, a, y)) {
+                return Some(Certificate::Separated {
+                    of: Which::Q,
+                    from: pu,
+                    to: pv,
+                });
+            }
+        }
+    }
+    for &y in face_a {
+        for (u, v) in [(a.prev(y), y), (y, a.next(y))] {
+            let (pu, pv) = (a.at(u), a.at(v));
+            if face_b.iter().any(|&x| separates(k, pu, pv, b, x)) {
+                return Some(Certificate::Separated {
+                    of: Which::P,
+                    from: pu,
+                    to: pv,
+                });
+            }
+        }
+    }
+    None
+}
+
+/// [`from_faces`] for a closed separating line `s` → `e` through (or parallel to the
+/// support at) the extreme vertices `a0` of `a` (on the right) and `b0` of `b` (on the
+/// left): each face is the vertex plus a neighbour whose edge to it is parallel to the
+/// line.
+pub(crate) fn from_support<K: Kernel, A: Boundary + ?Sized, B: Boundary + ?Sized>(
+    k: K,
+    (s, e): (Point, Point),
+    a: &A,
+    a0: usize,
+    b: &B,
+    b0: usize,
+) -> Option<Certificate> {
+    let face = |poly: &dyn Fn(usize) -> Point, v: usize, prev: usize, next: usize| {
+        let mut f = [v, v, v];
+        let mut len = 1;
+        for nb in [prev, next] {
+            if k.cross(s, e, poly(v), poly(nb)) == Collinear {
+                f[len] = nb;
+                len += 1;
+            }
+        }
+        (f, len)
+    };
+    let (fa, la) = face(&|i| a.at(i), a0, a.prev(a0), a.next(a0));
+    let (fb, lb) = face(&|i| b.at(i), b0, b.prev(b0), b.next(b0));
+    from_faces(k, a, &fa[..la], b, &fb[..lb])
+}
+
+/// `v` is a vertex of the convex polygon whose directed line `s` → `e` has the polygon on
+/// its closed right side: neither neighbour of `v` lies strictly left of the line through
+/// `v` parallel to it, so (by convexity) no vertex does. Two predicates.
+#[inline]
+pub(crate) fn supports_right<K: Kernel, A: Boundary + ?Sized>(
+    k: K,
+    (s, e): (Point, Point),
+    a: &A,
+    v: usize,
+) -> bool {
+    let x = a.at(v);
+    k.cross(s, e, x, a.at(a.next(v))) != Ccw && k.cross(s, e, x, a.at(a.prev(v))) != Ccw
+}
+
+/// As [`supports_right`], for a polygon on the closed left side.
+#[inline]
+pub(crate) fn supports_left<K: Kernel, A: Boundary + ?Sized>(
+    k: K,
+    (s, e): (Point, Point),
+    a: &A,
+    v: usize,
+) -> bool {
+    let x = a.at(v);
+    k.cross(s, e, x, a.at(a.next(v))) != Cw && k.cross(s, e, x, a.at(a.prev(v))) != Cw
+}
+
+/// Whether directions `a` and `b` (each from its first point to its second) are equal.
+#[inline]
+pub(crate) fn same_direction<K: Kernel>(k: K, a: (Point, Point), b: (Point, Point)) -> bool {
+    k.cross(a.0, a.1, b.0, b.1) == Collinear && k.dot(a.0, a.1, b.0, b.1) == Sign::Positive
+}
+
+/// Whether direction `a` is turned further counter-clockwise from `base` than `c`,
+/// with turns measured in [0, 2π).
+#[inline]
+pub(crate) fn turn_gt<K: Kernel>(k: K, base: (Point, Point), a: (Point, Point), c: (Point, Point)) -> bool {
+    let class = |d: (Point, Point)| match k.cross(base.0, base.1, d.0, d.1) {
+        Ccw => 1,
+        Cw => 3,
+        Collinear => {
+            if k.dot(base.0, base.1, d.0, d.1) == Sign::Positive {
+                0
+            } else {
+                2
+            }
+        }
+    };
+    let (ca, cc) = (class(a), class(c));
+    if ca != cc {
+        ca > cc
+    } else {
+        (ca == 1 || ca == 3) && k.cross(c.0, c.1, a.0, a.1) == Ccw
+    }
+}
+
+/// A vertex of the convex polygon `v` (counter-clockwise) farthest to the left of the
+/// directed line `s` → `e`, by binary search: O(log n) predicates.
+///
+/// Leftness grows along edges turned less than the reversed direction e → s (counted
+/// from edge 0's direction, in [0, 2π)) and shrinks along the others, so the extreme
+/// vertex starts the first edge turned at least that far.
+pub(crate) fn extreme_left<K: Kernel>(k: K, v: &[Point], (s, e): (Point, Point)) -> usize {
+    let n = v.len();
+    let base = (v[0], v[1]);
+    let target = (e, s);
+    // First index i in 0..n with turn(edge i) ≥ turn(target); n if none.
+    let reached = |i: usize| !turn_gt(k, base, target, (v[i], v[(i + 1) % n]));
+    let (mut lo, mut hi) = (0, n);
+    while lo < hi {
+        let mid = lo + (hi - lo) / 2;
+        if reached(mid) {
+            hi = mid;
+        } else {
+            lo = mid + 1;
+        }
+    }
+    lo % n
+}
+
+/// The start of the edge between positions `i` and `j` of a polygon of `n` vertices, if
+/// they are consecutive (in either order).
+#[inline]
+fn edge_between(n: usize, i: usize, j: usize) -> Option<usize> {
+    if j == if i + 1 == n { 0 } else { i + 1 } {
+        Some(i)
+    } else if i == if j + 1 == n { 0 } else { j + 1 } {
+        Some(j)
+    } else {
+        None
+    }
+}
+
+/// What [`reduce_chord`] found.
+enum Reduced {
+    /// The edge starting at this index meets the segment.
+    Edge(usize),
+    /// This endpoint of the segment lies in the polygon.
+    Inside(Point),
+    /// Only an inconsistent kernel gets here.
+    Fail,
+}
+
+/// The chord `av[i]`–`av[j]` of a convex polygon (not an edge) crosses the segment `s`–`t`
+/// properly (a single point X inside both, every endpoint strictly off the other's
+/// line). Finds an edge of the polygon meeting the segment, or an endpoint of the
+/// segment inside the polygon, with one binary search on the chain from `i` to `j`.
+///
+/// The chain runs counter-clockwise from `av[i]` to `av[j]`, on the right of the chord, and
+/// crosses the line st exactly once (its ends are strictly on opposite sides), at a point
+/// Y of some edge. On the line, the segment [X, Y] lies in the polygon. If the segment
+/// st does not reach Y, its endpoint on the chain's side lies strictly between X and Y.
+fn reduce_chord<K: Kernel>(k: K, av: &[Point], i: usize, j: usize, s: Point, t: Point) -> Reduced {
+    let n = av.len();
+    let (a, b) = (av[i], av[j]);
+    let near = if k.orient(a, b, s) == Cw {
+        s
+    } else if k.orient(a, b, t) == Cw {
+        t
+    } else {
+        return Reduced::Fail;
+    };
+    let sigma = k.orient(s, t, a);
+    let len = if j >= i { j - i } else { j + n - i };
+    let side = |off: usize| {
+        let idx = i + off;
+        k.orient(s, t, av[if idx >= n { idx - n } else { idx }])
+    };
+    // side(lo) == sigma, side(hi) != sigma.
+    let (mut lo, mut hi) = (0, len);
+    while hi - lo > 1 {
+        let mid = lo + (hi - lo) / 2;
+        if side(mid) == sigma {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let e = (i + lo) % n;
+    let (u, v) = (av[e], av[(e + 1) % n]);
+    if segment_contact(k, u, v, s, t).meets() {
+        Reduced::Edge(e)
+    } else {
+        Reduced::Inside(near)
+    }
+}
+
+/// An endpoint of one segment on the other segment, as a vertex-inside certificate: the
+/// segment `pv[i]`–`pv[j]` lies in P and `qv[c]`–`qv[d]` in Q (chords or edges).
+fn endpoint_on_other<K: Kernel>(k: K, (a, b): (Point, Point), (s, t): (Point, Point)) -> Option<Certificate> {
+    for x in [s, t] {
+        if point_on_segment(k, a, b, x) {
+            return Some(Certificate::VertexInside {
+                of: Which::Q,
+                point: x,
+            });
+        }
+    }
+    for x in [a, b] {
+        if point_on_segment(k, s, t, x) {
+            return Some(Certificate::VertexInside {
+                of: Which::P,
+                point: x,
+            });
+        }
+    }
+    None
+}
+
+/// Turns "the segment between vertices `i` and `j` of P meets the segment between
+/// vertices `c` and `d` of Q" into a certificate: chords are segments between any two
+/// vertices (edges included), and each lies in its polygon, so their common point is
+/// in both. An endpoint of one on the other is a vertex inside; two edges are crossing
+/// edges; a chord is replaced by an edge with [`reduce_chord`] (one binary search).
+///
+/// `None` when the segments do not meet (only an inconsistent kernel or a wrong caller
+/// gets here).
+///
+/// # Complexity
+/// O(log n + log m): at most one binary search per chord.
+pub(crate) fn resolve_chords<K: Kernel>(
+    k: K,
+    pv: &[Point],
+    (i, j): (usize, usize),
+    qv: &[Point],
+    (c, d): (usize, usize),
+) -> Option<Certificate> {
+    let (a, b, s, t) = (pv[i], pv[j], qv[c], qv[d]);
+    let contact = segment_contact(k, a, b, s, t);
+    if !contact.meets() {
+        return None;
+    }
+    let p_edge = edge_between(pv.len(), i, j);
+    let q_edge = edge_between(qv.len(), c, d);
+    if let (Some(e), Some(f)) = (p_edge, q_edge) {
+        return Some(crossing(pv, e, qv, f));
+    }
+    if contact != SegmentContact::Crossing {
+        return endpoint_on_other(k, (a, b), (s, t));
+    }
+    let e = match p_edge {
+        Some(e) => e,
+        None => match reduce_chord(k, pv, i, j, s, t) {
+            Reduced::Edge(e) => e,
+            Reduced::Inside(x) => {
+                return Some(Certificate::VertexInside {
+                    of: Which::Q,
+                    point: x,
+                });
+            }
+            Reduced::Fail => return None,
+        },
+    };
+    let (u, v) = (pv[e], pv[(e + 1) % pv.len()]);
+    if let Some(f) = q_edge {
+        return Some(crossing(pv, e, qv, f));
+    }
+    match segment_contact(k, u, v, s, t) {
+        SegmentContact::Crossing => {}
+        SegmentContact::Disjoint => return None,
+        _ => return endpoint_on_other(k, (u, v), (s, t)),
+    }
+    match reduce_chord(k, qv, c, d, u, v) {
+        Reduced::Edge(f) => Some(crossing(pv, e, qv, f)),
+        Reduced::Inside(x) => Some(Certificate::VertexInside {
+            of: Which::P,
+            point: x,
+        }),
+        Reduced::Fail => None,
+    }
+}
+
+#[inline]
+fn crossing(pv: &[Point], e: usize, qv: &[Point], f: usize) -> Certificate {
+    Certificate::CrossingEdges {
+        p: [pv[e], pv[(e + 1) % pv.len()]],
+        q: [qv[f], qv[(f + 1) % qv.len()]],
+    }
+}
+
+/// A vertex named by a witness of intersecting hulls: its coordinates, its polygon,
+/// and its arena position when known.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct WitnessVertex {
+    pub(crate) point: Point,
+    pub(crate) of: Which,
+    pub(crate) pos: Option<usize>,
+}
+
+/// At most this many witness points per polygon.
+const WITNESS_MAX: usize = 9;
+
+/// The convex hull of at most [`WITNESS_MAX`] points (indices into them), counter-clockwise
+/// without collinear points: one point, a segment, or a polygon.
+fn small_hull<K: Kernel>(k: K, pts: &[Point]) -> ([usize; WITNESS_MAX], usize) {
+    let mut order = [0usize; WITNESS_MAX];
+    let n = pts.len().min(WITNESS_MAX);
+    for (i, o) in order.iter_mut().enumerate().take(n) {
+        *o = i;
+    }
+    if n == 0 {
+        return (order, 0);
+    }
+    order[..n].sort_by(|&a, &b| pts[a].lex_cmp(pts[b]));
+    // Andrew's monotone chain, lower then upper, dropping collinear points.
+    let mut hull = [0usize; 2 * WITNESS_MAX];
+    let mut h = 0;
+    for pass in 0..2 {
+        let start = h;
+        for step in 0..n {
+            let i = if pass == 0 {
+                order[step]
+            } else {
+                order[n - 1 - step]
+            };
+            while h >= start + 2 && k.orient(pts[hull[h - 2]], pts[hull[h - 1]], pts[i]) != Ccw {
+                h -= 1;
+            }
+            hull[h] = i;
+            h += 1;
+        }
+        h -= 1; // the last point starts the other chain
+    }
+    let mut out = [0usize; WITNESS_MAX];
+    let mut len = 0;
+    for &i in &hull[..h.max(1)] {
+        if (len == 0 || pts[out[len - 1]] != pts[i]) && len < WITNESS_MAX {
+            out[len] = i;
+            len += 1;
+        }
+    }
+    while len > 1 && pts[out[len - 1]] == pts[out[0]] {
+        len -= 1;
+    }
+    (out, len)
+}
+
+/// Whether `x` lies in the hull `hull` (indices into `pts`) of [`small_hull`].
+fn in_small_hull<K: Kernel>(k: K, pts: &[Point], hull: &[usize], x: Point) -> bool {
+    match hull.len() {
+        0 => false,
+        1 => pts[hull[0]] == x,
+        2 => point_on_segment(k, pts[hull[0]], pts[hull[1]], x),
+        n => (0..n).all(|i| k.orient(pts[hull[i]], pts[hull[(i + 1) % n]], x) != Cw),
+    }
+}
+
+/// The segments bounding a hull of [`small_hull`]: (i, j) index pairs.
+fn hull_edges(hull: &[usize]) -> impl Iterator<Item = (usize, usize)> + '_ {
+    let n = hull.len();
+    let count = match n {
+        0 | 1 => 0,
+        2 => 1,
+        _ => n,
+    };
+    (0..count).map(move |i| (hull[i], hull[(i + 1) % n]))
+}
+
+/// What [`witness_certificate`] found among a few vertices of P and of Q.
+pub(crate) enum Radon {
+    /// A vertex of one in the hull of the other's vertices: a vertex inside.
+    Inside(Certificate),
+    /// A segment between two of P's vertices crosses one between two of Q's: chords to
+    /// resolve along the boundaries (the vertices' positions, when known).
+    Chords([Option<usize>; 2], [Option<usize>; 2]),
+    /// The hulls do not meet (only an inconsistent kernel reports such points).
+    Nothing,
+}
+
+/// A certificate from a few vertices of P and of Q whose hulls (P's vertices against
+/// Q's) intersect, as the LP reports them: a vertex of one in the hull of the other's
+/// (so in that polygon), or else two crossing chords.
+pub(crate) fn witness_certificate<K: Kernel>(k: K, points: impl Iterator<Item = WitnessVertex>) -> Radon {
+    let blank = WitnessVertex {
+        point: Point::default(),
+        of: Which::P,
+        pos: None,
+    };
+    let mut sets = [[blank; WITNESS_MAX]; 2];
+    let mut lens = [0usize; 2];
+    for w in points {
+        let s = (w.of == Which::Q) as usize;
+        if lens[s] < WITNESS_MAX {
+            sets[s][lens[s]] = w;
+            lens[s] += 1;
+        }
+    }
+    let pts: [[Point; WITNESS_MAX]; 2] = [0, 1].map(|s| sets[s].map(|w| w.point));
+    let (pp, qp) = (&pts[0][..lens[0]], &pts[1][..lens[1]]);
+    let (hp, lp) = small_hull(k, pp);
+    let (hq, lq) = small_hull(k, qp);
+    let (hp, hq) = (&hp[..lp], &hq[..lq]);
+    if let Some(&x) = pp.iter().find(|&&x| in_small_hull(k, qp, hq, x)) {
+        return Radon::Inside(Certificate::VertexInside {
+            of: Which::P,
+            point: x,
+        });
+    }
+    if let Some(&x) = qp.iter().find(|&&x| in_small_hull(k, pp, hp, x)) {
+        return Radon::Inside(Certificate::VertexInside {
+            of: Which::Q,
+            point: x,
+        });
+    }
+    for (a, b) in hull_edges(hp) {
+        for (c, d) in hull_edges(hq) {
+            if segment_contact(k, pp[a], pp[b], qp[c], qp[d]).meets() {
+                return Radon::Chords([sets[0][a].pos, sets[0][b].pos], [sets[1][c].pos, sets[1][d].pos]);
+            }
+        }
+    }
+    Radon::Nothing
+}
+
+/// Scratch buffers for [`examined_witness`], kept in a workspace so that a query
+/// allocates nothing in the steady state.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct WitnessScratch {
+    p: Vec<Point>,
+    q: Vec<Point>,
+    hull_p: Vec<Point>,
+    hull_q: Vec<Point>,
+}
+
+/// The convex hull of `pts` (sorted and deduplicated in place) into `out`,
+/// counter-clockwise without collinear points (Andrew's monotone chain).
+fn hull_into<K: Kernel>(k: K, pts: &mut Vec<Point>, out: &mut Vec<Point>) {
+    pts.sort_by(|a, b| a.lex_cmp(*b));
+    pts.dedup();
+    out.clear();
+    if pts.len() < 3 {
+        out.extend_from_slice(pts);
+        return;
+    }
+    for pass in 0..2 {
+        let start = out.len();
+        let iter: Box<dyn Iterator<Item = &Point>> = if pass == 0 {
+            Box::new(pts.iter())
+        } else {
+            Box::new(pts.iter().rev())
+        };
+        for &x in iter {
+            while out.len() >= start + 2 && k.orient(out[out.len() - 2], out[out.len() - 1], x) != Ccw {
+                out.pop();
+            }
+            out.push(x);
+        }
+        out.pop(); // the last point starts the other chain
+    }
+    if out.len() < 3 {
+        // All collinear: keep the two extremes.
+        out.clear();
+        out.push(pts[0]);
+        out.push(pts[pts.len() - 1]);
+    }
+}
+
+/// Whether `x` lies in a hull from [`hull_into`] (closed): O(log h) by the fan from
+/// its first vertex.
+fn in_hull<K: Kernel>(k: K, h: &[Point], x: Point) -> bool {
+    let n = h.len();
+    match n {
+        0 => false,
+        1 => h[0] == x,
+        2 => point_on_segment(k, h[0], h[1], x),
+        _ => {
+            if k.orient(h[0], h[1], x) == Cw || k.orient(h[n - 1], h[0], x) == Cw {
+                return false;
+            }
+            let (mut lo, mut hi) = (1, n - 1);
+            while hi - lo > 1 {
+                let mid = (lo + hi) / 2;
+                if k.orient(h[0], h[mid], x) != Cw {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            k.orient(h[lo], h[hi], x) != Cw
+        }
+    }
+}
+
+/// A vertex of P in the hull of the Q-vertices among `points`, or a vertex of Q in the
+/// hull of the P-vertices (each hull lies in its polygon): a certificate from the
+/// points an LP examined before it found their hulls intersecting. O(t log t) for t
+/// points. `None` when no point lies in the other hull (the hulls then only cross).
+pub(crate) fn examined_witness<K: Kernel>(
+    k: K,
+    points: impl Iterator<Item = WitnessVertex>,
+    scratch: &mut WitnessScratch,
+) -> Option<Certificate> {
+    let WitnessScratch { p, q, hull_p, hull_q } = scratch;
+    p.clear();
+    q.clear();
+    for w in points {
+        match w.of {
+            Which::P => p.push(w.point),
+            Which::Q => q.push(w.point),
+        }
+    }
+    hull_into(k, p, hull_p);
+    hull_into(k, q, hull_q);
+    if let Some(&x) = p.iter().find(|&&x| in_hull(k, hull_q, x)) {
+        return Some(Certificate::VertexInside {
+            of: Which::P,
+            point: x,
+        });
+    }
+    q.iter()
+        .find(|&&x| in_hull(k, hull_p, x))
+        .map(|&x| Certificate::VertexInside {
+            of: Which::Q,
+            point: x,
+        })
+}
+
+/// The edge of a linked polygon between positions `u` and `w`, as its start, if they
+/// are consecutive.
+#[inline]
+fn linked_edge(poly: &LinkedPolygon, u: usize, w: usize) -> Option<usize> {
+    if poly.next_at(u) == w {
+        Some(u)
+    } else if poly.next_at(w) == u {
+        Some(w)
+    } else {
+        None
+    }
+}
+
+/// [`reduce_chord`] for a linked polygon, without random access: the vertex `start`
+/// lies strictly on one side σ of the line `s`–`t` (it is an end of a chord crossing
+/// the segment st). The boundary's part strictly on side σ is one run of vertices; its
+/// ends are the two edges where the boundary crosses the line, at Y1 and Y2, and the
+/// polygon meets the line in [Y1, Y2], which holds the crossing X of chord and segment.
+/// From the vertex of `starts` ∪ {`start`} on side σ nearest the line, the walk towards
+/// the line reaches one end (distances along the run are unimodal) without passing
+/// another vertex of `starts`. If that edge misses the segment, the segment's endpoint
+/// nearer its line lies between X and Y1, inside the polygon.
+fn reduce_linked<K: Kernel>(
+    k: K,
+    poly: &LinkedPolygon,
+    start: usize,
+    starts: &[u32],
+    (s, t): (Point, Point),
+) -> Reduced {
+    let sigma = k.orient(s, t, poly.point_at(start));
+    if sigma == Collinear {
+        return Reduced::Fail;
+    }
+    // x is nearer the line than y (both on side σ).
+    let nearer = |x: Point, y: Point| k.cross(s, t, y, x) == sigma.reverse();
+    let mut v = start;
+    for &pos in starts {
+        let x = poly.point_at(pos as usize);
+        if k.orient(s, t, x) == sigma && nearer(x, poly.point_at(v)) {
+            v = pos as usize;
+        }
+    }
+    let on_side = |pos: usize| k.orient(s, t, poly.point_at(pos)) == sigma;
+    let (mut cur, forward) = {
+        let (next, prev) = (poly.next_at(v), poly.prev_at(v));
+        if !on_side(next) || (on_side(prev) && !nearer(poly.point_at(prev), poly.point_at(next))) {
+            (v, true)
+        } else {
+            (v, false)
+        }
+    };
+    let mut steps = poly.len();
+    let edge = loop {
+        let nb = if forward {
+            poly.next_at(cur)
+        } else {
+            poly.prev_at(cur)
+        };
+        if !on_side(nb) {
+            break if forward { cur } else { nb };
+        }
+        cur = nb;
+        steps -= 1;
+        if steps == 0 {
+            return Reduced::Fail;
+        }
+    };
+    let (u, w) = (poly.point_at(edge), poly.point_at(poly.next_at(edge)));
+    if segment_contact(k, u, w, s, t).meets() {
+        return Reduced::Edge(edge);
+    }
+    let side = k.orient(u, w, s);
+    Reduced::Inside(if k.cross(u, w, t, s) == side.reverse() {
+        s
+    } else {
+        t
+    })
+}
+
+/// [`resolve_chords`] for linked polygons: the segment between positions `a1`, `a2` of
+/// P meets the segment between `b1`, `b2` of Q. Chords are reduced to edges by walks
+/// ([`reduce_linked`]) that start from the nearest vertex of `p_starts` (of
+/// `q_starts`), so each walk stays within one gap between those vertices along the
+/// boundary: expected O(n / r) for r random samples. `None` when the segments do not
+/// meet or an inconsistent kernel derails a walk.
+pub(crate) fn resolve_linked_chords<K: Kernel>(
+    k: K,
+    p: &LinkedPolygon,
+    (a1, a2): (usize, usize),
+    p_starts: &[u32],
+    q: &LinkedPolygon,
+    (b1, b2): (usize, usize),
+    q_starts: &[u32],
+) -> Option<Certificate> {
+    let (a, b, s, t) = (p.point_at(a1), p.point_at(a2), q.point_at(b1), q.point_at(b2));
+    let contact = segment_contact(k, a, b, s, t);
+    if !contact.meets() {
+        return None;
+    }
+    let edge_points = |poly: &LinkedPolygon, e: usize| [poly.point_at(e), poly.point_at(poly.next_at(e))];
+    let (p_edge, q_edge) = (linked_edge(p, a1, a2), linked_edge(q, b1, b2));
+    if let (Some(e), Some(f)) = (p_edge, q_edge) {
+        return Some(Certificate::CrossingEdges {
+            p: edge_points(p, e),
+            q: edge_points(q, f),
+        });
+    }
+    if contact != SegmentContact::Crossing {
+        return endpoint_on_other(k, (a, b), (s, t));
+    }
+    let e = match p_edge {
+        Some(e) => e,
+        None => match reduce_linked(k, p, a1, p_starts, (s, t)) {
+            Reduced::Edge(e) => e,
+            Reduced::Inside(x) => {
+                return Some(Certificate::VertexInside {
+                    of: Which::Q,
+                    point: x,
+                });
+            }
+            Reduced::Fail => return None,
+        },
+    };
+    let [u, v] = edge_points(p, e);
+    if let Some(f) = q_edge {
+        return segment_contact(k, u, v, s, t)
+            .meets()
+            .then(|| Certificate::CrossingEdges {
+                p: [u, v],
+                q: edge_points(q, f),
+            });
+    }
+    match segment_contact(k, u, v, s, t) {
+        SegmentContact::Crossing => {}
+        SegmentContact::Disjoint => return None,
+        _ => return endpoint_on_other(k, (u, v), (s, t)),
+    }
+    match reduce_linked(k, q, b1, q_starts, (u, v)) {
+        Reduced::Edge(f) => Some(Certificate::CrossingEdges {
+            p: [u, v],
+            q: edge_points(q, f),
+        }),
+        Reduced::Inside(x) => Some(Certificate::VertexInside {
+            of: Which::P,
+            point: x,
+        }),
+        Reduced::Fail => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn poly(pts: &[[f64; 2]]) -> ConvexPolygon {
+        ConvexPolygon::new(pts.iter().copied()).unwrap()
+    }
+
+    const SQ: [[f64; 2]; 4] = [[0., 0.], [2., 0.], [2., 2.], [0., 2.]];
+
+    #[test]
+    fn verify_accepts_each_kind_and_names_what_is_wrong() {
+        let p = poly(&SQ);
+        let q = poly(&[[3., 0.], [4., 0.], [4., 1.]]);
+        let pt = Point::new;
+        let sep = Certificate::Separated {
+            of: Which::P,
+            from: pt(2., 0.),
+            to: pt(2., 2.),
+        };
+        assert_eq!(verify(&p, &q, &sep), Ok(()));
+        assert!(!sep.intersects());
+        // The same edge walked clockwise.
+        let cw = Certificate::Separated {
+            of: Which::P,
+            from: pt(2., 2.),
+            to: pt(2., 0.),
+        };
+        let e = verify(&p, &q, &cw).unwrap_err();
+        assert!(matches!(e, CertificateError::Clockwise { .. }));
+        assert!(e.to_string().contains("clockwise"), "{e}");
+        // Not consecutive.
+        let diag = Certificate::Separated {
+            of: Which::P,
+            from: pt(0., 0.),
+            to: pt(2., 2.),
+        };
+        let e = verify(&p, &q, &diag).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "(0.0, 0.0) → (2.0, 2.0) is not an edge of P: the vertex after (0.0, 0.0) (counter-clockwise) is (2.0, 0.0)"
+        );
+        // The wrong polygon.
+        let wrong = Certificate::Separated {
+            of: Which::Q,
+            from: pt(2., 0.),
+            to: pt(2., 2.),
+        };
+        assert_eq!(
+            verify(&p, &q, &wrong).unwrap_err().to_string(),
+            "(2.0, 0.0) is not a vertex of Q"
+        );
+        // An edge that does not separate: Q lies on its inner side.
+        let bad = Certificate::Separated {
+            of: Which::P,
+            from: pt(0., 2.),
+            to: pt(0., 0.),
+        };
+        assert!(matches!(
+            verify(&p, &q, &bad),
+            Err(CertificateError::NotSeparating { side: Ccw, .. })
+        ));
+
+        let r = poly(&[[1., 1.], [3., 1.], [3., 3.]]);
+        let inside = Certificate::VertexInside {
+            of: Which::Q,
+            point: pt(1., 1.),
+        };
+        assert_eq!(verify(&p, &r, &inside), Ok(()));
+        let outside = Certificate::VertexInside {
+            of: Which::Q,
+            point: pt(3., 3.),
+        };
+        assert_eq!(
+            verify(&p, &r, &outside).unwrap_err().to_string(),
+            "vertex (3.0, 3.0) of Q is outside P: strictly right of its edge (2.0, 0.0) → (2.0, 2.0)"
+        );
+        let cross = Certificate::CrossingEdges {
+            p: [pt(2., 0.), pt(2., 2.)],
+            q: [pt(1., 1.), pt(3., 1.)],
+        };
+        assert_eq!(verify(&p, &r, &cross), Ok(()));
+        let apart = Certificate::CrossingEdges {
+            p: [pt(0., 0.), pt(2., 0.)],
+            q: [pt(3., 1.), pt(3., 3.)],
+        };
+        assert!(matches!(
+            verify(&p, &r, &apart),
+            Err(CertificateError::EdgesDisjoint { .. })
+        ));
+        // Linked polygons in shuffled arena order verify the same way.
+        use rand::SeedableRng;
+        let mut rng = rand::rngs::SmallRng::seed_from_u64(3);
+        let (lp, lr) = (
+            LinkedPolygon::from_convex_shuffled(&p, &mut rng),
+            LinkedPolygon::from_convex_shuffled(&r, &mut rng),
+        );
+        assert_eq!(verify_linked(&lp, &lr, &cross), Ok(()));
+        // (The arena order decides which offending edge is named.)
+        assert!(matches!(
+            verify_linked(&lp, &lr, &outside),
+            Err(CertificateError::Outside { .. })
+        ));
+    }
+
+    #[test]
+    fn resolve_chords_turns_diagonals_into_witnesses() {
+        // Two squares rotated against each other: the diagonals cross at the centre.
+        let p = poly(&[[0., 0.], [4., 0.], [4., 4.], [0., 4.]]);
+        let q = poly(&[[2., -1.], [5., 2.], [2., 5.], [-1., 2.]]);
+        let c = resolve_chords(Exact, p.vertices(), (0, 2), q.vertices(), (0, 2)).unwrap();
+        assert_eq!(verify(&p, &q, &c), Ok(()), "{c:?}");
+        // A thin cross: no vertex inside, only crossing edges.
+        let h = poly(&[[-10., -1.], [10., -1.], [10., 1.], [-10., 1.]]);
+        let v = poly(&[[-1., -10.], [1., -10.], [1., 10.], [-1., 10.]]);
+        let c = resolve_chords(Exact, h.vertices(), (0, 2), v.vertices(), (1, 3)).unwrap();
+        assert!(matches!(c, Certificate::CrossingEdges { .. }), "{c:?}");
+        assert_eq!(verify(&h, &v, &c), Ok(()));
+        // Disjoint segments: no certificate.
+        let far = poly(&[[20., 20.], [21., 20.], [21., 21.]]);
+        assert_eq!(
+            resolve_chords(Exact, h.vertices(), (0, 2), far.vertices(), (0, 1)),
+            None
+        );
+    }
+
+    #[test]
+    fn faces_of_a_common_support_line_give_the_separating_edge() {
+        let p = poly(&SQ);
+        let q = poly(&[[3., 3.], [4., 3.], [4., 4.]]);
+        // The line x + y = 5.5... through no vertex: faces (2,2) of P and (3,3) of Q.
+        let c = from_faces(Exact, p.vertices(), &[2], q.vertices(), &[0]).unwrap();
+        assert_eq!(verify(&p, &q, &c), Ok(()), "{c:?}");
+    }
+}
