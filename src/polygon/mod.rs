@@ -14,6 +14,7 @@
 //! # Errors
 //! Invalid input is a [`PolygonError`] naming the input vertex index and what is wrong.
 
+pub mod calipers;
 mod convex;
 mod error;
 mod hull;
