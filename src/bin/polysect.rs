@@ -5,6 +5,7 @@ use polysect::crossings::CrossingAlgorithm;
 use polysect::experiments::{self, Config, Experiment};
 use polysect::generate::{self, Family, Relation};
 use polysect::intersect::Algorithm;
+use polysect::polygon::HullAlgorithm;
 use polysect::protocol::{self, scene::SceneOptions, scene::SceneSession};
 use polysect::store::Strategy;
 use polysect::{ConvexPolygon, Exact, Fast, Kernel, Precision};
@@ -77,6 +78,17 @@ enum Command {
         algorithm: CrossingAlgorithm,
         #[arg(long, default_value = "exact", value_parser = parse_precision)]
         precision: Precision,
+    },
+    /// Convex hull and farthest pair of point sets, for JSON Lines {"points": [[x,y],...]}:
+    /// writes {"hull": [[x,y],...], "diameter": [[x,y],[x,y]]} per line (counter-clockwise
+    /// from the lowest, then leftmost, vertex; one point gives [p] and [p, p], collinear
+    /// points their two ends).
+    Hull {
+        /// Input file (JSON Lines); standard input when absent.
+        file: Option<String>,
+        /// Algorithm: graham (Graham's scan) or monotone (Andrew's monotone chain).
+        #[arg(long, default_value = "monotone", value_parser = parse_hull_algorithm)]
+        algorithm: HullAlgorithm,
     },
     /// Write generated pairs as JSON Lines in the `check` input format.
     Gen {
@@ -197,6 +209,10 @@ fn parse_crossing_algorithm(s: &str) -> Result<CrossingAlgorithm, String> {
     s.parse()
 }
 
+fn parse_hull_algorithm(s: &str) -> Result<HullAlgorithm, String> {
+    s.parse()
+}
+
 fn parse_precision(s: &str) -> Result<Precision, String> {
     s.parse()
 }
@@ -273,6 +289,9 @@ fn main() -> ExitCode {
             algorithm,
             precision,
         }) => crossings(file.as_deref(), algorithm, precision),
+        Some(Command::Hull { file, algorithm }) => {
+            open_input(file.as_deref()).and_then(|input| protocol::hull::hull(input, output(), algorithm))
+        }
         Some(Command::Gen {
             family,
             n,
@@ -459,6 +478,13 @@ fn list() -> io::Result<()> {
         "crossings:  {} (default {})",
         names.join(", "),
         CrossingAlgorithm::default()
+    )?;
+    let names: Vec<&str> = HullAlgorithm::ALL.iter().map(|a| a.name()).collect();
+    writeln!(
+        out,
+        "hulls:      {} (default {})",
+        names.join(", "),
+        HullAlgorithm::default()
     )?;
     writeln!(out, "precisions: fast, exact (default)")?;
     let names: Vec<&str> = Strategy::ALL.iter().map(|s| s.name()).collect();

@@ -1,8 +1,9 @@
 //! Polygon types: validated convex polygons as sorted arrays ([`ConvexPolygon`]),
 //! editable convex polygons as arena-backed doubly linked lists ([`LinkedPolygon`]),
 //! simple (possibly non-convex) polygons in either orientation ([`SimplePolygon`],
-//! validated by an exact O(n log n) sweep), and the convex hull of a point set
-//! ([`convex_hull`]).
+//! validated by an exact O(n log n) sweep), the convex hull of a point set
+//! ([`convex_hull`] by monotone chain, [`graham_scan`], both behind [`hull_vertices`]),
+//! and rotating calipers ([`calipers`]: diameter, width, least-area rectangle).
 //!
 //! # Orientation and cleaning
 //! Input may come clockwise or counter-clockwise, from any start vertex. The two
@@ -17,13 +18,15 @@
 pub mod calipers;
 mod convex;
 mod error;
+mod graham;
 mod hull;
 mod linked;
 mod simple;
 
 pub use convex::ConvexPolygon;
 pub use error::{EditError, PolygonError};
-pub use hull::convex_hull;
+pub use graham::{angular_order, graham_scan, pivot_index};
+pub use hull::{HullAlgorithm, convex_hull, hull_vertices};
 pub use linked::{LinkedPolygon, SampleWorkspace, VertexId};
 pub use simple::{SimplePolygon, SimplePolygonError};
 
