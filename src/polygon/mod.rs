@@ -3,7 +3,9 @@
 //! simple (possibly non-convex) polygons in either orientation ([`SimplePolygon`],
 //! validated by an exact O(n log n) sweep), the convex hull of a point set
 //! ([`convex_hull`] by monotone chain, [`graham_scan`], both behind [`hull_vertices`]),
-//! and rotating calipers ([`calipers`]: diameter, width, least-area rectangle).
+//! rotating calipers ([`calipers`]: diameter, width, least-area rectangle), and the
+//! O(log n) line, ray and segment queries on a convex polygon
+//! ([`ConvexPolygon::line_chord`] and its siblings).
 //!
 //! # Orientation and cleaning
 //! Input may come clockwise or counter-clockwise, from any start vertex. The two
@@ -20,6 +22,7 @@ mod convex;
 mod error;
 mod graham;
 mod hull;
+mod line_query;
 mod linked;
 mod simple;
 
@@ -27,6 +30,7 @@ pub use convex::ConvexPolygon;
 pub use error::{EditError, PolygonError};
 pub use graham::{angular_order, graham_scan, pivot_index};
 pub use hull::{HullAlgorithm, convex_hull, hull_vertices};
+pub use line_query::{Chord, ChordEnd, LineQueryError, line_chord_linear};
 pub use linked::{LinkedPolygon, SampleWorkspace, VertexId};
 pub use simple::{SimplePolygon, SimplePolygonError};
 
