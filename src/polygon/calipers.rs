@@ -211,14 +211,25 @@ impl Rectangle {
 /// Everything one caliper walk finds.
 struct Walk {
     diameter: (Point, Point),
-    width: Width,
-    rectangle: Rectangle,
+    /// With [`Want::Width`].
+    width: Option<Width>,
+    /// With [`Want::Rectangle`].
+    rectangle: Option<Rectangle>,
+}
+
+/// What a walk computes beyond the diameter.
+#[derive(Clone, Copy, PartialEq)]
+enum Want {
+    Diameter,
+    Width,
+    Rectangle,
 }
 
 /// The rotating-calipers walk over a strictly convex counter-clockwise chain of at
-/// least three vertices. `rect` adds the two calipers along the edge (only the
-/// rectangle needs them).
-fn walk<C: Cycle + ?Sized, K: Kernel>(k: K, c: &C, rect: bool) -> Walk {
+/// least three vertices. The width's comparisons are made only when asked for, and the
+/// two calipers along the edge run only for the rectangle.
+fn walk<C: Cycle + ?Sized, K: Kernel>(k: K, c: &C, want: Want) -> Walk {
+    let rect = want == Want::Rectangle;
     let n = c.len();
     let i0 = c.start();
     let (mut i, mut j) = (i0, c.next(i0));
@@ -254,10 +265,12 @@ fn walk<C: Cycle + ?Sized, K: Kernel>(k: K, c: &C, rect: bool) -> Walk {
             edge: (a, b),
             vertex: far,
         };
-        if width.is_none_or(|cur| {
-            let (ca, cb) = cur.edge;
-            k.sign(&HeightDiff([a, b, far], [ca, cb, cur.vertex])) == Sign::Negative
-        }) {
+        if want == Want::Width
+            && width.is_none_or(|cur| {
+                let (ca, cb) = cur.edge;
+                k.sign(&HeightDiff([a, b, far], [ca, cb, cur.vertex])) == Sign::Negative
+            })
+        {
             width = Some(w);
         }
         if rect {
@@ -292,16 +305,10 @@ fn walk<C: Cycle + ?Sized, K: Kernel>(k: K, c: &C, rect: bool) -> Walk {
         }
         i = i1;
     }
-    let width = width.expect("n ≥ 3 edges");
     Walk {
         diameter: best,
         width,
-        rectangle: rectangle.unwrap_or(Rectangle {
-            edge: width.edge,
-            low: width.edge.0,
-            high: width.edge.1,
-            far: width.vertex,
-        }),
+        rectangle,
     }
 }
 
@@ -322,12 +329,12 @@ pub fn farthest_pair(polygon: &ConvexPolygon) -> (Point, Point) {
 
 /// [`farthest_pair`] under any kernel.
 pub fn farthest_pair_with<K: Kernel>(k: K, polygon: &ConvexPolygon) -> (Point, Point) {
-    walk(k, polygon.vertices(), false).diameter
+    walk(k, polygon.vertices(), Want::Diameter).diameter
 }
 
 /// [`farthest_pair`] on a linked polygon, walking its links (no conversion). O(n).
 pub fn farthest_pair_linked(polygon: &LinkedPolygon) -> (Point, Point) {
-    walk(Exact, polygon, false).diameter
+    walk(Exact, polygon, Want::Diameter).diameter
 }
 
 /// The width of a convex polygon (the narrowest strip that holds it), exactly. O(n).
@@ -341,7 +348,9 @@ pub fn farthest_pair_linked(polygon: &LinkedPolygon) -> (Point, Point) {
 /// # Ok::<(), polysect::PolygonError>(())
 /// ```
 pub fn width(polygon: &ConvexPolygon) -> Width {
-    walk(Exact, polygon.vertices(), false).width
+    walk(Exact, polygon.vertices(), Want::Width)
+        .width
+        .expect("a polygon has edges")
 }
 
 /// The enclosing rectangle of least area of a convex polygon, exactly (its edge and
@@ -355,7 +364,9 @@ pub fn width(polygon: &ConvexPolygon) -> Width {
 /// # Ok::<(), polysect::PolygonError>(())
 /// ```
 pub fn min_area_rectangle(polygon: &ConvexPolygon) -> Rectangle {
-    walk(Exact, polygon.vertices(), true).rectangle
+    walk(Exact, polygon.vertices(), Want::Rectangle)
+        .rectangle
+        .expect("a polygon has edges")
 }
 
 /// The farthest pair of a point set, through its convex hull (monotone chain, then
@@ -396,7 +407,7 @@ pub fn farthest_pair_of_points(points: &[Point]) -> Result<(Point, Point), Polyg
 /// [`farthest_pair`] on a hull given as a strictly convex counter-clockwise vertex
 /// list of at least three vertices (not checked).
 pub(crate) fn farthest_pair_of_hull(hull: &[Point]) -> (Point, Point) {
-    walk(Exact, hull, false).diameter
+    walk(Exact, hull, Want::Diameter).diameter
 }
 
 /// The farthest pair of a point set by comparing every pair: the O(n²) reference the
