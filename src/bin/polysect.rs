@@ -3,6 +3,7 @@
 use clap::{Parser, Subcommand, ValueEnum};
 use polysect::crossings::CrossingAlgorithm;
 use polysect::experiments::{self, Config, Experiment};
+use polysect::generate::simple::{GenerateError, PointDistribution, SimpleMethod, random_simple_polygon};
 use polysect::generate::{self, Family, Relation};
 use polysect::intersect::Algorithm;
 use polysect::polygon::HullAlgorithm;
@@ -90,11 +91,22 @@ enum Command {
         #[arg(long, default_value = "monotone", value_parser = parse_hull_algorithm)]
         algorithm: HullAlgorithm,
     },
-    /// Write generated pairs as JSON Lines in the `check` input format.
+    /// Write generated pairs as JSON Lines in the `check` input format, or with
+    /// `--simple` pairs of simple polygons in the `crossings` input format.
     Gen {
         /// Generator family.
         #[arg(long, default_value = "rotated", value_parser = parse_family)]
         family: Family,
+        /// Simple (possibly non-convex) polygons instead, joined by this method:
+        /// space-partition, star or angular (around the set's lowest point).
+        #[arg(long, value_parser = parse_simple_method, conflicts_with_all = ["family", "relation"])]
+        simple: Option<SimpleMethod>,
+        /// With --simple: coordinates uniform in [0, DELTA) (the default, Δ = 100).
+        #[arg(long, requires = "simple", conflicts_with = "sigma")]
+        delta: Option<f64>,
+        /// With --simple: coordinates normal with mean 0 and standard deviation SIGMA.
+        #[arg(long, requires = "simple")]
+        sigma: Option<f64>,
         /// Vertices per polygon (about; ellipse hulls may drop a few).
         #[arg(long, default_value_t = 16)]
         n: usize,
@@ -209,6 +221,10 @@ fn parse_crossing_algorithm(s: &str) -> Result<CrossingAlgorithm, String> {
     s.parse()
 }
 
+fn parse_simple_method(s: &str) -> Result<SimpleMethod, String> {
+    s.parse()
+}
+
 fn parse_hull_algorithm(s: &str) -> Result<HullAlgorithm, String> {
     s.parse()
 }
@@ -293,12 +309,42 @@ fn main() -> ExitCode {
             open_input(file.as_deref()).and_then(|input| protocol::hull::hull(input, output(), algorithm))
         }
         Some(Command::Gen {
+            simple: Some(method),
+            delta,
+            sigma,
+            n,
+            count,
+            order,
+            seed,
+            ..
+        }) => {
+            let dist = match sigma {
+                Some(sigma) => PointDistribution::Normal { mean: 0.0, sigma },
+                None => PointDistribution::Uniform {
+                    min: 0.0,
+                    max: delta.unwrap_or(100.0),
+                },
+            };
+            match gen_simple(method, dist, n, count, order, seed) {
+                Err(Failure::Usage(message)) => {
+                    let _ = writeln!(
+                        io::stderr(),
+                        "error: {message}\n\nFor more information, try 'polysect gen --help'."
+                    );
+                    return ExitCode::from(2);
+                }
+                Err(Failure::Io(e)) => Err(e),
+                Ok(()) => Ok(()),
+            }
+        }
+        Some(Command::Gen {
             family,
             n,
             count,
             relation,
             order,
             seed,
+            ..
         }) => gen_pairs(family, n, count, relation, order, seed),
         Some(Command::Bench {
             experiments,
@@ -461,6 +507,53 @@ fn gen_pairs(
         )?;
     }
     out.flush()
+}
+
+/// Pairs of random simple polygons as `crossings` input lines. Parameters are checked
+/// (as a usage error) before anything is written.
+fn gen_simple(
+    method: SimpleMethod,
+    dist: PointDistribution,
+    n: usize,
+    count: usize,
+    order: OrderArg,
+    seed: u64,
+) -> Result<(), Failure> {
+    let mut rng = SmallRng::seed_from_u64(seed);
+    let mut out = BufWriter::new(io::stdout().lock());
+    let distribution = match dist {
+        PointDistribution::Normal { sigma, .. } => format!("\"sigma\": {sigma:?}"),
+        PointDistribution::Uniform { max, .. } => format!("\"delta\": {max:?}"),
+        PointDistribution::Grid { size } => format!("\"grid\": {size}"),
+    };
+    for i in 0..count {
+        let mut polygon = || match random_simple_polygon(method, dist, n, &mut rng) {
+            Ok(p) => Ok(p),
+            Err(e @ GenerateError::InvalidParameters(_)) => Err(Failure::Usage(e.to_string())),
+            Err(e) => Err(Failure::Io(io::Error::other(e.to_string()))),
+        };
+        let (p, q) = (polygon()?, polygon()?);
+        let mut write_order = |poly: &polysect::SimplePolygon| {
+            let mut v = poly.vertices().to_vec();
+            let reverse = match order {
+                OrderArg::Ccw => false,
+                OrderArg::Cw => true,
+                OrderArg::Random => rand::Rng::random_bool(&mut rng, 0.5),
+            };
+            // Counter-clockwise first (exact), then the order asked for.
+            if poly.is_ccw() == reverse {
+                v.reverse();
+            }
+            protocol::points_json(&v)
+        };
+        let (pj, qj) = (write_order(&p), write_order(&q));
+        writeln!(
+            out,
+            "{{\"id\": {i}, \"method\": \"{method}\", {distribution}, \"n\": {n}, \"p\": {pj}, \"q\": {qj}}}"
+        )
+        .map_err(Failure::Io)?;
+    }
+    out.flush().map_err(Failure::Io)
 }
 
 fn list() -> io::Result<()> {

@@ -1,8 +1,8 @@
 //! Random simple polygons (seed 003, section 6.1): point sets drawn from a uniform,
 //! normal or integer-grid distribution, joined into a simple polygon by **space
 //! partitioning** (the seed's Algorithm 1, after Auer and Held), by an angular sort
-//! into a **star-shaped** polygon, or by the **angular sort of seed 002 §1.2** around a
-//! pivot of the set.
+//! into a **star-shaped** polygon, or by the **angular sort of the lecture notes on
+//! convex hulls** around a pivot of the set.
 //!
 //! # Space partitioning
 //! Choose two points s_f, s_l at random; the line through them splits the rest into
@@ -20,7 +20,7 @@
 //! The points are sorted by angle around the distribution's centre (exact
 //! comparisons: half-plane, then orientation; points on one ray by distance).
 //!
-//! # Angular sort around a pivot (seed 002)
+//! # Angular sort around a pivot (the lecture notes)
 //! The pivot is a point of the set, the lowest (then leftmost), and is kept; the
 //! others follow by angle around it, nearer first on a ray, except on the last ray,
 //! where the farther come first so that the boundary can return to the pivot
@@ -129,7 +129,8 @@ pub enum SimpleMethod {
     SpacePartition,
     /// Angular sort around the distribution's centre.
     Star,
-    /// Angular sort around the lowest point of the set, kept as a vertex (seed 002).
+    /// Angular sort around the lowest point of the set, kept as a vertex (the lecture
+    /// notes' simple polygon).
     Angular,
 }
 
@@ -416,7 +417,7 @@ mod tests {
                 assert_eq!(p.len(), n, "{dist:?}");
             }
         }
-        // The seed's case: collinear points on the last ray come farthest first, and
+        // The lecture notes' case: collinear points on the last ray come farthest first, and
         // the pivot (a point of the set) stays.
         let pts = [
             [0.0, 0.0],
