@@ -275,6 +275,10 @@ impl ConvexPolygon {
 fn line_chord(polygon: &ConvexPolygon, a: Point, b: Point) -> Option<Chord> {
     let v = polygon.vertices();
     let n = v.len();
+    if n < 3 {
+        // Only an unchecked list can be this short; it bounds no region.
+        return None;
+    }
     let at = |i: usize| v[i % n];
     let side = |i: usize| Exact.orient(a, b, at(i));
     // Edge i's direction measured counter-clockwise from d = b − a: which half-turn
@@ -380,7 +384,8 @@ fn line_chord(polygon: &ConvexPolygon, a: Point, b: Point) -> Option<Chord> {
 }
 
 /// [`ConvexPolygon::line_chord`] by visiting every vertex and edge: the O(n)
-/// reference the binary searches are tested against.
+/// reference the binary searches are tested against. (On a vertex list that is not
+/// strictly convex, built with `from_ccw_unchecked`, the answer is unspecified.)
 ///
 /// # Errors
 /// As [`ConvexPolygon::line_chord`].
@@ -434,6 +439,7 @@ pub fn line_chord_linear(
                 to: ChordEnd::Vertex(to),
             })
         }
-        other => unreachable!("a line meets a strictly convex polygon in a chord: {other:?}"),
+        // Only a list that is not strictly convex (built unchecked) gets here.
+        _ => None,
     })
 }
