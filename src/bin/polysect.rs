@@ -3,8 +3,10 @@
 use clap::{Parser, Subcommand, ValueEnum};
 use polysect::crossings::CrossingAlgorithm;
 use polysect::experiments::{self, Config, Experiment};
+use polysect::generate::simple::{GenerateError, PointDistribution, SimpleMethod, random_simple_polygon};
 use polysect::generate::{self, Family, Relation};
 use polysect::intersect::Algorithm;
+use polysect::polygon::HullAlgorithm;
 use polysect::protocol::{self, scene::SceneOptions, scene::SceneSession};
 use polysect::store::Strategy;
 use polysect::{ConvexPolygon, Exact, Fast, Kernel, Precision};
@@ -102,13 +104,34 @@ enum Command {
         #[arg(long, default_value = "exact", value_parser = parse_precision)]
         precision: Precision,
     },
-    /// Write generated pairs as JSON Lines in the `check` input format, each with
-    /// "expected": the exact reference's answer (`check --verify-expected` compares it).
+    /// Convex hull and farthest pair of point sets, for JSON Lines {"points": [[x,y],...]}:
+    /// writes {"hull": [[x,y],...], "diameter": [[x,y],[x,y]]} per line (counter-clockwise
+    /// from the lowest, then leftmost, vertex; one point gives [p] and [p, p], collinear
+    /// points their two ends).
+    Hull {
+        /// Input file (JSON Lines); standard input when absent.
+        file: Option<String>,
+        /// Algorithm: graham (Graham's scan) or monotone (Andrew's monotone chain).
+        #[arg(long, default_value = "monotone", value_parser = parse_hull_algorithm)]
+        algorithm: HullAlgorithm,
+    },
+    /// Write generated pairs as JSON Lines in the `check` input format, or with
+    /// `--simple` pairs of simple polygons in the `crossings` input format.
     Gen {
         /// Generator family: rotated, ellipse, non-uniform, shared-vertex,
         /// vertex-on-edge, shared-edge, overlapping-edges, nested or one-ulp-gap.
         #[arg(long, default_value = "rotated", value_parser = parse_family)]
         family: Family,
+        /// Simple (possibly non-convex) polygons instead, joined by this method:
+        /// space-partition, star or angular (around the set's lowest point).
+        #[arg(long, value_parser = parse_simple_method, conflicts_with_all = ["family", "relation"])]
+        simple: Option<SimpleMethod>,
+        /// With --simple: coordinates uniform in [0, DELTA) (the default, Δ = 100).
+        #[arg(long, requires = "simple", conflicts_with = "sigma")]
+        delta: Option<f64>,
+        /// With --simple: coordinates normal with mean 0 and standard deviation SIGMA.
+        #[arg(long, requires = "simple")]
+        sigma: Option<f64>,
         /// Vertices per polygon, 3 to 16777216 (about: ellipse hulls may drop a few,
         /// lattice families round to what their lattice allows).
         #[arg(long, default_value_t = 16, value_parser = clap::value_parser!(u64).range(3..=MAX_GEN_N))]
@@ -245,6 +268,14 @@ fn parse_crossing_algorithm(s: &str) -> Result<CrossingAlgorithm, String> {
     s.parse()
 }
 
+fn parse_simple_method(s: &str) -> Result<SimpleMethod, String> {
+    s.parse()
+}
+
+fn parse_hull_algorithm(s: &str) -> Result<HullAlgorithm, String> {
+    s.parse()
+}
+
 fn parse_precision(s: &str) -> Result<Precision, String> {
     s.parse()
 }
@@ -320,6 +351,28 @@ fn main() -> ExitCode {
             algorithm,
             precision,
         }) => crossings(file.as_deref(), algorithm, precision).map_err(Failure::Io),
+        Some(Command::Hull { file, algorithm }) => open_input(file.as_deref())
+            .and_then(|input| protocol::hull::hull(input, output(), algorithm))
+            .map_err(Failure::Io),
+        Some(Command::Gen {
+            simple: Some(method),
+            delta,
+            sigma,
+            n,
+            count,
+            order,
+            seed,
+            ..
+        }) => {
+            let dist = match sigma {
+                Some(sigma) => PointDistribution::Normal { mean: 0.0, sigma },
+                None => PointDistribution::Uniform {
+                    min: 0.0,
+                    max: delta.unwrap_or(100.0),
+                },
+            };
+            gen_simple(method, dist, n as usize, count as usize, order, seed)
+        }
         Some(Command::Gen {
             family,
             n,
@@ -327,6 +380,7 @@ fn main() -> ExitCode {
             relation,
             order,
             seed,
+            ..
         }) => gen_pairs(family, n as usize, count, relation, order, seed).map_err(Failure::Io),
         Some(Command::Bench {
             experiments,
@@ -543,6 +597,56 @@ fn gen_pairs(
     out.flush()
 }
 
+/// Pairs of random simple polygons as `crossings` input lines. Parameters are checked
+/// (as a usage error) before anything is written.
+fn gen_simple(
+    method: SimpleMethod,
+    dist: PointDistribution,
+    n: usize,
+    count: usize,
+    order: OrderArg,
+    seed: u64,
+) -> Result<(), Failure> {
+    let mut rng = SmallRng::seed_from_u64(seed);
+    let mut out = BufWriter::new(io::stdout().lock());
+    let distribution = match dist {
+        PointDistribution::Normal { sigma, .. } => format!("\"sigma\": {sigma:?}"),
+        PointDistribution::Uniform { max, .. } => format!("\"delta\": {max:?}"),
+        PointDistribution::Grid { size } => format!("\"grid\": {size}"),
+    };
+    for i in 0..count {
+        let mut polygon = || match random_simple_polygon(method, dist, n, &mut rng) {
+            Ok(p) => Ok(p),
+            Err(e @ GenerateError::InvalidParameters(_)) => Err(Failure::Usage {
+                command: "gen",
+                message: e.to_string(),
+            }),
+            Err(e) => Err(Failure::Io(io::Error::other(e.to_string()))),
+        };
+        let (p, q) = (polygon()?, polygon()?);
+        let mut write_order = |poly: &polysect::SimplePolygon| {
+            let mut v = poly.vertices().to_vec();
+            let reverse = match order {
+                OrderArg::Ccw => false,
+                OrderArg::Cw => true,
+                OrderArg::Random => rand::Rng::random_bool(&mut rng, 0.5),
+            };
+            // Counter-clockwise first (exact), then the order asked for.
+            if poly.is_ccw() == reverse {
+                v.reverse();
+            }
+            protocol::points_json(&v)
+        };
+        let (pj, qj) = (write_order(&p), write_order(&q));
+        writeln!(
+            out,
+            "{{\"id\": {i}, \"method\": \"{method}\", {distribution}, \"n\": {n}, \"p\": {pj}, \"q\": {qj}}}"
+        )
+        .map_err(Failure::Io)?;
+    }
+    out.flush().map_err(Failure::Io)
+}
+
 fn list() -> io::Result<()> {
     let mut out = io::stdout().lock();
     let names: Vec<&str> = Algorithm::ALL.iter().map(|a| a.name()).collect();
@@ -558,6 +662,13 @@ fn list() -> io::Result<()> {
         "crossings:  {} (default {})",
         names.join(", "),
         CrossingAlgorithm::default()
+    )?;
+    let names: Vec<&str> = HullAlgorithm::ALL.iter().map(|a| a.name()).collect();
+    writeln!(
+        out,
+        "hulls:      {} (default {})",
+        names.join(", "),
+        HullAlgorithm::default()
     )?;
     writeln!(out, "precisions: fast, exact (default)")?;
     let names: Vec<&str> = Strategy::ALL.iter().map(|s| s.name()).collect();

@@ -1,7 +1,8 @@
 //! Random simple polygons, as in the crossings experiments (`docs/crossings.md`): point sets drawn from a uniform,
 //! normal or integer-grid distribution, joined into a simple polygon by **space
-//! partitioning** (after Auer and Held) or by an angular sort
-//! into a **star-shaped** polygon.
+//! partitioning** (after Auer and Held), by an angular sort into a **star-shaped**
+//! polygon, or by the **angular sort of the lecture notes on convex hulls** around a
+//! pivot of the set.
 //!
 //! # Space partitioning
 //! Choose two points s_f, s_l at random; the line through them splits the rest into
@@ -19,6 +20,12 @@
 //! The points are sorted by angle around the distribution's centre (exact
 //! comparisons: half-plane, then orientation; points on one ray by distance).
 //!
+//! # Angular sort around a pivot (the lecture notes)
+//! The pivot is a point of the set, the lowest (then leftmost), and is kept; the
+//! others follow by angle around it, nearer first on a ray, except on the last ray,
+//! where the farther come first so that the boundary can return to the pivot
+//! ([`crate::polygon::angular_order`], exact). Every point of the set is a vertex.
+//!
 //! # Degeneracies
 //! Sides and orders are decided by the [`Exact`] kernel. Collinear triples (always
 //! possible on a grid, with probability ~0 for real coordinates) can make a
@@ -27,7 +34,7 @@
 
 use super::MAX_VERTICES;
 use crate::kernel::{Exact, Kernel, Orientation, Point};
-use crate::polygon::SimplePolygon;
+use crate::polygon::{SimplePolygon, angular_order};
 use rand::Rng;
 use std::collections::HashSet;
 use std::f64::consts::TAU;
@@ -169,15 +176,23 @@ pub enum SimpleMethod {
     SpacePartition,
     /// Angular sort around the distribution's centre.
     Star,
+    /// Angular sort around the lowest point of the set, kept as a vertex (the lecture
+    /// notes' simple polygon).
+    Angular,
 }
 
 impl SimpleMethod {
-    pub const ALL: &'static [SimpleMethod] = &[SimpleMethod::SpacePartition, SimpleMethod::Star];
+    pub const ALL: &'static [SimpleMethod] = &[
+        SimpleMethod::SpacePartition,
+        SimpleMethod::Star,
+        SimpleMethod::Angular,
+    ];
 
     pub fn name(self) -> &'static str {
         match self {
             SimpleMethod::SpacePartition => "space-partition",
             SimpleMethod::Star => "star",
+            SimpleMethod::Angular => "angular",
         }
     }
 }
@@ -195,7 +210,7 @@ impl FromStr for SimpleMethod {
             .iter()
             .copied()
             .find(|m| m.name() == s)
-            .ok_or_else(|| format!("unknown method '{s}' (valid: space-partition, star)"))
+            .ok_or_else(|| format!("unknown method '{s}' (valid: space-partition, star, angular)"))
     }
 }
 
@@ -280,6 +295,7 @@ pub fn random_simple_polygon<R: Rng + ?Sized>(
         let order = match method {
             SimpleMethod::SpacePartition => space_partition(&points, rng),
             SimpleMethod::Star => Some(star_order(&points, dist.center())),
+            SimpleMethod::Angular => Some(angular_order(&points).into_iter().map(|i| points[i]).collect()),
         };
         if let Some(v) = order
             && let Ok(p) = SimplePolygon::new(v)
@@ -448,6 +464,44 @@ mod tests {
     use super::*;
     use rand::SeedableRng;
     use rand::rngs::SmallRng;
+
+    #[test]
+    fn angular_sort_keeps_every_point_and_the_pivot() {
+        let mut rng = SmallRng::seed_from_u64(5);
+        for n in [3, 6, 50, 1000] {
+            for dist in [
+                PointDistribution::Uniform { min: 0.0, max: 100.0 },
+                PointDistribution::Normal {
+                    mean: 0.0,
+                    sigma: 50.0,
+                },
+            ] {
+                let p = random_simple_polygon(SimpleMethod::Angular, dist, n, &mut rng).unwrap();
+                assert_eq!(p.len(), n, "{dist:?}");
+            }
+        }
+        // The lecture notes' case: collinear points on the last ray come farthest first, and
+        // the pivot (a point of the set) stays.
+        let pts = [
+            [0.0, 0.0],
+            [4.0, 0.0],
+            [3.0, 2.0],
+            [1.0, 1.0],
+            [2.0, 2.0],
+            [3.0, 3.0],
+        ]
+        .map(Point::from);
+        let order: Vec<Point> = angular_order(&pts).into_iter().map(|i| pts[i]).collect();
+        assert_eq!(order.len(), 6);
+        assert_eq!(order[0], Point::new(0.0, 0.0));
+        // A simple polygon; its straight vertices (2, 2) and (1, 1) are cleaned away.
+        let p = SimplePolygon::new(order.clone()).unwrap();
+        assert_eq!(p.len(), 4);
+        assert_eq!(
+            &order[3..],
+            &[[3.0, 3.0], [2.0, 2.0], [1.0, 1.0]].map(Point::from)
+        );
+    }
 
     #[test]
     fn every_method_and_distribution_gives_valid_polygons() {

@@ -1,4 +1,6 @@
-//! Convex hull of a point set by Andrew's monotone chain on the exact kernel.
+//! Convex hull of a point set by Andrew's monotone chain on the exact kernel, and
+//! [`HullAlgorithm`], which names it beside Graham's scan ([`super::graham`]) for the
+//! callers that choose at run time (the `hull` protocol, benches, tests).
 //!
 //! # Complexity
 //! O(n log n) for n points (the sort); O(n) extra memory.
@@ -8,8 +10,110 @@
 //! endpoints) are not vertices; ties in the sort are broken by y, so vertical runs
 //! are ordered. Fewer than three non-collinear points have no hull polygon: an error.
 
+use super::graham::graham_indices;
 use super::{ConvexPolygon, InputIndex, PolygonError};
 use crate::kernel::{Exact, Kernel, Orientation, Point};
+use std::fmt;
+use std::str::FromStr;
+
+/// A convex hull algorithm, chosen at run time. Both are exact and give the same hull.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum HullAlgorithm {
+    /// Graham's scan ([`graham_scan`](super::graham_scan)): angular sort around the
+    /// lowest point.
+    Graham,
+    /// Andrew's monotone chain ([`convex_hull`]): lexicographic sort, two chains.
+    #[default]
+    Monotone,
+}
+
+impl HullAlgorithm {
+    pub const ALL: [HullAlgorithm; 2] = [HullAlgorithm::Graham, HullAlgorithm::Monotone];
+
+    /// The name the CLI's `--algorithm` takes: `graham` or `monotone`.
+    pub fn name(self) -> &'static str {
+        match self {
+            HullAlgorithm::Graham => "graham",
+            HullAlgorithm::Monotone => "monotone",
+        }
+    }
+}
+
+impl fmt::Display for HullAlgorithm {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for HullAlgorithm {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        HullAlgorithm::ALL
+            .into_iter()
+            .find(|a| a.name() == s)
+            .ok_or_else(|| format!("unknown hull algorithm '{s}' (valid: graham, monotone)"))
+    }
+}
+
+/// The hull of a point set as a vertex list, degenerate sets included:
+/// counter-clockwise, strictly convex, starting at the lowest vertex (the leftmost of
+/// those). One distinct point gives `[p]`; a collinear set gives its two extreme
+/// points, the lowest (then leftmost) first. Every algorithm gives the same list.
+/// O(n log n).
+///
+/// # Errors
+/// `NonFinite` for a NaN or infinite coordinate (with its index), `TooFewVertices {
+/// distinct: 0 }` for an empty set.
+///
+/// ```
+/// use polysect::polygon::{HullAlgorithm, hull_vertices};
+/// use polysect::Point;
+/// let pts = [[0.0, 2.0], [2.0, 0.0], [1.0, 1.0], [2.0, 2.0], [0.0, 0.5]].map(Point::from);
+/// for algorithm in HullAlgorithm::ALL {
+///     let hull = hull_vertices(&pts, algorithm)?;
+///     assert_eq!(hull, [[2.0, 0.0], [2.0, 2.0], [0.0, 2.0], [0.0, 0.5]].map(Point::from));
+/// }
+/// let line = [[0.0, 3.0], [1.0, 2.0], [3.0, 0.0]].map(Point::from);
+/// assert_eq!(hull_vertices(&line, HullAlgorithm::Graham)?, [[3.0, 0.0], [0.0, 3.0]].map(Point::from));
+/// # Ok::<(), polysect::PolygonError>(())
+/// ```
+pub fn hull_vertices(points: &[Point], algorithm: HullAlgorithm) -> Result<Vec<Point>, PolygonError> {
+    if let Some(index) = points.iter().position(|p| !p.is_finite()) {
+        return Err(PolygonError::NonFinite {
+            index,
+            point: points[index],
+        });
+    }
+    if points.is_empty() {
+        return Err(PolygonError::TooFewVertices { distinct: 0 });
+    }
+    let lower = |a: &Point, b: &Point| a.y.total_cmp(&b.y).then(a.x.total_cmp(&b.x));
+    let mut hull: Vec<Point> = match algorithm {
+        HullAlgorithm::Graham => graham_indices(points).into_iter().map(|i| points[i]).collect(),
+        HullAlgorithm::Monotone => {
+            let mut idx: Vec<usize> = (0..points.len()).collect();
+            let hull = hull_indices(points, &mut idx);
+            if hull.len() >= 3 {
+                hull.into_iter().map(|i| points[i]).collect()
+            } else {
+                // Fewer than three distinct points, or collinear: the two ends of the
+                // lexicographic order (one point when they coincide).
+                let (first, last) = (points[idx[0]], points[idx[idx.len() - 1]]);
+                if first == last {
+                    vec![first]
+                } else if lower(&first, &last).is_lt() {
+                    vec![first, last]
+                } else {
+                    vec![last, first]
+                }
+            }
+        }
+    };
+    if let Some(start) = (0..hull.len()).min_by(|&a, &b| lower(&hull[a], &hull[b])) {
+        hull.rotate_left(start);
+    }
+    Ok(hull)
+}
 
 /// The convex hull of `points` as a [`ConvexPolygon`] (counter-clockwise, starting at
 /// the lexicographically smallest point).

@@ -1,10 +1,13 @@
 //! Polygon types: validated convex polygons as sorted arrays ([`ConvexPolygon`]),
 //! editable convex polygons as arena-backed doubly linked lists ([`LinkedPolygon`]),
 //! simple (possibly non-convex) polygons in either orientation ([`SimplePolygon`],
-//! validated by an exact O(n log n) sweep), and the convex hull of a point set
-//! ([`convex_hull`]). Everyday queries on one polygon (point containment, the extreme
-//! vertex in a direction, area, centroid) are methods of these types, indexed in
-//! [`queries`].
+//! validated by an exact O(n log n) sweep), the convex hull of a point set
+//! ([`convex_hull`] by monotone chain, [`graham_scan`], both behind [`hull_vertices`]),
+//! rotating calipers ([`calipers`]: diameter, width, least-area rectangle), and the
+//! O(log n) line, ray and segment queries on a convex polygon
+//! ([`ConvexPolygon::line_chord`] and its siblings). Everyday queries on one polygon
+//! (point containment, the extreme vertex in a direction, area, centroid) are methods
+//! of these types, indexed in [`queries`].
 //!
 //! # Orientation and cleaning
 //! Input may come clockwise or counter-clockwise, from any start vertex. The two
@@ -16,16 +19,21 @@
 //! # Errors
 //! Invalid input is a [`PolygonError`] naming the input vertex index and what is wrong.
 
+pub mod calipers;
 mod convex;
 mod error;
+mod graham;
 mod hull;
+mod line_query;
 mod linked;
 pub mod queries;
 mod simple;
 
 pub use convex::ConvexPolygon;
 pub use error::{EditError, PolygonError};
-pub use hull::convex_hull;
+pub use graham::{angular_order, graham_scan, pivot_index};
+pub use hull::{HullAlgorithm, convex_hull, hull_vertices};
+pub use line_query::{Chord, ChordEnd, LineQueryError, line_chord_linear};
 pub(crate) use linked::Identity;
 pub use linked::{LinkedPolygon, SampleWorkspace, VertexId};
 pub use simple::{SimplePolygon, SimplePolygonError};

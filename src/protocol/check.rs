@@ -238,7 +238,7 @@ pub fn crossings_line(
     one_line(line, |input, out| crossings(input, out, answer))
 }
 
-fn one_line(line: &[u8], run: impl FnOnce(&[u8], &mut Vec<u8>) -> io::Result<()>) -> String {
+pub(crate) fn one_line(line: &[u8], run: impl FnOnce(&[u8], &mut Vec<u8>) -> io::Result<()>) -> String {
     // A newline inside `line` would start a second line: answer only up to it.
     let line = line.split(|&b| b == b'\n').next().unwrap_or_default();
     let mut out = Vec::new();
