@@ -10,6 +10,12 @@
 //! `brute-nobox-exact` is the seed's baseline (a segment test on every pair, no
 //! bounding-box rejection, no point construction), up to the seed's n = 2,000.
 //!
+//! The worst cases of a sweep with unordered lists (`polysect::generate::hard`):
+//! `zigzag` (every edge spans one x-range, about n crossings), `stacked-zigzag` (the
+//! same without contact) and `needles` (two combs of needles 10⁻⁶ apart), at
+//! n = 1,000 … 64,000 vertices per polygon, with the brute force up to n = 8,000.
+//! `POLYSECT_BENCH_MAX_N` caps the sizes of every group.
+//!
 //! ```text
 //! cargo bench --bench crossings -- --warm-up-time 1 --measurement-time 2
 //! ```
@@ -18,6 +24,7 @@ use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_m
 use geo::algorithm::sweep::{Cross, Intersections};
 use geo::{Line, coord};
 use polysect::crossings::{Brute, Crossings, Sweep, SweepWorkspace};
+use polysect::generate::hard::{HardFamily, hard_pair};
 use polysect::generate::simple::{PointDistribution, SimpleMethod, random_simple_polygon};
 use polysect::kernel::segment_contact;
 use polysect::{Exact, Fast, SimplePolygon};
@@ -27,6 +34,19 @@ use std::hint::black_box;
 
 const SIZES: [usize; 11] = [5, 50, 100, 200, 500, 800, 1000, 2000, 5000, 10_000, 20_000];
 const BRUTE_MAX: usize = 5000;
+const HARD_SIZES: [usize; 7] = [1000, 2000, 4000, 8000, 16_000, 32_000, 64_000];
+const HARD_BRUTE_MAX: usize = 8000;
+/// geo's sweep is quadratic on these families (3.5 s per query at n = 16,000).
+const HARD_GEO_MAX: usize = 16_000;
+const HARD: [HardFamily; 3] = [HardFamily::Zigzag, HardFamily::StackedZigzag, HardFamily::Needles];
+
+/// The largest n to run (`POLYSECT_BENCH_MAX_N`, default no limit).
+fn max_n() -> usize {
+    std::env::var("POLYSECT_BENCH_MAX_N")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(usize::MAX)
+}
 /// The largest size in the seed's tables.
 const SEED_MAX: usize = 2000;
 
@@ -72,7 +92,7 @@ fn bench(c: &mut Criterion) {
     for (dname, dist) in dists {
         let mut group = c.benchmark_group(format!("crossings/{dname}"));
         group.sample_size(10);
-        for n in SIZES {
+        for n in SIZES.into_iter().filter(|&n| n <= max_n()) {
             let p = random_simple_polygon(SimpleMethod::SpacePartition, dist, n, &mut rng).unwrap();
             let q = random_simple_polygon(SimpleMethod::SpacePartition, dist, n, &mut rng).unwrap();
             let expected = Sweep.crossings(&p, &q);
@@ -132,6 +152,58 @@ fn bench(c: &mut Criterion) {
                     assert_eq!(found, k);
                 })
             });
+        }
+        group.finish();
+    }
+    for family in HARD {
+        let mut group = c.benchmark_group(format!("crossings/{family}"));
+        group.sample_size(10);
+        for n in HARD_SIZES.into_iter().filter(|&n| n <= max_n()) {
+            let mut rng = SmallRng::seed_from_u64(2027 + n as u64);
+            let (p, q) = hard_pair(family, n, &mut rng);
+            let expected = Sweep.crossings(&p, &q);
+            if n <= HARD_BRUTE_MAX {
+                assert_eq!(Brute.crossings(&p, &q), expected);
+            }
+            let k = expected.len();
+            let edges: Vec<Tagged> = tagged(&p, 0).chain(tagged(&q, 1)).collect();
+            // geo's count of edge pairs between the polygons, asserted in its loop.
+            let geo_k = if n <= HARD_GEO_MAX {
+                Intersections::from_iter(edges.iter())
+                    .filter(|(a, b, _)| a.poly != b.poly)
+                    .count()
+            } else {
+                0
+            };
+            eprintln!(
+                "{family}: n = {} + {}: {k} points, geo finds {geo_k} pairs",
+                p.len(),
+                q.len()
+            );
+            group.throughput(Throughput::Elements((p.len() + q.len()) as u64));
+            let mut ws = SweepWorkspace::default();
+            let mut out = Vec::new();
+            group.bench_with_input(BenchmarkId::new("sweep-exact", n), &(&p, &q), |b, (p, q)| {
+                b.iter(|| {
+                    Sweep.crossings_in(Exact, black_box(p), black_box(q), &mut ws, &mut out);
+                    assert_eq!(out.len(), k);
+                })
+            });
+            if n <= HARD_BRUTE_MAX {
+                group.bench_with_input(BenchmarkId::new("brute-exact", n), &(&p, &q), |b, (p, q)| {
+                    b.iter(|| assert_eq!(Brute.crossings_with(Exact, black_box(p), black_box(q)).len(), k))
+                });
+            }
+            if n <= HARD_GEO_MAX {
+                group.bench_with_input(BenchmarkId::new("geo-sweep", n), &edges, |b, edges| {
+                    b.iter(|| {
+                        let found = Intersections::from_iter(black_box(edges).iter())
+                            .filter(|(a, b, _)| a.poly != b.poly)
+                            .count();
+                        assert_eq!(found, geo_k);
+                    })
+                });
+            }
         }
         group.finish();
     }
