@@ -23,7 +23,7 @@
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use geo::algorithm::sweep::{Cross, Intersections};
 use geo::{Line, coord};
-use polysect::crossings::{Brute, Crossings, Sweep, SweepWorkspace};
+use polysect::crossings::{Brute, Crossings, ListSweep, Sweep, SweepWorkspace, TreeSweep};
 use polysect::generate::hard::{HardFamily, hard_pair};
 use polysect::generate::simple::{PointDistribution, SimpleMethod, random_simple_polygon};
 use polysect::kernel::segment_contact;
@@ -116,6 +116,23 @@ fn bench(c: &mut Criterion) {
                     assert_eq!(out.len(), k);
                 })
             });
+            // The two sweeps that `sweep` chooses between, each alone.
+            group.bench_with_input(BenchmarkId::new("list-sweep", n), &(&p, &q), |b, (p, q)| {
+                b.iter(|| {
+                    assert_eq!(
+                        ListSweep.crossings_with(Exact, black_box(p), black_box(q)).len(),
+                        k
+                    )
+                })
+            });
+            group.bench_with_input(BenchmarkId::new("tree-sweep", n), &(&p, &q), |b, (p, q)| {
+                b.iter(|| {
+                    assert_eq!(
+                        TreeSweep.crossings_with(Exact, black_box(p), black_box(q)).len(),
+                        k
+                    )
+                })
+            });
             if n <= BRUTE_MAX {
                 group.bench_with_input(BenchmarkId::new("brute-exact", n), &(&p, &q), |b, (p, q)| {
                     b.iter(|| assert_eq!(Brute.crossings_with(Exact, black_box(p), black_box(q)).len(), k))
@@ -189,7 +206,23 @@ fn bench(c: &mut Criterion) {
                     assert_eq!(out.len(), k);
                 })
             });
+            group.bench_with_input(BenchmarkId::new("tree-sweep", n), &(&p, &q), |b, (p, q)| {
+                b.iter(|| {
+                    assert_eq!(
+                        TreeSweep.crossings_with(Exact, black_box(p), black_box(q)).len(),
+                        k
+                    )
+                })
+            });
             if n <= HARD_BRUTE_MAX {
+                group.bench_with_input(BenchmarkId::new("list-sweep", n), &(&p, &q), |b, (p, q)| {
+                    b.iter(|| {
+                        assert_eq!(
+                            ListSweep.crossings_with(Exact, black_box(p), black_box(q)).len(),
+                            k
+                        )
+                    })
+                });
                 group.bench_with_input(BenchmarkId::new("brute-exact", n), &(&p, &q), |b, (p, q)| {
                     b.iter(|| assert_eq!(Brute.crossings_with(Exact, black_box(p), black_box(q)).len(), k))
                 });
