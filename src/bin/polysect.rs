@@ -1,7 +1,7 @@
 //! The `polysect` command line: a thin layer over the library.
 
 use clap::{Parser, Subcommand, ValueEnum};
-use polysect::crossings::CrossingAlgorithm;
+use polysect::crossings::{CrossingAlgorithm, CrossingOptions, Touching};
 use polysect::experiments::{self, Config, Experiment};
 use polysect::generate::{self, Family, Relation};
 use polysect::intersect::Algorithm;
@@ -53,6 +53,10 @@ enum Command {
         algorithm: CrossingAlgorithm,
         #[arg(long, default_value = "exact", value_parser = parse_precision)]
         precision: Precision,
+        /// include: every point where the boundaries meet; exclude: only proper
+        /// crossings and the ends of collinear overlaps (seed 003).
+        #[arg(long, default_value = "include", value_parser = parse_touching)]
+        touching: Touching,
     },
     /// Write generated pairs as JSON Lines in the `check` input format.
     Gen {
@@ -156,6 +160,10 @@ fn parse_crossing_algorithm(s: &str) -> Result<CrossingAlgorithm, String> {
     s.parse()
 }
 
+fn parse_touching(s: &str) -> Result<Touching, String> {
+    s.parse()
+}
+
 fn parse_precision(s: &str) -> Result<Precision, String> {
     s.parse()
 }
@@ -195,7 +203,13 @@ fn main() -> ExitCode {
             file,
             algorithm,
             precision,
-        }) => crossings(file.as_deref(), algorithm, precision),
+            touching,
+        }) => crossings(
+            file.as_deref(),
+            algorithm,
+            precision,
+            CrossingOptions { touching },
+        ),
         Some(Command::Gen {
             family,
             n,
@@ -273,11 +287,16 @@ fn check(file: Option<&str>, algorithm: Algorithm, precision: Precision) -> io::
     out.flush()
 }
 
-fn crossings(file: Option<&str>, algorithm: CrossingAlgorithm, precision: Precision) -> io::Result<()> {
+fn crossings(
+    file: Option<&str>,
+    algorithm: CrossingAlgorithm,
+    precision: Precision,
+    options: CrossingOptions,
+) -> io::Result<()> {
     let mut input = open_input(file)?;
     let mut out = BufWriter::new(io::stdout().lock());
     for_each_line(&mut input, |line| {
-        let reply = jsonl::crossings_line(line, |p, q| algorithm.run(precision, p, q));
+        let reply = jsonl::crossings_line(line, |p, q| algorithm.run_with_options(precision, p, q, options));
         writeln!(out, "{reply}")
     })?;
     out.flush()
