@@ -81,7 +81,7 @@ enum Command {
     /// files and SVG plots.
     Bench {
         /// Experiments to run (default: all): scaling, densities, sqrt, crossover,
-        /// trade, clm-factor.
+        /// trade, clm-factor, crossings.
         #[arg(value_parser = parse_experiment)]
         experiments: Vec<Experiment>,
         /// Fewer sizes and shorter loops (under a minute).

@@ -113,14 +113,9 @@ impl Crossings for ListSweep {
             events: &events,
         };
         let mut out = Vec::new();
-        run(
-            k,
-            input,
-            options,
-            &mut ListWorkspace::default(),
-            &mut out,
-            u64::MAX,
-        );
+        run(input, &mut ListWorkspace::default(), u64::MAX, |a, b, c, d| {
+            edge_pair_points(k, a, b, c, d, options, &mut out)
+        });
         sort_dedup(&mut out);
         out
     }
@@ -130,18 +125,17 @@ impl Crossings for ListSweep {
 /// units of a skipped candidate.
 pub(crate) const PAIR_COST: u64 = 8;
 
-/// Runs the sweep over `events` (the vertices of P then Q, sorted), appending the
-/// points of every meeting pair to `out` (unsorted, with repeats). Gives up, returning
-/// `false`, as soon as its work exceeds `budget`: one unit per candidate checked and
-/// [`PAIR_COST`] per candidate tested.
-pub(crate) fn run<K: Kernel>(
-    k: K,
+/// Runs the sweep over the sorted vertices, calling `pair` on every pair of a P edge
+/// and a Q edge whose y-ranges overlap while both are listed (each edge in its
+/// polygon's direction, P's first). Gives up, returning `None`, as soon as its work
+/// exceeds `budget`: one unit per candidate checked and [`PAIR_COST`] per candidate
+/// passed to `pair`; otherwise returns the work done.
+pub(crate) fn run(
     input: Input<'_>,
-    options: CrossingOptions,
     ws: &mut ListWorkspace,
-    out: &mut Vec<Point>,
     budget: u64,
-) -> bool {
+    mut pair: impl FnMut(Point, Point, Point, Point),
+) -> Option<u64> {
     let mut spent = 0u64;
     let Input { p, q, events } = input;
     let polys = [p.vertices(), q.vertices()];
@@ -184,13 +178,13 @@ pub(crate) fn run<K: Kernel>(
                     spent += PAIR_COST;
                     let (c, d) = other_list.segs[at];
                     if s == 0 {
-                        edge_pair_points(k, a, b, c, d, options, out);
+                        pair(a, b, c, d);
                     } else {
-                        edge_pair_points(k, c, d, a, b, options, out);
+                        pair(c, d, a, b);
                     }
                 }
                 if spent > budget {
-                    return false;
+                    return None;
                 }
                 ws.pos[s][e] = ws.lists[s].edges.len() as u32;
                 ws.lists[s].push(e as u32, a, b, (ylo, yhi));
@@ -218,5 +212,36 @@ pub(crate) fn run<K: Kernel>(
         }
         i = j;
     }
-    true
+    Some(spent)
+}
+
+/// How much work [`ListSweep`] does on a pair of polygons.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ListWork {
+    /// Candidates checked: Σ r over the insertions, r the other list's length.
+    pub candidates: u64,
+    /// Candidates whose y-range meets the inserted edge's: the pairs tested.
+    pub tests: u64,
+}
+
+impl ListSweep {
+    /// Counts the candidates and the pair tests of the sweep on `p` and `q`, testing
+    /// no pair.
+    pub fn work(p: &SimplePolygon, q: &SimplePolygon) -> ListWork {
+        let mut events = Vec::new();
+        sorted_events(p, q, &mut events);
+        let input = Input {
+            p,
+            q,
+            events: &events,
+        };
+        let mut tests = 0;
+        run(input, &mut ListWorkspace::default(), u64::MAX, |_, _, _, _| {
+            tests += 1
+        });
+        ListWork {
+            candidates: super::sweep::list_work(input),
+            tests,
+        }
+    }
 }

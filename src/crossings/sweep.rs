@@ -31,7 +31,7 @@
 
 use super::lists::{self, ListSweep, ListWorkspace};
 use super::tree::{self, TreeSweep, TreeWorkspace};
-use super::{CrossingOptions, Crossings, sort_dedup};
+use super::{CrossingOptions, Crossings, edge_pair_points, sort_dedup};
 use crate::kernel::{Kernel, Point};
 use crate::polygon::SimplePolygon;
 use std::cmp::Ordering;
@@ -100,8 +100,11 @@ impl Sweep {
             events: &ws.events,
         };
         let budget = budget(p, q);
-        let listed =
-            within_budget(input, budget) && lists::run(k, input, options, &mut ws.lists, out, budget);
+        let listed = within_budget(input, budget)
+            && lists::run(input, &mut ws.lists, budget, |a, b, c, d| {
+                edge_pair_points(k, a, b, c, d, options, out)
+            })
+            .is_some();
         if !listed {
             out.clear();
             tree::run(k, input, options, &mut ws.tree, out);
@@ -121,14 +124,7 @@ impl Sweep {
         };
         let budget = budget(p, q);
         let listed = within_budget(input, budget)
-            && lists::run(
-                crate::kernel::Exact,
-                input,
-                CrossingOptions::default(),
-                &mut ListWorkspace::default(),
-                &mut Vec::new(),
-                budget,
-            );
+            && lists::run(input, &mut ListWorkspace::default(), budget, |_, _, _, _| {}).is_some();
         if listed { ListSweep::NAME } else { TreeSweep::NAME }
     }
 }
