@@ -1,19 +1,23 @@
 //! Crossing points of two random simple polygons (seed 003, Tables 6.1 and 6.2):
-//! Žalik's sweep (exact and fast kernels) against the O(n·m) brute force, with geo's
-//! sweep (`geo::algorithm::sweep::Intersections` over both edge sets) as a peer.
+//! the sweep (`sweep-exact`, `sweep-fast`: the default, which picks Žalik's lists or
+//! the ordered red–blue sweep; `list-sweep` and `tree-sweep`: each of the two alone)
+//! against the O(n·m) brute force, with geo's sweep
+//! (`geo::algorithm::sweep::Intersections` over both edge sets) as a peer.
 //!
 //! Polygons come from space partitioning of n uniform points in [0, Δ)² (Δ = 100)
 //! and of n normal points (μ = 0, σ = 50). Δ and σ only scale the point sets (the
 //! coordinates are real), so the seed's other Δ and σ give the same combinatorics.
 //! The expected number of points (brute force, exact) is asserted inside every
 //! iteration. Brute force stops at n = 5,000 (n·m = 25·10⁶ edge pairs).
-//! `brute-nobox-exact` is the seed's baseline (a segment test on every pair, no
-//! bounding-box rejection, no point construction), up to the seed's n = 2,000.
+//! `brute-nobox-exact` is a segment test on every pair with no bounding-box
+//! rejection and no point construction, up to the seed's n = 2,000
+//! (`polysect bench crossings` times the seed's own brute force).
 //!
 //! The worst cases of a sweep with unordered lists (`polysect::generate::hard`):
 //! `zigzag` (every edge spans one x-range, about n crossings), `stacked-zigzag` (the
 //! same without contact) and `needles` (two combs of needles 10⁻⁶ apart), at
-//! n = 1,000 … 64,000 vertices per polygon, with the brute force up to n = 8,000.
+//! n = 1,000 … 64,000 vertices per polygon, with the lists and the brute force up to
+//! n = 8,000 and geo up to 16,000 (it is quadratic there too).
 //! `POLYSECT_BENCH_MAX_N` caps the sizes of every group.
 //!
 //! ```text

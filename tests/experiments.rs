@@ -148,7 +148,13 @@ fn check_crossings_csv(path: &Path, sizes: &[usize]) {
         .chain(["10", "20", "50", "100"].map(|s| ("normal", s)))
         .collect();
     assert_eq!(params, want.into_iter().collect());
-    let algs = ["sweep", "brute", "brute-nobox", "brute-division"];
+    let algs = [
+        "sweep",
+        "brute",
+        "brute-nobox",
+        "brute-division",
+        "sweep-division",
+    ];
     assert_eq!(rows.len(), 8 * sizes.len() * algs.len());
     for (i, alg) in column(&header, &rows, "algorithm").iter().enumerate() {
         assert_eq!(*alg, algs[i % algs.len()]);

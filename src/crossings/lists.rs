@@ -34,9 +34,10 @@
 //! length of the other polygon's list at each insertion; worst case O(n·m) (every
 //! edge of P spanning the x-range of every edge of Q: zigzags, combs of long
 //! needles). On the seed's random polygons r is a small fraction of n. Memory
-//! O(n + m). W is known before any pair is tested ([`list_work`](super::sweep::list_work)),
-//! which is how [`Sweep`](super::Sweep) chooses between this and
-//! [`TreeSweep`](super::TreeSweep).
+//! O(n + m). W depends only on the order of the vertices: [`Sweep`](super::Sweep)
+//! counts it in O(n + m) before testing any pair, to choose between this and
+//! [`TreeSweep`](super::TreeSweep) ([`ListSweep::work`] reports W with the number of
+//! pair tests).
 //!
 //! # Degeneracies and precision
 //! As for the module: predicates come from the caller's kernel, touchings and
@@ -93,6 +94,8 @@ impl List {
 pub struct ListWorkspace {
     lists: [List; 2],
     pos: [Vec<u32>; 2],
+    /// Pass every candidate on, without the y-range check (seed 003's sweep).
+    every_candidate: bool,
 }
 
 impl Crossings for ListSweep {
@@ -123,7 +126,7 @@ impl Crossings for ListSweep {
 
 /// The cost of a candidate whose y-range meets the new edge's (a segment test), in
 /// units of a skipped candidate.
-pub(crate) const PAIR_COST: u64 = 8;
+pub const PAIR_COST: u64 = 8;
 
 /// Runs the sweep over the sorted vertices, calling `pair` on every pair of a P edge
 /// and a Q edge whose y-ranges overlap while both are listed (each edge in its
@@ -137,6 +140,7 @@ pub(crate) fn run(
     mut pair: impl FnMut(Point, Point, Point, Point),
 ) -> Option<u64> {
     let mut spent = 0u64;
+    let filter = !ws.every_candidate;
     let Input { p, q, events } = input;
     let polys = [p.vertices(), q.vertices()];
     let n = polys[0].len();
@@ -172,7 +176,7 @@ pub(crate) fn run(
                 let other_list = &ws.lists[1 - s];
                 spent += other_list.ys.len() as u64;
                 for (at, &(lo, hi)) in other_list.ys.iter().enumerate() {
-                    if lo > yhi || hi < ylo {
+                    if filter && (lo > yhi || hi < ylo) {
                         continue;
                     }
                     spent += PAIR_COST;
@@ -222,6 +226,23 @@ pub struct ListWork {
     pub candidates: u64,
     /// Candidates whose y-range meets the inserted edge's: the pairs tested.
     pub tests: u64,
+}
+
+/// The lists as seed 003 runs them: `pair` is called on every candidate (each edge
+/// of the other polygon listed when an edge is inserted, P's edge first), with no
+/// y-range check. For `polysect bench crossings`.
+pub(crate) fn every_candidate(
+    p: &SimplePolygon,
+    q: &SimplePolygon,
+    events: &mut Vec<(Point, u32)>,
+    ws: &mut ListWorkspace,
+    pair: impl FnMut(Point, Point, Point, Point),
+) {
+    sorted_events(p, q, events);
+    let input = Input { p, q, events };
+    ws.every_candidate = true;
+    run(input, ws, u64::MAX, pair);
+    ws.every_candidate = false;
 }
 
 impl ListSweep {

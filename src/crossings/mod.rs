@@ -4,8 +4,8 @@
 //! # Output
 //! The distinct points where an edge of P meets an edge of Q, sorted
 //! lexicographically (x, then y) and deduplicated exactly (no epsilon):
-//! * a **proper crossing** (the edges' interiors cross at one point): the point is
-//!   constructed in `f64` by [`crossing_point`], within the bound documented there;
+//! * a **proper crossing** (the edges' interiors cross at one point): the exact
+//!   crossing with each coordinate rounded to the nearest `f64` ([`crossing_point`]);
 //! * a **touching** (a vertex on a vertex, or a vertex on the other polygon's edge):
 //!   the input vertex itself, bit for bit;
 //! * a **collinear overlap** (two edges share a part of positive length): its two
@@ -15,23 +15,33 @@
 //! Polygons are cleaned on construction ([`SimplePolygon`] has no straight vertex),
 //! so every maximal shared stretch of the two boundaries is the overlap of exactly
 //! one pair of edges and is reported by its two endpoints only.
+//! [`Touching::Exclude`] keeps only the proper crossings and the overlap ends: a pair
+//! of edges whose single common point is an endpoint of one of them contributes
+//! nothing (seed 003's intent; docs/crossings.md has the decision).
 //!
 //! # Algorithms
+//! n and m are the polygons' sizes, k = n + m, c the number of reported points.
+//!
 //! | algorithm | time | notes |
 //! |---|---|---|
-//! | [`Sweep`] | O(k log k + Σ r), worst case O(n·m) | Žalik's sweep with two lists of pierced edges; k = n + m vertices, r = length of the other polygon's list at each insertion |
+//! | [`Sweep`] | O((k + c) log k) on every input | runs [`ListSweep`] when its counted work fits a budget of O(k log k), [`TreeSweep`] otherwise |
+//! | [`ListSweep`] | O(k log k + W), W ≤ 2nm | Žalik's sweep with two unordered lists of pierced edges; W = Σ r, r the other list's length at each insertion |
+//! | [`TreeSweep`] | O((k + c) log k) expected | red–blue sweep over the vertices, one treap of both polygons' pierced edges repaired lazily with exact orientation tests |
 //! | [`Brute`] | O(n·m) | every edge pair; the reference |
 //!
-//! Both test each candidate pair of edges with the same function (a bounding-box
-//! rejection, then [`segment_contact`] with the caller's kernel), so under the
-//! [`Exact`] kernel they report the same points bit for bit; the test suite checks
-//! that on random and degenerate inputs. Under [`Fast`] a near-degenerate pair may be
-//! misclassified (a touching missed or a near miss reported), and the two algorithms
-//! may then differ by such points.
+//! All test each candidate pair of edges with the same function (a bounding-box
+//! rejection, then [`segment_contact`] with the caller's kernel) and construct
+//! crossings with the same correctly rounded function, so under the [`Exact`] kernel
+//! they report the same points bit for bit; the test suite and the fuzz harness check
+//! that on random, degenerate and adversarial inputs. Under [`Fast`] a
+//! near-degenerate pair may be misclassified (a touching missed or a near miss
+//! reported), and the algorithms may then differ by such points ([`TreeSweep`]
+//! orders its status with exact predicates whatever the kernel, so its cost bound
+//! holds for both).
 
 pub mod brute;
 pub mod lists;
-mod point;
+pub mod point;
 mod status;
 pub mod sweep;
 pub mod tree;

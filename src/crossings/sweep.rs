@@ -14,7 +14,7 @@
 //! tree costs (measured: 35 to 90 units per vertex and level).
 //!
 //! W depends only on the order of the events, so one pass over the sorted vertices
-//! counts it exactly in O(k) ([`list_work`]) before any pair is tested. When W > B
+//! counts it exactly in O(k) before any pair is tested. When W > B
 //! the tree runs at once (zigzags, needle combs, every family whose lists grow with
 //! n). Otherwise the lists run, counting their units, and give up for the tree as
 //! soon as they exceed B (candidates whose y-ranges all overlap, as in needle combs
@@ -23,7 +23,8 @@
 //! O((k + c) log k) on every input.
 //!
 //! # Complexity
-//! O((n + m + k) log(n + m)) time on every input, O(n + m) memory plus the output.
+//! O((n + m + c) log(n + m)) time on every input (c reported points; expected over
+//! the tree's pseudo-random priorities), O(n + m) memory plus the output.
 //!
 //! # Degeneracies and precision
 //! Both sweeps report exactly the points of [`Brute`](super::Brute) under the exact

@@ -48,10 +48,21 @@
 //!
 //! # Complexity
 //! O((n + m) log(n + m)) expected for the sort and the status operations (a treap,
-//! [`status`](super::status)), plus O(k log(n + m)) for the k reported pairs: k is at
-//! most four times the number of reported points. No pair of edges is ever tested
+//! `status.rs`), plus O(k log(n + m)) for the k reported pairs: k is at
+//! most eight times the number of reported points (a point is shared by at most four
+//! pairs, and a pair is reported at most twice). No pair of edges is ever tested
 //! in vain. Memory O(n + m). The bound holds for every input, including edges that
 //! all span one x-range, many vertices on one vertical line and long overlaps.
+//!
+//! # Degeneracies
+//! A vertical edge is pierced between its lower and its upper end (the events are
+//! sorted by x, then y) and goes through every vertex on it, so it meets what
+//! crosses it there in step 3 or is repaired at its upper end. Edges of P and Q on
+//! one line overlap from the later of their lower ends: both go through that
+//! vertex (step 3 reports them), keep one order while they overlap (they are in the
+//! same class at every vertex), and go through the end of the overlap too. Any
+//! number of vertices may share an x. A P vertex on a Q vertex is one event with
+//! up to four edges through it.
 //!
 //! # Precision
 //! The sweep's own decisions (classification against a vertex, the order of
@@ -138,7 +149,7 @@ pub(crate) fn run<K: Kernel>(
         }
     }
     ws.status.reset(n + polys[1].len(), n);
-    let mut sweep = Sweep {
+    let mut sweep = State {
         k,
         polys,
         n,
@@ -172,7 +183,8 @@ pub(crate) fn run<K: Kernel>(
     }
 }
 
-struct Sweep<'a, K: Kernel> {
+/// One run of the sweep: the input, the options and the workspace.
+struct State<'a, K: Kernel> {
     k: K,
     polys: [&'a [Point]; 2],
     n: usize,
@@ -181,7 +193,7 @@ struct Sweep<'a, K: Kernel> {
     out: &'a mut Vec<Point>,
 }
 
-impl<K: Kernel> Sweep<'_, K> {
+impl<K: Kernel> State<'_, K> {
     #[inline]
     fn class(&self, id: u32, v: Point) -> Class {
         let (lo, hi) = (self.ws.lo[id as usize], self.ws.hi[id as usize]);

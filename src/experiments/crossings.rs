@@ -9,6 +9,7 @@
 //! | `brute` | [`Brute`]: every pair, a bounding-box rejection, then the exact segment test |
 //! | `brute-nobox` | every pair through the exact segment test, no box rejection |
 //! | `brute-division` | the seed's brute force: every pair, the intersection of the two lines by division (plain `f64`), kept when it lies in both segments' boxes |
+//! | `sweep-division` | the seed's sweep: Žalik's lists, every candidate through the same division test (no y-range check) |
 //!
 //! Every algorithm constructs the points it reports. Before timing, the sweep's
 //! points are checked against the brute force's (`wrong` counts pairs where they
@@ -24,6 +25,8 @@ use super::measure::{median, time_per_query};
 use super::plot::{Chart, Series};
 use super::scaling::{draw, short_ns};
 use super::{Config, Csv, Report, ns};
+use crate::crossings::lists::{ListWorkspace, every_candidate};
+
 use crate::crossings::{Brute, Crossings, ListSweep, Sweep, SweepWorkspace, crossing_point};
 use crate::generate::simple::{PointDistribution, SimpleMethod, random_simple_polygon};
 use crate::kernel::{Exact, Point, SegmentContact, segment_contact};
@@ -40,36 +43,60 @@ pub const SIGMAS: [f64; 4] = [10.0, 20.0, 50.0, 100.0];
 /// The n of both tables.
 pub const SEED_SIZES: [usize; 8] = [5, 50, 100, 200, 500, 800, 1000, 2000];
 
-const ALGORITHMS: [&str; 4] = ["sweep", "brute", "brute-nobox", "brute-division"];
+const ALGORITHMS: [&str; 5] = [
+    "sweep",
+    "brute",
+    "brute-nobox",
+    "brute-division",
+    "sweep-division",
+];
 
-/// The seed's brute force: for every pair, the intersection point of the two lines
-/// (nothing for parallel lines), kept when it lies in the bounding boxes of both
-/// segments. Plain `f64`: a touching may be kept or lost by rounding and an overlap
-/// is never found.
-pub fn division_brute(p: &SimplePolygon, q: &SimplePolygon, out: &mut Vec<Point>) {
-    out.clear();
+/// The seed's segment test: the intersection point of the two lines (none for
+/// parallel lines), kept when it lies in the bounding boxes of both segments. Plain
+/// `f64`: a touching may be kept or lost by rounding and an overlap is never found.
+#[inline]
+pub fn division_point(a: Point, b: Point, c: Point, d: Point) -> Option<Point> {
     let within = |a: Point, b: Point, x: f64, y: f64| {
         x >= a.x.min(b.x) && x <= a.x.max(b.x) && y >= a.y.min(b.y) && y <= a.y.max(b.y)
     };
+    let (a1, b1) = (b.y - a.y, a.x - b.x);
+    let c1 = a1 * a.x + b1 * a.y;
+    let (a2, b2) = (d.y - c.y, c.x - d.x);
+    let c2 = a2 * c.x + b2 * c.y;
+    let det = a1 * b2 - a2 * b1;
+    if det == 0.0 {
+        return None;
+    }
+    let x = (b2 * c1 - b1 * c2) / det;
+    let y = (a1 * c2 - a2 * c1) / det;
+    (within(a, b, x, y) && within(c, d, x, y)).then_some(Point::new(x, y))
+}
+
+/// The seed's brute force: [`division_point`] on every pair.
+pub fn division_brute(p: &SimplePolygon, q: &SimplePolygon, out: &mut Vec<Point>) {
+    out.clear();
     for i in 0..p.len() {
         let (a, b) = p.edge(i);
-        let (a1, b1) = (b.y - a.y, a.x - b.x);
-        let c1 = a1 * a.x + b1 * a.y;
         for j in 0..q.len() {
             let (c, d) = q.edge(j);
-            let (a2, b2) = (d.y - c.y, c.x - d.x);
-            let c2 = a2 * c.x + b2 * c.y;
-            let det = a1 * b2 - a2 * b1;
-            if det == 0.0 {
-                continue;
-            }
-            let x = (b2 * c1 - b1 * c2) / det;
-            let y = (a1 * c2 - a2 * c1) / det;
-            if within(a, b, x, y) && within(c, d, x, y) {
-                out.push(Point::new(x, y));
-            }
+            out.extend(division_point(a, b, c, d));
         }
     }
+}
+
+/// The seed's sweep: Žalik's lists with every candidate through [`division_point`]
+/// (no y-range check, no exact predicate). `events` and `ws` are scratch memory.
+pub fn division_sweep(
+    p: &SimplePolygon,
+    q: &SimplePolygon,
+    events: &mut Vec<(Point, u32)>,
+    ws: &mut ListWorkspace,
+    out: &mut Vec<Point>,
+) {
+    out.clear();
+    every_candidate(p, q, events, ws, |a, b, c, d| {
+        out.extend(division_point(a, b, c, d))
+    });
 }
 
 /// Every pair through the exact segment test, no box rejection; crossings constructed.
@@ -204,14 +231,20 @@ pub(crate) fn run(config: &Config) -> io::Result<Report> {
                 .collect::<Vec<Row>>()
         };
         let sweep = at("sweep");
-        for alg in ["brute", "brute-nobox", "brute-division"] {
-            let pts = at(alg)
-                .iter()
-                .zip(&sweep)
+        let ratio = |num: &[Row], den: &[Row]| -> Vec<(f64, f64)> {
+            num.iter()
+                .zip(den)
                 .map(|(r, s)| (r.n as f64, r.median_ns / s.median_ns))
-                .collect();
-            series.push(Series::new(format!("{alg} / sweep, {dist} {param}"), pts));
-        }
+                .collect()
+        };
+        series.push(Series::new(
+            format!("brute / sweep, {dist} {param}"),
+            ratio(&at("brute"), &sweep),
+        ));
+        series.push(Series::new(
+            format!("brute-division / sweep-division, {dist} {param}"),
+            ratio(&at("brute-division"), &at("sweep-division")),
+        ));
         let pts = sweep
             .iter()
             .filter(|s| s.candidates > 0.0)
@@ -220,7 +253,7 @@ pub(crate) fn run(config: &Config) -> io::Result<Report> {
         series.push(Series::new(format!("n·m / candidates, {dist} {param}"), pts));
     }
     let chart = Chart {
-        title: "brute force / sweep, and pairs / list candidates",
+        title: "brute / sweep, the seed's pair: division brute / division sweep, and n·m / W",
         x_label: "n = m (vertices per polygon)",
         y_label: "ratio",
         log2_x: false,
@@ -241,6 +274,7 @@ fn measure(
     polys: &[(SimplePolygon, SimplePolygon)],
 ) -> Vec<Row> {
     let mut ws = SweepWorkspace::default();
+    let (mut lists, mut events) = (ListWorkspace::default(), Vec::new());
     let mut out = Vec::new();
     let (mut points, mut division_points, mut candidates, mut tests) = (vec![], vec![], vec![], vec![]);
     let mut wrong = 0;
@@ -268,7 +302,8 @@ fn measure(
                             "sweep" => Sweep.crossings_in(Exact, p, q, &mut ws, &mut out),
                             "brute" => out = Brute.crossings(p, q),
                             "brute-nobox" => nobox_brute(p, q, &mut out),
-                            _ => division_brute(p, q, &mut out),
+                            "brute-division" => division_brute(p, q, &mut out),
+                            _ => division_sweep(p, q, &mut events, &mut lists, &mut out),
                         }
                         black_box(out.len()) > 0
                     })
@@ -294,7 +329,7 @@ fn measure(
 /// Tables in the seed's layout, with the ratios and the pair counts.
 fn summary(rows: &[Row], dists: &[(&'static str, f64, PointDistribution)]) -> String {
     let mut t = String::from(
-        "| distribution | n = m | points | brute | brute-nobox | brute-division | sweep | brute / sweep | division / sweep | n·m / candidates | wrong |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| distribution | n = m | points | brute | brute-nobox | brute-division | sweep | sweep-division | brute / sweep | brute-division / sweep-division | n·m / candidates | wrong |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for &(dist, param, _) in dists {
         let sizes: Vec<usize> = {
@@ -308,21 +343,26 @@ fn summary(rows: &[Row], dists: &[(&'static str, f64, PointDistribution)]) -> St
                 rows.iter()
                     .find(|r| r.dist == dist && r.param == param && r.n == n && r.alg == alg)
             };
-            let (Some(s), Some(b), Some(nb), Some(d)) =
-                (at("sweep"), at("brute"), at("brute-nobox"), at("brute-division"))
-            else {
+            let (Some(s), Some(b), Some(nb), Some(d), Some(sd)) = (
+                at("sweep"),
+                at("brute"),
+                at("brute-nobox"),
+                at("brute-division"),
+                at("sweep-division"),
+            ) else {
                 continue;
             };
             let symbol = if dist == "uniform" { "Δ" } else { "σ" };
             t.push_str(&format!(
-                "| {dist} {symbol} = {param} | {n} | {} | {} | {} | {} | {} | {:.1}× | {:.1}× | {:.1} | {} |\n",
+                "| {dist} {symbol} = {param} | {n} | {} | {} | {} | {} | {} | {} | {:.1}× | {:.1}× | {:.1} | {} |\n",
                 s.points,
                 short_ns(b.median_ns),
                 short_ns(nb.median_ns),
                 short_ns(d.median_ns),
                 short_ns(s.median_ns),
+                short_ns(sd.median_ns),
                 b.median_ns / s.median_ns,
-                d.median_ns / s.median_ns,
+                d.median_ns / sd.median_ns,
                 (n * n) as f64 / s.candidates.max(1.0),
                 s.wrong,
             ));
