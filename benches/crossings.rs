@@ -24,7 +24,8 @@
 //! cargo bench --bench crossings -- --warm-up-time 1 --measurement-time 2
 //! ```
 
-use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use criterion::measurement::WallTime;
+use criterion::{BenchmarkGroup, BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use geo::algorithm::sweep::{Cross, Intersections};
 use geo::{Line, coord};
 use polysect::crossings::{Brute, Crossings, ListSweep, Sweep, SweepWorkspace, TreeSweep};
@@ -78,6 +79,109 @@ fn tagged(p: &SimplePolygon, poly: u8) -> impl Iterator<Item = Tagged> + '_ {
     })
 }
 
+/// What to time on one pair besides the default sweep and the tree sweep.
+struct Plan {
+    /// The default sweep with the fast kernel.
+    fast: bool,
+    /// The lists alone.
+    lists: bool,
+    /// The brute force.
+    brute: bool,
+    /// A segment test on every pair, no box rejection.
+    nobox: bool,
+    /// geo's sweep, with the number of edge pairs it must find.
+    geo: Option<usize>,
+}
+
+/// Times the algorithms of `plan` on `p` and `q`, asserting the `k` expected points
+/// (or geo's own count) in every iteration.
+fn bench_pair(
+    group: &mut BenchmarkGroup<'_, WallTime>,
+    n: usize,
+    (p, q): (&SimplePolygon, &SimplePolygon),
+    k: usize,
+    plan: Plan,
+) {
+    group.throughput(Throughput::Elements((p.len() + q.len()) as u64));
+    let mut ws = SweepWorkspace::default();
+    let mut out = Vec::new();
+    let pq = (p, q);
+    group.bench_with_input(BenchmarkId::new("sweep-exact", n), &pq, |b, (p, q)| {
+        b.iter(|| {
+            Sweep.crossings_in(Exact, black_box(p), black_box(q), &mut ws, &mut out);
+            assert_eq!(out.len(), k);
+        })
+    });
+    if plan.fast {
+        group.bench_with_input(BenchmarkId::new("sweep-fast", n), &pq, |b, (p, q)| {
+            b.iter(|| {
+                Sweep.crossings_in(Fast, black_box(p), black_box(q), &mut ws, &mut out);
+                assert_eq!(out.len(), k);
+            })
+        });
+    }
+    // The two sweeps that `sweep` chooses between, each alone.
+    if plan.lists {
+        group.bench_with_input(BenchmarkId::new("list-sweep", n), &pq, |b, (p, q)| {
+            b.iter(|| {
+                assert_eq!(
+                    ListSweep.crossings_with(Exact, black_box(p), black_box(q)).len(),
+                    k
+                )
+            })
+        });
+    }
+    group.bench_with_input(BenchmarkId::new("tree-sweep", n), &pq, |b, (p, q)| {
+        b.iter(|| {
+            assert_eq!(
+                TreeSweep.crossings_with(Exact, black_box(p), black_box(q)).len(),
+                k
+            )
+        })
+    });
+    if plan.brute {
+        group.bench_with_input(BenchmarkId::new("brute-exact", n), &pq, |b, (p, q)| {
+            b.iter(|| assert_eq!(Brute.crossings_with(Exact, black_box(p), black_box(q)).len(), k))
+        });
+    }
+    if plan.nobox {
+        // A segment test on every pair, no bounding-box rejection (counting meeting
+        // pairs: random input has no touchings).
+        group.bench_with_input(BenchmarkId::new("brute-nobox-exact", n), &pq, |b, (p, q)| {
+            b.iter(|| {
+                let mut meets = 0;
+                for i in 0..p.len() {
+                    let (p1, p2) = p.edge(i);
+                    for j in 0..q.len() {
+                        let (q1, q2) = q.edge(j);
+                        meets += segment_contact(Exact, p1, p2, q1, q2).meets() as usize;
+                    }
+                }
+                assert_eq!(meets, k);
+            })
+        });
+    }
+    if let Some(geo_k) = plan.geo {
+        let edges: Vec<Tagged> = tagged(p, 0).chain(tagged(q, 1)).collect();
+        group.bench_with_input(BenchmarkId::new("geo-sweep", n), &edges, |b, edges| {
+            b.iter(|| {
+                let found = Intersections::from_iter(black_box(edges).iter())
+                    .filter(|(a, b, _)| a.poly != b.poly)
+                    .count();
+                assert_eq!(found, geo_k);
+            })
+        });
+    }
+}
+
+/// geo's count of edge pairs between the polygons.
+fn geo_count(p: &SimplePolygon, q: &SimplePolygon) -> usize {
+    let edges: Vec<Tagged> = tagged(p, 0).chain(tagged(q, 1)).collect();
+    Intersections::from_iter(edges.iter())
+        .filter(|(a, b, _)| a.poly != b.poly)
+        .count()
+}
+
 fn bench(c: &mut Criterion) {
     let dists = [
         (
@@ -105,74 +209,15 @@ fn bench(c: &mut Criterion) {
             }
             let k = expected.len();
             eprintln!("{dname}: n = m = {n}: {k} points");
-            group.throughput(Throughput::Elements((p.len() + q.len()) as u64));
-            let mut ws = SweepWorkspace::default();
-            let mut out = Vec::new();
-            group.bench_with_input(BenchmarkId::new("sweep-exact", n), &(&p, &q), |b, (p, q)| {
-                b.iter(|| {
-                    Sweep.crossings_in(Exact, black_box(p), black_box(q), &mut ws, &mut out);
-                    assert_eq!(out.len(), k);
-                })
-            });
-            group.bench_with_input(BenchmarkId::new("sweep-fast", n), &(&p, &q), |b, (p, q)| {
-                b.iter(|| {
-                    Sweep.crossings_in(Fast, black_box(p), black_box(q), &mut ws, &mut out);
-                    assert_eq!(out.len(), k);
-                })
-            });
-            // The two sweeps that `sweep` chooses between, each alone.
-            group.bench_with_input(BenchmarkId::new("list-sweep", n), &(&p, &q), |b, (p, q)| {
-                b.iter(|| {
-                    assert_eq!(
-                        ListSweep.crossings_with(Exact, black_box(p), black_box(q)).len(),
-                        k
-                    )
-                })
-            });
-            group.bench_with_input(BenchmarkId::new("tree-sweep", n), &(&p, &q), |b, (p, q)| {
-                b.iter(|| {
-                    assert_eq!(
-                        TreeSweep.crossings_with(Exact, black_box(p), black_box(q)).len(),
-                        k
-                    )
-                })
-            });
-            if n <= BRUTE_MAX {
-                group.bench_with_input(BenchmarkId::new("brute-exact", n), &(&p, &q), |b, (p, q)| {
-                    b.iter(|| assert_eq!(Brute.crossings_with(Exact, black_box(p), black_box(q)).len(), k))
-                });
-            }
-            if n <= SEED_MAX {
-                // The seed's baseline: a segment test on every pair, no bounding-box
-                // rejection (counting meeting pairs: random input has no touchings).
-                group.bench_with_input(
-                    BenchmarkId::new("brute-nobox-exact", n),
-                    &(&p, &q),
-                    |b, (p, q)| {
-                        b.iter(|| {
-                            let mut meets = 0;
-                            for i in 0..p.len() {
-                                let (p1, p2) = p.edge(i);
-                                for j in 0..q.len() {
-                                    let (q1, q2) = q.edge(j);
-                                    meets += segment_contact(Exact, p1, p2, q1, q2).meets() as usize;
-                                }
-                            }
-                            assert_eq!(meets, k);
-                        })
-                    },
-                );
-            }
-            let edges: Vec<Tagged> = tagged(&p, 0).chain(tagged(&q, 1)).collect();
-            group.bench_with_input(BenchmarkId::new("geo-sweep", n), &edges, |b, edges| {
-                b.iter(|| {
-                    let found = Intersections::from_iter(black_box(edges).iter())
-                        .filter(|(a, b, _)| a.poly != b.poly)
-                        .count();
-                    // Random real input: no touchings, so one edge pair per point.
-                    assert_eq!(found, k);
-                })
-            });
+            // Random real input: no touchings, so geo finds one edge pair per point.
+            let plan = Plan {
+                fast: true,
+                lists: true,
+                brute: n <= BRUTE_MAX,
+                nobox: n <= SEED_MAX,
+                geo: Some(k),
+            };
+            bench_pair(&mut group, n, (&p, &q), k, plan);
         }
         group.finish();
     }
@@ -187,60 +232,20 @@ fn bench(c: &mut Criterion) {
                 assert_eq!(Brute.crossings(&p, &q), expected);
             }
             let k = expected.len();
-            let edges: Vec<Tagged> = tagged(&p, 0).chain(tagged(&q, 1)).collect();
-            // geo's count of edge pairs between the polygons, asserted in its loop.
-            let geo_k = if n <= HARD_GEO_MAX {
-                Intersections::from_iter(edges.iter())
-                    .filter(|(a, b, _)| a.poly != b.poly)
-                    .count()
-            } else {
-                0
-            };
+            let geo = (n <= HARD_GEO_MAX).then(|| geo_count(&p, &q));
             eprintln!(
-                "{family}: n = {} + {}: {k} points, geo finds {geo_k} pairs",
+                "{family}: n = {} + {}: {k} points, geo finds {geo:?} pairs",
                 p.len(),
                 q.len()
             );
-            group.throughput(Throughput::Elements((p.len() + q.len()) as u64));
-            let mut ws = SweepWorkspace::default();
-            let mut out = Vec::new();
-            group.bench_with_input(BenchmarkId::new("sweep-exact", n), &(&p, &q), |b, (p, q)| {
-                b.iter(|| {
-                    Sweep.crossings_in(Exact, black_box(p), black_box(q), &mut ws, &mut out);
-                    assert_eq!(out.len(), k);
-                })
-            });
-            group.bench_with_input(BenchmarkId::new("tree-sweep", n), &(&p, &q), |b, (p, q)| {
-                b.iter(|| {
-                    assert_eq!(
-                        TreeSweep.crossings_with(Exact, black_box(p), black_box(q)).len(),
-                        k
-                    )
-                })
-            });
-            if n <= HARD_BRUTE_MAX {
-                group.bench_with_input(BenchmarkId::new("list-sweep", n), &(&p, &q), |b, (p, q)| {
-                    b.iter(|| {
-                        assert_eq!(
-                            ListSweep.crossings_with(Exact, black_box(p), black_box(q)).len(),
-                            k
-                        )
-                    })
-                });
-                group.bench_with_input(BenchmarkId::new("brute-exact", n), &(&p, &q), |b, (p, q)| {
-                    b.iter(|| assert_eq!(Brute.crossings_with(Exact, black_box(p), black_box(q)).len(), k))
-                });
-            }
-            if n <= HARD_GEO_MAX {
-                group.bench_with_input(BenchmarkId::new("geo-sweep", n), &edges, |b, edges| {
-                    b.iter(|| {
-                        let found = Intersections::from_iter(black_box(edges).iter())
-                            .filter(|(a, b, _)| a.poly != b.poly)
-                            .count();
-                        assert_eq!(found, geo_k);
-                    })
-                });
-            }
+            let plan = Plan {
+                fast: false,
+                lists: n <= HARD_BRUTE_MAX,
+                brute: n <= HARD_BRUTE_MAX,
+                nobox: false,
+                geo,
+            };
+            bench_pair(&mut group, n, (&p, &q), k, plan);
         }
         group.finish();
     }

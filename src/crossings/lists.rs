@@ -45,8 +45,8 @@
 //! [`crossing_point`](super::crossing_point). Under the exact kernel the result is
 //! identical to [`Brute`](super::Brute)'s.
 
-use super::sweep::{Input, sorted_events};
-use super::{CrossingOptions, Crossings, edge_pair_points, sort_dedup};
+use super::sweep::{Input, sorted_events, standalone};
+use super::{CrossingOptions, Crossings, edge_pair_points};
 use crate::kernel::{Kernel, Point};
 use crate::polygon::SimplePolygon;
 use std::cmp::Ordering;
@@ -108,19 +108,11 @@ impl Crossings for ListSweep {
         q: &SimplePolygon,
         options: CrossingOptions,
     ) -> Vec<Point> {
-        let mut events = Vec::new();
-        sorted_events(p, q, &mut events);
-        let input = Input {
-            p,
-            q,
-            events: &events,
-        };
-        let mut out = Vec::new();
-        run(input, &mut ListWorkspace::default(), u64::MAX, |a, b, c, d| {
-            edge_pair_points(k, a, b, c, d, options, &mut out)
-        });
-        sort_dedup(&mut out);
-        out
+        standalone(p, q, |input, out| {
+            run(input, &mut ListWorkspace::default(), u64::MAX, |a, b, c, d| {
+                edge_pair_points(k, a, b, c, d, options, out)
+            });
+        })
     }
 }
 

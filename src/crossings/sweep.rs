@@ -153,6 +153,28 @@ pub(crate) struct Input<'a> {
     pub events: &'a [(Point, u32)],
 }
 
+/// Sorts the vertices, lets `run` append points for them, and returns the points
+/// sorted and deduplicated: a whole query for a sweep without a workspace.
+pub(crate) fn standalone(
+    p: &SimplePolygon,
+    q: &SimplePolygon,
+    run: impl FnOnce(Input<'_>, &mut Vec<Point>),
+) -> Vec<Point> {
+    let mut events = Vec::new();
+    sorted_events(p, q, &mut events);
+    let mut out = Vec::new();
+    run(
+        Input {
+            p,
+            q,
+            events: &events,
+        },
+        &mut out,
+    );
+    sort_dedup(&mut out);
+    out
+}
+
 /// The vertices of P (ids 0..n) and of Q (ids n..n+m) sorted lexicographically
 /// (x, then y): the events of both sweeps.
 pub(crate) fn sorted_events(p: &SimplePolygon, q: &SimplePolygon, events: &mut Vec<(Point, u32)>) {

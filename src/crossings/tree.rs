@@ -72,8 +72,8 @@
 //! [`segment_contact`](crate::kernel::segment_contact), how each reported pair meets.
 
 use super::status::Status;
-use super::sweep::{Input, sorted_events};
-use super::{CrossingOptions, Crossings, edge_pair_points, sort_dedup};
+use super::sweep::{Input, standalone};
+use super::{CrossingOptions, Crossings, edge_pair_points};
 use crate::kernel::{Exact, Kernel, Orientation, Point};
 use crate::polygon::SimplePolygon;
 use std::cmp::Ordering;
@@ -112,17 +112,9 @@ impl Crossings for TreeSweep {
         q: &SimplePolygon,
         options: CrossingOptions,
     ) -> Vec<Point> {
-        let mut events = Vec::new();
-        sorted_events(p, q, &mut events);
-        let input = Input {
-            p,
-            q,
-            events: &events,
-        };
-        let mut out = Vec::new();
-        run(k, input, options, &mut TreeWorkspace::default(), &mut out);
-        sort_dedup(&mut out);
-        out
+        standalone(p, q, |input, out| {
+            run(k, input, options, &mut TreeWorkspace::default(), out)
+        })
     }
 }
 
