@@ -6,10 +6,10 @@
 //! t = N / D, N = (c − a) × (e − c) and D = (b − a) × (e − c), so each coordinate is
 //! a quotient of two polynomials of degrees 3 and 2 in the inputs.
 //!
-//! 1. **Filter.** The eight coordinates are scaled by a power of two so that the
-//!    largest magnitude is in [½, 1) (exact). In double-word arithmetic (pairs of
-//!    `f64`, about 106 bits: error-free sums, and products by fused multiply-add) the differences are
-//!    exact, D and N carry an absolute error below 2⁻⁹⁶ times the sum of their two
+//! 1. **Filter.** When a coordinate lies outside [2⁻²⁰⁰, 2²⁰⁰] the eight are first
+//!    scaled by a power of two so that the largest magnitude is in [½, 1) (exact).
+//!    In double-word arithmetic (pairs of `f64`, about 106 bits: error-free sums,
+//!    and products by fused multiply-add) the differences are exact, D and N carry an absolute error below 2⁻⁹⁶ times the sum of their two
 //!    products' magnitudes, t = N / D, the product t·(b − a) and the sum with a each
 //!    add a relative error below 2⁻⁹⁶ (the true constants are 5 to 21·2⁻¹⁰⁶; the bound
 //!    leaves a factor 16 to spare). That gives the computed coordinate h + l (double
@@ -31,9 +31,12 @@
 //! # Cost
 //! The filter is a few dozen floating-point operations and decides all but a tiny
 //! fraction of crossings of ordinary inputs (a coordinate would have to fall within
-//! about 2⁻⁴⁰ of a rounding midpoint); ill-conditioned crossings (nearly parallel
-//! edges at angles near 2⁻⁴⁰ and below) and the cases above take the exact path,
-//! a few microseconds.
+//! about 2⁻⁴¹ ulp of a rounding midpoint); exact ties, extremely ill-conditioned
+//! crossings (nearly parallel edges at angles below about 2⁻⁵⁶) and the cases above
+//! take the exact path, about 2 µs. Ties are not rare in structured input: a
+//! crossing of an edge with a copy of a neighbouring edge shifted by some offset
+//! lies halfway between the two, so half of its coordinates can be exact ties (a
+//! third of the crossings of some zigzag pairs in the tests and benchmarks).
 
 use crate::kernel::Point;
 use crate::kernel::Ring;
@@ -161,8 +164,8 @@ fn filtered(p1: Point, p2: Point, q1: Point, q2: Point) -> Option<Point> {
     // ones to be at least 2^-200 after that. Either way every double-word component
     // below is a multiple of 2^-252 and below 2^202, so no product of two of them
     // underflows or overflows.
-    let in_range = |v: f64| v == 0.0 || (TINY..=HUGE).contains(&v.abs());
-    let k = if coords.iter().all(|&v| in_range(v)) {
+    let in_range = |v: f64| (v == 0.0) | ((v.abs() >= TINY) & (v.abs() <= HUGE));
+    let k = if coords.iter().fold(true, |all, &v| all & in_range(v)) {
         0
     } else {
         let m = coords.iter().fold(0.0f64, |m, v| m.max(v.abs()));
@@ -200,7 +203,33 @@ fn filtered(p1: Point, p2: Point, q1: Point, q2: Point) -> Option<Point> {
     let p = two_prod(q1, den.h);
     let rem = ((num.h - p.h) - p.l) + num.l - q1 * den.l;
     let t = two_sum(q1, rem * inv);
-    let coord = |a: f64, d: Dw| -> Option<f64> {
+    let quotient = Quotient {
+        t,
+        inv_abs: inv.abs(),
+        num_mag,
+        den_mag,
+        k,
+    };
+    let (x, y) = (quotient.coord(a.x, bx), quotient.coord(a.y, by));
+    (x.is_some() & y.is_some()).then(|| Point::new(x.unwrap_or(0.0), y.unwrap_or(0.0)))
+}
+
+/// t = N / D with what [`Quotient::coord`] needs for its error bound.
+struct Quotient {
+    t: Dw,
+    /// |1 / D| (rounded).
+    inv_abs: f64,
+    num_mag: f64,
+    den_mag: f64,
+    /// The scaling exponent of the inputs.
+    k: i32,
+}
+
+impl Quotient {
+    /// a + t·d rounded, when the error bound proves the rounding; `None` otherwise.
+    #[inline(always)]
+    fn coord(&self, a: f64, d: Dw) -> Option<f64> {
+        let t = self.t;
         // r = t·d, then a + r.
         let pr = two_prod(t.h, d.h);
         let r = two_sum(pr.h, pr.l + (t.h * d.l + t.l * d.h));
@@ -209,16 +238,13 @@ fn filtered(p1: Point, p2: Point, q1: Point, q2: Point) -> Option<Point> {
         // Distance of x.h + x.l to the exact coordinate: the errors of N and D carried
         // by r = (N / D)·d (|r|·errN/|N| = errN·|d|/|D|, |r|·errD/|D|), then t's, the
         // product's and the sum's own roundings (each below U96 relative).
-        let err = U96 * inv.abs() * (num_mag * d.h.abs() + den_mag * r.h.abs()) * (1.0 + CAP)
+        let err = U96 * self.inv_abs * (self.num_mag * d.h.abs() + self.den_mag * r.h.abs()) * (1.0 + CAP)
             + 4.0 * U96 * r.h.abs()
             + U96 * x.h.abs()
             + 1e-320;
         let h = x.h;
         // The result must be normal after scaling back (else the rounding grid differs).
-        let back = if k == 0 { h } else { scale(h, -k) };
-        if !(h.abs() >= f64::MIN_POSITIVE && back.abs() >= f64::MIN_POSITIVE) {
-            return None;
-        }
+        let back = if self.k == 0 { h } else { scale(h, -self.k) };
         // The gaps to the neighbours of h: one ulp, or half of it towards zero at a power of two.
         let bits = h.to_bits() & !(1 << 63);
         let ulp = f64::from_bits(bits & (0x7ff << 52)) * f64::EPSILON;
@@ -231,9 +257,9 @@ fn filtered(p1: Point, p2: Point, q1: Point, q2: Point) -> Option<Point> {
         let margin = 1.0 - CAP;
         let slack_up = (0.5 * up - x.l) * margin;
         let slack_down = (0.5 * down + x.l) * margin;
-        (err < slack_up && err < slack_down).then_some(back)
-    };
-    Some(Point::new(coord(a.x, bx)?, coord(a.y, by)?))
+        let normal = h.abs() >= f64::MIN_POSITIVE && back.abs() >= f64::MIN_POSITIVE;
+        (normal & (err < slack_up) & (err < slack_down)).then_some(back)
+    }
 }
 
 /// Step 2 of the module docs: the exact quotients, rounded. For parallel lines, `p1`.
