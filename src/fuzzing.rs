@@ -7,9 +7,9 @@
 //! into a regression test.
 
 use crate::intersect::{Algorithm, ArrayIntersection, Linear, brute_force};
-use crate::jsonl;
 use crate::kernel::{Exact, Point, Precision};
 use crate::polygon::{ConvexPolygon, EditError, LinkedPolygon, PolygonError, convex_hull};
+use crate::protocol;
 use std::fmt;
 
 /// A point whose `Debug` is the Rust expression that builds it.
@@ -186,7 +186,7 @@ pub fn json_line(bytes: &[u8]) -> bool {
     let mut answered = false;
     for &algorithm in Algorithm::ALL {
         for precision in Precision::ALL {
-            let reply = jsonl::check_line(bytes, |p, q| algorithm.intersects(precision, p, q));
+            let reply = protocol::check::check_line(bytes, |p, q| algorithm.intersects(precision, p, q));
             let v: serde_json::Value = serde_json::from_str(&reply).expect("the reply is JSON");
             assert!(
                 v.get("intersects").is_some() != v.get("error").is_some(),
@@ -317,6 +317,117 @@ pub fn crossings_agree(bytes: &[u8]) -> bool {
     let _ = CrossingAlgorithm::Sweep.run(Precision::Fast, &p, &q);
     let _ = TreeSweep.crossings_with(crate::kernel::Fast, &p, &q);
     true
+}
+
+/// Names the scene harness uses: a few, so that ops meet the same polygons.
+const SCENE_NAMES: [&str; 4] = ["a", "b", "\u{e9}", "a\"b"];
+
+/// One `scene` line from the decoder: an op of every kind with names from a small pool,
+/// small ids, points and point lists from [`Decoder`] (non-finite values print as
+/// `null`), and now and then a mutated byte or a raw byte string.
+fn scene_line(d: &mut Decoder<'_>) -> Option<Vec<u8>> {
+    use serde_json::json;
+    let sel = d.byte()?;
+    let name = SCENE_NAMES[(sel as usize / 16) % SCENE_NAMES.len()];
+    let other = SCENE_NAMES[d.byte()? as usize % SCENE_NAMES.len()];
+    let pt = |p: Point| json!([p.x, p.y]);
+    let mut line = match sel % 12 {
+        0 | 1 => {
+            let mut pts = d.points(10);
+            if sel % 12 == 1 {
+                // Mostly valid: the hull of the points, either way round.
+                pts = convex_hull(&pts).map(|h| h.into_vertices()).unwrap_or(pts);
+                if sel % 3 == 0 {
+                    pts.reverse();
+                }
+            }
+            json!({"op": "add", "name": name, "points": pts.into_iter().map(pt).collect::<Vec<_>>()})
+        }
+        2 => json!({"op": "drop", "name": name}),
+        3 | 4 => json!({"op": "insert", "name": name, "after": d.byte()? % 12, "point": pt(d.point()?)}),
+        5 => json!({"op": "remove", "name": name, "vertex": d.byte()? % 12}),
+        6 => json!({"op": "move", "name": name, "vertex": d.byte()? % 12, "to": pt(d.point()?)}),
+        7 => json!({"op": "translate", "name": name, "by": pt(d.point()?)}),
+        8 => json!({"op": "intersects", "a": name, "b": other}),
+        9 => json!({"op": "pairs"}),
+        10 => json!({"op": "vertices", "name": name}),
+        _ => {
+            // Raw bytes up to a newline.
+            let n = d.byte()? as usize % 24;
+            return Some((0..n).map_while(|_| d.byte()).filter(|&b| b != b'\n').collect());
+        }
+    }
+    .to_string()
+    .into_bytes();
+    if sel % 5 == 0 {
+        let at = d.byte()? as usize % line.len();
+        line[at] = d.byte()?;
+    }
+    Some(line)
+}
+
+/// A `scene` session from arbitrary bytes, under a strategy the first byte picks, on
+/// both kernels: every line gets one JSON object reply (an answer or a located error),
+/// a refused line changes nothing, the names and ids always match the scene exactly
+/// (`debug_validate`), and the two kernels agree on everything but query answers.
+/// Returns whether some edit or add was accepted.
+pub fn scene_ops(bytes: &[u8]) -> bool {
+    use crate::protocol::scene::{SceneOptions, SceneSession};
+    use crate::store::Strategy;
+    let mut d = Decoder::new(bytes);
+    let Some(first) = d.byte() else {
+        return false;
+    };
+    let options = SceneOptions {
+        strategy: Strategy::ALL[first as usize % Strategy::ALL.len()],
+        seed: Some(u64::from(first)),
+        certificate: false,
+    };
+    let (Ok(mut exact), Ok(mut fast)) = (
+        SceneSession::with_kernel(Exact, options),
+        SceneSession::with_kernel(crate::kernel::Fast, options),
+    ) else {
+        panic!("options without certificates are accepted");
+    };
+    let mut accepted = false;
+    let mut number = 0;
+    while let Some(line) = scene_line(&mut d) {
+        number += 1;
+        let before = exact.state();
+        let reply = exact.answer_line(&line);
+        let shown = String::from_utf8_lossy(&line).into_owned();
+        assert!(!reply.contains('\n'), "{shown} -> {reply}");
+        let value: serde_json::Value = match serde_json::from_str(&reply) {
+            Ok(v) => v,
+            // JSON allows numbers beyond f64 (an echoed id); serde_json does not.
+            Err(e) if e.to_string().contains("number out of range") => continue,
+            Err(e) => panic!("{e}: {shown} -> {reply}"),
+        };
+        let object = value.as_object().unwrap_or_else(|| panic!("{shown} -> {reply}"));
+        let keys: Vec<&str> = object.keys().map(String::as_str).filter(|&k| k != "id").collect();
+        match keys.as_slice() {
+            ["error"] => {
+                let message = object["error"].as_str().unwrap_or_default();
+                assert!(
+                    message.starts_with(&format!("line {number}")),
+                    "{shown} -> {reply}"
+                );
+                assert_eq!(exact.state(), before, "a refused line changed the scene: {shown}");
+            }
+            ["ok"] | ["vertex"] => accepted = true,
+            ["intersects"] | ["pairs"] | ["ids", "points"] => {}
+            _ => panic!("unexpected reply: {shown} -> {reply}"),
+        }
+        exact
+            .debug_validate()
+            .unwrap_or_else(|e| panic!("{e} after {shown}"));
+        let fast_reply = fast.answer_line(&line);
+        if !matches!(keys.as_slice(), ["intersects"] | ["pairs"]) {
+            assert_eq!(fast_reply, reply, "the kernels disagree on an edit: {shown}");
+        }
+    }
+    fast.debug_validate().unwrap();
+    accepted
 }
 
 #[cfg(test)]

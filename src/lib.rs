@@ -40,11 +40,12 @@ pub mod experiments;
 pub mod fuzzing;
 pub mod generate;
 pub mod intersect;
-pub mod jsonl;
 pub mod kernel;
 pub mod lp;
 pub mod polygon;
+pub mod protocol;
 pub mod render;
+pub mod serve;
 pub mod store;
 
 /// The README's examples, compiled and run as doctests.

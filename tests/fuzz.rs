@@ -69,6 +69,11 @@ fn fuzz_json_lines() {
 }
 
 #[test]
+fn fuzz_scene_ops() {
+    drive("scene_ops", 600, 0.3, fuzzing::scene_ops);
+}
+
+#[test]
 fn fuzz_algorithms_agree() {
     drive("algorithms_agree", 600, 0.05, fuzzing::algorithms_agree);
 }

@@ -142,3 +142,113 @@ fn edit_churn_keeps_every_invariant() {
         "{inserted} {removed} {moved} {refused}"
     );
 }
+
+/// The reference for a translation: round every vertex, then ask the validating
+/// constructor whether the rounded list, as given, is already a strictly convex
+/// counter-clockwise polygon (nothing cleaned, nothing reordered).
+fn translated_reference(p: &LinkedPolygon, dx: f64, dy: f64) -> Option<Vec<Point>> {
+    let moved: Vec<Point> = p.iter().map(|(_, v)| Point::new(v.x + dx, v.y + dy)).collect();
+    match polysect::ConvexPolygon::new(moved.iter().copied()) {
+        Ok(c) if c.vertices() == moved.as_slice() => Some(moved),
+        _ => None,
+    }
+}
+
+#[test]
+fn translations_round_each_coordinate_and_are_refused_exactly_when_convexity_breaks() {
+    let mut rng = SmallRng::seed_from_u64(SEED ^ 0x7a);
+    let (mut accepted, mut refused) = (0, 0);
+    for round in 0..3_000 {
+        let n = rng.random_range(3..40);
+        // Polygons from subnormal to huge scales: translations round their turns flat
+        // or leave them alone.
+        let exponent = match rng.random_range(0..3) {
+            0 => rng.random_range(-1070..-1000),
+            1 => rng.random_range(-60..60),
+            _ => rng.random_range(900..1000),
+        };
+        let scale = 2f64.powi(exponent);
+        let base = polysect::generate::regular_polygon(n, 1.0);
+        let Ok(poly) = base.map(|v| Point::new(v.x * scale, v.y * scale)) else {
+            continue;
+        };
+        let mut p = LinkedPolygon::from_convex_shuffled(&poly, &mut rng);
+        let big = [1e-310, 1.0, 2f64.powi(30), 2f64.powi(52), 2f64.powi(1000), 1e308][rng.random_range(0..6)];
+        let (dx, dy) = (
+            big * rng.random_range(-1.0..1.0),
+            big * rng.random_range(-1.0..1.0),
+        );
+        let ids: Vec<_> = p.iter().map(|(id, _)| id).collect();
+        let before: Vec<Point> = p.iter().map(|(_, v)| v).collect();
+        let want = translated_reference(&p, dx, dy);
+        let overflow = before.iter().any(|v| !Point::new(v.x + dx, v.y + dy).is_finite());
+        match p.translate(dx, dy) {
+            Ok(()) => {
+                let got: Vec<Point> = p.iter().map(|(_, v)| v).collect();
+                assert_eq!(
+                    Some(got),
+                    want,
+                    "round {round}: accepted a translation the reference refuses"
+                );
+                assert_eq!(
+                    p.iter().map(|(id, _)| id).collect::<Vec<_>>(),
+                    ids,
+                    "handles survive"
+                );
+                p.debug_validate().unwrap();
+                accepted += 1;
+            }
+            Err(e) => {
+                assert!(
+                    want.is_none() || overflow,
+                    "round {round}: refused ({e}) a valid translation"
+                );
+                if overflow {
+                    assert!(matches!(e, EditError::NonFinite { .. }), "{e}");
+                }
+                assert_eq!(p.iter().map(|(_, v)| v).collect::<Vec<_>>(), before, "unchanged");
+                refused += 1;
+            }
+        }
+    }
+    assert!(
+        accepted > 500 && refused > 500,
+        "both outcomes exercised: {accepted} accepted, {refused} refused"
+    );
+    let mut t = LinkedPolygon::from_points([[0., 0.], [1., 0.], [0., 1.]]).unwrap();
+    for bad in [(f64::NAN, 0.0), (0.0, f64::INFINITY)] {
+        assert!(matches!(
+            t.translate(bad.0, bad.1),
+            Err(EditError::NonFinite { .. })
+        ));
+    }
+    t.translate(f64::MAX, 0.0).unwrap_err();
+    t.translate(0.0, 0.0).unwrap();
+}
+
+/// Translations that round nothing (coordinates and offsets on a common binary grid)
+/// skip the boundary walk; they must still give exactly the reference's polygon.
+#[test]
+fn exact_translations_move_rigidly() {
+    let mut rng = SmallRng::seed_from_u64(SEED ^ 0x7b);
+    let grid = 2f64.powi(-20);
+    for _ in 0..500 {
+        let n = rng.random_range(3..200);
+        let base = polysect::generate::regular_polygon(n, 1000.0);
+        let Ok(poly) = base.map(|v| Point::new((v.x / grid).round() * grid, (v.y / grid).round() * grid))
+        else {
+            continue;
+        };
+        let mut p = LinkedPolygon::from_convex_shuffled(&poly, &mut rng);
+        for _ in 0..20 {
+            let (dx, dy) = (
+                (rng.random_range(-50.0..50.0) / grid).round() * grid,
+                (rng.random_range(-50.0..50.0) / grid).round() * grid,
+            );
+            let want = translated_reference(&p, dx, dy).expect("an exact translation is valid");
+            p.translate(dx, dy).expect("accepted");
+            assert_eq!(p.iter().map(|(_, v)| v).collect::<Vec<_>>(), want);
+        }
+        p.debug_validate().unwrap();
+    }
+}

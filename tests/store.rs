@@ -31,7 +31,8 @@ fn scattered_scene(rng: &mut SmallRng, count: usize, max_log2: u32) -> Scene {
 }
 
 /// A random edit that is usually valid: a vertex nudged along its position vector, a
-/// point pushed out of an edge, or a removal.
+/// point pushed out of an edge, a removal, or a translation (now and then by an offset
+/// so large that rounding collapses the polygon, which must be refused).
 fn random_edit(
     scene: &mut Scene,
     id: polysect::store::PolygonId,
@@ -43,7 +44,27 @@ fn random_edit(
     let b = poly.point(poly.next(v)?)?;
     let c = poly.to_convex();
     let (cx, cy) = centroid(&c);
-    match rng.random_range(0..3) {
+    match rng.random_range(0..4) {
+        3 => {
+            let scale = if rng.random_bool(0.05) { 1e17 } else { 0.5 };
+            let (dx, dy) = (rng.random_range(-scale..scale), rng.random_range(-scale..scale));
+            let before = scene.polygon(id)?.to_convex();
+            let had_snapshot = scene.has_snapshot(id)?;
+            let result = scene.translate(id, dx, dy);
+            match &result {
+                Ok(()) => assert_eq!(
+                    scene.has_snapshot(id)?,
+                    had_snapshot,
+                    "translation keeps the snapshot"
+                ),
+                Err(_) => assert_eq!(
+                    scene.polygon(id)?.to_convex(),
+                    before,
+                    "a refused translation changes nothing"
+                ),
+            }
+            result
+        }
         0 => {
             let f = 1.0 + rng.random_range(-0.05..0.05);
             scene

@@ -5,11 +5,13 @@ use polysect::crossings::{CrossingAlgorithm, CrossingOptions, Touching};
 use polysect::experiments::{self, Config, Experiment};
 use polysect::generate::{self, Family, Relation};
 use polysect::intersect::Algorithm;
-use polysect::jsonl;
-use polysect::{ConvexPolygon, Precision};
+use polysect::protocol::{self, scene::SceneOptions, scene::SceneSession};
+use polysect::store::Strategy;
+use polysect::{ConvexPolygon, Exact, Fast, Kernel, Precision};
 use rand::SeedableRng;
 use rand::rngs::SmallRng;
-use std::io::{self, BufRead, BufWriter, Write};
+use std::io::{self, BufWriter, Read, Write};
+use std::net::IpAddr;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -22,9 +24,9 @@ mod demo;
     version,
     about = "Dynamic convex polygons with sublinear intersection queries",
     long_about = "Dynamic convex polygons with sublinear intersection queries.\n\n\
-        Exit codes: 0 when every input line was answered (error lines included), \
-        1 when input or output failed (a file that cannot be read, a closed pipe), \
-        2 for a usage error."
+        Exit codes: 0 when every input line was answered (error lines included) or the \
+        reader closed the output pipe early; 1 when input or output failed (a file that \
+        cannot be read, an unwritable output); 2 for a usage error."
 )]
 struct Cli {
     #[command(subcommand)]
@@ -42,6 +44,28 @@ enum Command {
         algorithm: AlgorithmArg,
         #[arg(long, default_value = "exact", value_parser = parse_precision)]
         precision: Precision,
+        /// Seed of the sampled tests (clm, convert); from the operating system when absent.
+        #[arg(long)]
+        seed: Option<u64>,
+    },
+    /// Drive one scene of editable polygons with JSON Lines operations
+    /// ({"op": "add"|"drop"|"insert"|"remove"|"move"|"translate"|"intersects"|"pairs"|"vertices", ...}),
+    /// one reply line per input line.
+    Scene {
+        /// Input file (JSON Lines); standard input when absent.
+        file: Option<String>,
+        /// How queries are answered: planner, sampled, convert or cached.
+        #[arg(long, default_value = "planner", value_parser = parse_strategy)]
+        strategy: Strategy,
+        /// Kernel of the queries (edits are always validated exactly).
+        #[arg(long, default_value = "exact", value_parser = parse_precision)]
+        precision: Precision,
+        /// Add a certificate to each `intersects` answer.
+        #[arg(long)]
+        certificate: bool,
+        /// Seed of the sampled test; from the operating system when absent.
+        #[arg(long)]
+        seed: Option<u64>,
     },
     /// Report where the boundaries of simple polygons meet, for JSON Lines pairs
     /// {"p": [[x,y],...], "q": [...]}: writes {"points": [[x,y],...]} per line.
@@ -130,6 +154,16 @@ enum Command {
     },
     /// Measure the planner's cost model (conversion vs sampling crossover) on this machine.
     Calibrate,
+    /// Serve the live page: polygons moving, colliding and being edited in a scene.
+    /// Prints the page's URL once listening; stops on Ctrl-C or SIGTERM.
+    Serve {
+        /// Port to listen on (0: any free port; the printed URL names it).
+        #[arg(long, default_value_t = 8080)]
+        port: u16,
+        /// Address to listen on (loopback by default: the page is for this machine).
+        #[arg(long, default_value = "127.0.0.1", value_parser = parse_bind)]
+        bind: IpAddr,
+    },
 }
 
 #[derive(Clone, Copy)]
@@ -156,6 +190,13 @@ fn parse_algorithm(s: &str) -> Result<AlgorithmArg, String> {
         .map_err(|e| e.replace("(valid: ", "(valid: auto, "))
 }
 
+fn parse_strategy(s: &str) -> Result<Strategy, String> {
+    Strategy::ALL.into_iter().find(|t| t.name() == s).ok_or_else(|| {
+        let names: Vec<&str> = Strategy::ALL.iter().map(|t| t.name()).collect();
+        format!("unknown strategy '{s}' (valid: {})", names.join(", "))
+    })
+}
+
 fn parse_crossing_algorithm(s: &str) -> Result<CrossingAlgorithm, String> {
     s.parse()
 }
@@ -170,6 +211,14 @@ fn parse_precision(s: &str) -> Result<Precision, String> {
 
 fn parse_experiment(s: &str) -> Result<Experiment, String> {
     s.parse()
+}
+
+fn parse_bind(s: &str) -> Result<IpAddr, String> {
+    if s == "localhost" {
+        return Ok(IpAddr::from([127, 0, 0, 1]));
+    }
+    s.parse()
+        .map_err(|_| format!("'{s}' is not an IP address (e.g. 127.0.0.1, ::1, 0.0.0.0)"))
 }
 
 fn parse_family(s: &str) -> Result<Family, String> {
@@ -191,14 +240,42 @@ enum OrderArg {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => return clap_exit(e),
+    };
     let result = match cli.command {
         None => demo::run(48, 18, 1000, 7, "polysect-demo.svg"),
         Some(Command::Check {
             file,
             algorithm,
             precision,
-        }) => check(file.as_deref(), algorithm.resolve(), precision),
+            seed,
+        }) => check(file.as_deref(), algorithm.resolve(), precision, seed),
+        Some(Command::Scene {
+            file,
+            strategy,
+            precision,
+            certificate,
+            seed,
+        }) => {
+            let options = SceneOptions {
+                strategy,
+                seed,
+                certificate,
+            };
+            match scene(file.as_deref(), precision, options) {
+                Err(Failure::Usage(message)) => {
+                    let _ = writeln!(
+                        io::stderr(),
+                        "error: {message}\n\nFor more information, try 'polysect scene --help'."
+                    );
+                    return ExitCode::from(2);
+                }
+                Err(Failure::Io(e)) => Err(e),
+                Ok(()) => Ok(()),
+            }
+        }
         Some(Command::Crossings {
             file,
             algorithm,
@@ -235,56 +312,107 @@ fn main() -> ExitCode {
         }) => demo::run(polygons, max_log2, steps, seed, &svg),
         Some(Command::Render { file, out, limit }) => render(file.as_deref(), &out, limit),
         Some(Command::Calibrate) => calibrate(),
+        Some(Command::Serve { port, bind }) => serve(bind, port),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
+        // The reader closed the pipe: it has what it wanted; stop quietly.
         Err(e) if e.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("polysect: {e}");
+            let _ = writeln!(io::stderr(), "polysect: {e}");
             ExitCode::from(1)
         }
     }
 }
 
-fn open_input(file: Option<&str>) -> io::Result<Box<dyn BufRead>> {
+/// Prints clap's help, version or usage error: help and version go to standard output
+/// (exit 0; 1 if it cannot be written), usage errors to standard error (exit 2).
+fn clap_exit(e: clap::Error) -> ExitCode {
+    use clap::error::ErrorKind;
+    if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) {
+        let text = e.render().to_string();
+        let mut out = io::stdout().lock();
+        return match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) if e.kind() == io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+            Err(e) => {
+                let _ = writeln!(io::stderr(), "polysect: cannot write the help: {e}");
+                ExitCode::from(1)
+            }
+        };
+    }
+    let _ = e.print();
+    ExitCode::from(2)
+}
+
+enum Failure {
+    Usage(String),
+    Io(io::Error),
+}
+
+fn open_input(file: Option<&str>) -> io::Result<Box<dyn Read>> {
     Ok(match file {
         None | Some("-") => Box::new(io::stdin().lock()),
         Some(path) => {
-            let f = std::fs::File::open(path)
-                .map_err(|e| io::Error::new(e.kind(), format!("cannot read {path}: {e}")))?;
-            Box::new(io::BufReader::new(f))
+            let cannot = |e: io::Error| io::Error::new(e.kind(), format!("cannot read {path}: {e}"));
+            let file = std::fs::File::open(path).map_err(cannot)?;
+            Box::new(InputFile {
+                path: path.to_string(),
+                file,
+            })
         }
     })
 }
 
-/// Reads lines as bytes (invalid UTF-8 becomes an error line, not a crash) and calls
-/// `answer` on each, without its line terminator.
-fn for_each_line(input: &mut dyn BufRead, mut answer: impl FnMut(&[u8]) -> io::Result<()>) -> io::Result<()> {
-    let mut buf = Vec::new();
-    loop {
-        buf.clear();
-        if input.read_until(b'\n', &mut buf)? == 0 {
-            return Ok(());
-        }
-        let mut line = buf.as_slice();
-        if let Some(rest) = line.strip_suffix(b"\n") {
-            line = rest;
-        }
-        if let Some(rest) = line.strip_suffix(b"\r") {
-            line = rest;
-        }
-        answer(line)?;
+/// A file whose read errors name it.
+struct InputFile {
+    path: String,
+    file: std::fs::File,
+}
+
+impl Read for InputFile {
+    fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+        self.file
+            .read(buf)
+            .map_err(|e| io::Error::new(e.kind(), format!("cannot read {}: {e}", self.path)))
     }
 }
 
-fn check(file: Option<&str>, algorithm: Algorithm, precision: Precision) -> io::Result<()> {
-    let mut input = open_input(file)?;
-    let mut out = BufWriter::new(io::stdout().lock());
-    for_each_line(&mut input, |line| {
-        let reply = jsonl::check_line(line, |p, q| algorithm.intersects(precision, p, q));
-        writeln!(out, "{reply}")
-    })?;
-    out.flush()
+/// Standard output, buffered; the protocols flush it whenever they would wait for input.
+fn output() -> BufWriter<io::StdoutLock<'static>> {
+    BufWriter::with_capacity(64 * 1024, io::stdout().lock())
+}
+
+fn check(
+    file: Option<&str>,
+    algorithm: Algorithm,
+    precision: Precision,
+    seed: Option<u64>,
+) -> io::Result<()> {
+    let mut rng = match seed {
+        Some(seed) => SmallRng::seed_from_u64(seed),
+        None => SmallRng::from_rng(&mut rand::rng()),
+    };
+    protocol::check::check(open_input(file)?, output(), |p, q| {
+        algorithm.run_rng(precision, p, q, &mut rng).0
+    })
+}
+
+fn scene(file: Option<&str>, precision: Precision, options: SceneOptions) -> Result<(), Failure> {
+    match precision {
+        Precision::Exact => run_session(SceneSession::with_kernel(Exact, options), file),
+        Precision::Fast => run_session(SceneSession::with_kernel(Fast, options), file),
+    }
+}
+
+/// Options are checked before the input is opened: a usage error comes first.
+fn run_session<K: Kernel>(
+    session: Result<SceneSession<K>, protocol::scene::OptionError>,
+    file: Option<&str>,
+) -> Result<(), Failure> {
+    let mut session = session.map_err(|e| Failure::Usage(e.to_string()))?;
+    let input = open_input(file).map_err(Failure::Io)?;
+    session.run(input, output()).map_err(Failure::Io)
 }
 
 fn crossings(
@@ -293,13 +421,9 @@ fn crossings(
     precision: Precision,
     options: CrossingOptions,
 ) -> io::Result<()> {
-    let mut input = open_input(file)?;
-    let mut out = BufWriter::new(io::stdout().lock());
-    for_each_line(&mut input, |line| {
-        let reply = jsonl::crossings_line(line, |p, q| algorithm.run_with_options(precision, p, q, options));
-        writeln!(out, "{reply}")
-    })?;
-    out.flush()
+    protocol::check::crossings(open_input(file)?, output(), |p, q| {
+        algorithm.run_with_options(precision, p, q, options)
+    })
 }
 
 fn gen_pairs(
@@ -330,7 +454,7 @@ fn gen_pairs(
             if reverse {
                 v.reverse();
             }
-            jsonl::points_json(&v)
+            protocol::points_json(&v)
         };
         let (pj, qj) = (write_order(&p), write_order(&q));
         writeln!(
@@ -342,35 +466,37 @@ fn gen_pairs(
 }
 
 fn list() -> io::Result<()> {
+    let mut out = io::stdout().lock();
     let names: Vec<&str> = Algorithm::ALL.iter().map(|a| a.name()).collect();
-    println!(
+    writeln!(
+        out,
         "algorithms: auto (= {}), {}",
         Algorithm::fastest_array(),
         names.join(", ")
-    );
+    )?;
     let names: Vec<&str> = CrossingAlgorithm::ALL.iter().map(|a| a.name()).collect();
-    println!(
+    writeln!(
+        out,
         "crossings:  {} (default {})",
         names.join(", "),
         CrossingAlgorithm::default()
-    );
-    println!("precisions: fast, exact (default)");
+    )?;
+    writeln!(out, "precisions: fast, exact (default)")?;
+    let names: Vec<&str> = Strategy::ALL.iter().map(|s| s.name()).collect();
+    writeln!(out, "strategies: {} (scene; default planner)", names.join(", "))?;
     let fams: Vec<&str> = Family::ALL.iter().map(|f| f.name()).collect();
-    println!("families:   {}", fams.join(", "));
-    Ok(())
+    writeln!(out, "families:   {}", fams.join(", "))?;
+    out.flush()
 }
 
 fn render(file: Option<&str>, out_path: &str, limit: usize) -> io::Result<()> {
     use polysect::render::{Panel, Style, svg};
-    let mut input = open_input(file)?;
     let mut panels = Vec::new();
-    let mut line_no = 0;
-    for_each_line(&mut input, |line| {
-        line_no += 1;
+    protocol::check::for_each_pair(open_input(file)?, |line_no, pair| {
         if panels.len() >= limit {
-            return Ok(());
+            return false;
         }
-        let panel = match jsonl::parse_pair(line).and_then(|pair| jsonl::convex_pair(&pair)) {
+        let panel = match pair {
             Ok((p, q)) => {
                 let hit = Algorithm::Linear.intersects(Precision::Exact, &p, &q);
                 let style = if hit { Style::Highlight } else { Style::Other };
@@ -379,25 +505,56 @@ fn render(file: Option<&str>, out_path: &str, limit: usize) -> io::Result<()> {
                     caption: format!("line {line_no}: {}", if hit { "intersect" } else { "disjoint" }),
                 }
             }
-            Err(e) => Panel {
+            Err(message) => Panel {
                 polygons: vec![],
                 caption: format!(
                     "line {line_no}: error: {}",
-                    e.message.chars().take(40).collect::<String>()
+                    message
+                        .split_once(": ")
+                        .map_or(message.as_str(), |(_, m)| m)
+                        .chars()
+                        .take(40)
+                        .collect::<String>()
                 ),
             },
         };
         panels.push(panel);
-        Ok(())
+        panels.len() < limit
     })?;
     std::fs::write(out_path, svg(&panels, 4))
         .map_err(|e| io::Error::new(e.kind(), format!("cannot write {out_path}: {e}")))?;
-    eprintln!("wrote {} panel(s) to {out_path}", panels.len());
+    let _ = writeln!(io::stderr(), "wrote {} panel(s) to {out_path}", panels.len());
     Ok(())
 }
 
+/// Listens, prints the URL, and serves until SIGINT or SIGTERM (then exits with 0).
+fn serve(bind: IpAddr, port: u16) -> io::Result<()> {
+    let server = polysect::serve::Server::bind(bind, port)?;
+    let (done, finished) = std::sync::mpsc::channel::<io::Result<()>>();
+    let stop = done.clone();
+    ctrlc::set_handler(move || {
+        let _ = stop.send(Ok(()));
+    })
+    .map_err(io::Error::other)?;
+    let url = server.url();
+    std::thread::spawn(move || {
+        let why = server
+            .run()
+            .and(Err(io::Error::other("the server stopped accepting connections")));
+        let _ = done.send(why);
+    });
+    let mut out = io::stdout().lock();
+    writeln!(out, "{url}")?;
+    out.flush()?;
+    drop(out);
+    finished.recv().unwrap_or(Ok(()))
+}
+
 fn calibrate() -> io::Result<()> {
-    eprintln!("measuring conversion and sampled-query costs (a few seconds)...");
+    let _ = writeln!(
+        io::stderr(),
+        "measuring conversion and sampled-query costs (a few seconds)..."
+    );
     let costs = polysect::store::CostModel::calibrate(polysect::Exact);
     let mut out = io::stdout().lock();
     writeln!(
@@ -435,13 +592,16 @@ fn bench(
         experiments
     };
     let start = Instant::now();
-    let report = experiments::run(experiments, &config)?;
-    println!("{}", report.summary);
-    println!(
+    let report = experiments::run(experiments, &config)
+        .map_err(|e| io::Error::new(e.kind(), format!("cannot write to {}: {e}", config.out.display())))?;
+    let mut out = io::stdout().lock();
+    writeln!(out, "{}", report.summary)?;
+    writeln!(
+        out,
         "wrote {} files to {} in {:.1} s",
         report.files.len(),
         config.out.display(),
         start.elapsed().as_secs_f64()
-    );
-    Ok(())
+    )?;
+    out.flush()
 }

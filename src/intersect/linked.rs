@@ -12,10 +12,12 @@ use rand::Rng;
 use rand::SeedableRng;
 use rand::rngs::SmallRng;
 
-/// The seed of the RNG that [`LinkedIntersection::intersects_with`] creates per call,
-/// so one-off queries are reproducible. Callers that care about independence between
-/// queries pass their own RNG to [`LinkedIntersection::intersects_in`].
-pub const DEFAULT_QUERY_SEED: u64 = 0x00c1_6a2e;
+/// A generator for one query or one session, seeded from the thread-local generator
+/// (itself seeded from the operating system): the sample is unknown to whoever chose
+/// the input (docs/design.md, "Randomness").
+pub(crate) fn fresh_rng() -> SmallRng {
+    SmallRng::from_rng(&mut rand::rng())
+}
 
 /// An intersection test on two convex polygons stored as linked lists in arenas.
 ///
@@ -53,9 +55,43 @@ pub trait LinkedIntersection {
         self.intersects_in(kernel, p, q, rng, workspace, &mut ())
     }
 
-    /// A one-off query: a fresh workspace and an RNG seeded with [`DEFAULT_QUERY_SEED`].
+    /// A one-off query: a fresh workspace and a generator seeded from the operating
+    /// system, so which vertices a randomized test samples cannot be known in advance
+    /// (the expected bounds hold for every input chosen without seeing the draw). The
+    /// answer never depends on the draw under [`Exact`]; use
+    /// [`intersects_seeded`](Self::intersects_seeded) to reproduce a run exactly.
     fn intersects_with<K: Kernel>(&self, kernel: K, p: &LinkedPolygon, q: &LinkedPolygon) -> bool {
-        let mut rng = SmallRng::seed_from_u64(DEFAULT_QUERY_SEED);
+        self.intersects_in(
+            kernel,
+            p,
+            q,
+            &mut fresh_rng(),
+            &mut Self::Workspace::default(),
+            &mut (),
+        )
+    }
+
+    /// A one-off query with a generator seeded with `seed`: the same draws every time
+    /// (reproducible timings and fast-kernel answers). Whoever knows the seed knows the
+    /// sample, so inputs chosen with that knowledge can defeat the expected bounds
+    /// (never the answer).
+    ///
+    /// ```
+    /// use polysect::intersect::{Clm, LinkedIntersection};
+    /// use polysect::{Exact, LinkedPolygon};
+    /// let p = LinkedPolygon::from_points([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+    /// let q = LinkedPolygon::from_points([[2.0, 2.0], [3.0, 2.0], [3.0, 3.0]])?;
+    /// assert!(Clm.intersects_seeded(Exact, &p, &q, 42));
+    /// # Ok::<(), polysect::PolygonError>(())
+    /// ```
+    fn intersects_seeded<K: Kernel>(
+        &self,
+        kernel: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        seed: u64,
+    ) -> bool {
+        let mut rng = SmallRng::seed_from_u64(seed);
         self.intersects_in(kernel, p, q, &mut rng, &mut Self::Workspace::default(), &mut ())
     }
 

@@ -20,7 +20,8 @@
 //! once in [`Algorithm`], which the CLI, tests and benches iterate over. Tests on
 //! [`LinkedPolygon`](crate::LinkedPolygon)s implement [`LinkedIntersection`]; through
 //! [`Algorithm::run`] they take array polygons, which are linked in a shuffled arena
-//! order (as the thesis's experiments do) with an RNG seeded by [`LINKED_RUN_SEED`].
+//! order (as the thesis's experiments do) with a generator seeded from the operating
+//! system, or the caller's generator ([`Algorithm::run_rng`]) for reproducible runs.
 
 mod barba;
 mod chazelle_dobkin;
@@ -34,10 +35,12 @@ pub use chazelle_dobkin::ChazelleDobkin;
 pub use clm::{Clm, ClmWithFactor, ClmWorkspace};
 pub use dobkin::Dobkin;
 pub use linear::{Linear, brute_force};
-pub use linked::{Convert, ConvertWorkspace, DEFAULT_QUERY_SEED, LinkedIntersection};
+pub(crate) use linked::fresh_rng;
+pub use linked::{Convert, ConvertWorkspace, LinkedIntersection};
 
 use crate::kernel::{Exact, Fast, Kernel, Precision};
 use crate::polygon::ConvexPolygon;
+use rand::Rng;
 use std::fmt;
 use std::str::FromStr;
 
@@ -145,25 +148,50 @@ impl Algorithm {
     }
 
     /// Runs the algorithm on two array polygons with the kernel named by `precision`,
-    /// returning the answer and the number of pruning iterations.
+    /// returning the answer and the number of pruning iterations. The linked-polygon
+    /// tests draw from a generator seeded from the operating system.
     pub fn run(self, precision: Precision, p: &ConvexPolygon, q: &ConvexPolygon) -> (bool, u64) {
+        self.run_rng(precision, p, q, &mut fresh_rng())
+    }
+
+    /// [`run`](Self::run) drawing from `rng` (the shuffled arena order and the samples
+    /// of the linked-polygon tests; the array tests draw nothing): a seeded `rng` makes
+    /// the run reproducible.
+    pub fn run_rng<R: Rng + ?Sized>(
+        self,
+        precision: Precision,
+        p: &ConvexPolygon,
+        q: &ConvexPolygon,
+        rng: &mut R,
+    ) -> (bool, u64) {
         match precision {
-            Precision::Fast => self.run_with(Fast, p, q),
-            Precision::Exact => self.run_with(Exact, p, q),
+            Precision::Fast => self.run_with_rng(Fast, p, q, rng),
+            Precision::Exact => self.run_with_rng(Exact, p, q, rng),
         }
     }
 
     /// Runs the algorithm with a kernel chosen at compile time, returning the answer and
     /// the number of pruning iterations.
     pub fn run_with<K: Kernel>(self, k: K, p: &ConvexPolygon, q: &ConvexPolygon) -> (bool, u64) {
+        self.run_with_rng(k, p, q, &mut fresh_rng())
+    }
+
+    /// [`run_with`](Self::run_with) drawing from `rng`.
+    pub fn run_with_rng<K: Kernel, R: Rng + ?Sized>(
+        self,
+        k: K,
+        p: &ConvexPolygon,
+        q: &ConvexPolygon,
+        rng: &mut R,
+    ) -> (bool, u64) {
         let mut it = Iterations::default();
         let answer = match self {
             Algorithm::Linear => Linear.intersects_probed(k, p, q, &mut it),
             Algorithm::Barba => Barba.intersects_probed(k, p, q, &mut it),
             Algorithm::Dobkin => Dobkin.intersects_probed(k, p, q, &mut it),
             Algorithm::ChazelleDobkin => ChazelleDobkin.intersects_probed(k, p, q, &mut it),
-            Algorithm::Clm => run_linked(&Clm, k, p, q, &mut it),
-            Algorithm::Convert => run_linked(&<Convert>::default(), k, p, q, &mut it),
+            Algorithm::Clm => run_linked(&Clm, k, p, q, rng, &mut it),
+            Algorithm::Convert => run_linked(&<Convert>::default(), k, p, q, rng, &mut it),
         };
         (answer, it.0)
     }
@@ -179,23 +207,18 @@ impl Algorithm {
     }
 }
 
-/// The seed of the RNG with which [`Algorithm::run`] links array polygons in shuffled
-/// arena order and then runs a linked-polygon test: runs are reproducible.
-pub const LINKED_RUN_SEED: u64 = 0x5eed_c1a0;
-
 /// Links `p` and `q` in shuffled arena order and runs a linked-polygon test on them.
-fn run_linked<L: LinkedIntersection, K: Kernel, P: Probe>(
+fn run_linked<L: LinkedIntersection, K: Kernel, R: Rng + ?Sized, P: Probe>(
     alg: &L,
     k: K,
     p: &ConvexPolygon,
     q: &ConvexPolygon,
+    rng: &mut R,
     probe: &mut P,
 ) -> bool {
-    use rand::SeedableRng;
-    let mut rng = rand::rngs::SmallRng::seed_from_u64(LINKED_RUN_SEED);
-    let lp = crate::polygon::LinkedPolygon::from_convex_shuffled(p, &mut rng);
-    let lq = crate::polygon::LinkedPolygon::from_convex_shuffled(q, &mut rng);
-    alg.intersects_in(k, &lp, &lq, &mut rng, &mut L::Workspace::default(), probe)
+    let lp = crate::polygon::LinkedPolygon::from_convex_shuffled(p, rng);
+    let lq = crate::polygon::LinkedPolygon::from_convex_shuffled(q, rng);
+    alg.intersects_in(k, &lp, &lq, rng, &mut L::Workspace::default(), probe)
 }
 
 impl fmt::Display for Algorithm {

@@ -1,7 +1,7 @@
 //! [`ConvexPolygon`]: a validated convex polygon stored as a counter-clockwise array.
 
-use super::hull::convex_hull;
-use super::{PolygonError, Prefilter, distinct_vertices};
+use super::hull::hull_indices;
+use super::{InputIndex, PolygonError, Prefilter, distinct_indices};
 use crate::kernel::{Exact, Kernel, Orientation, Point};
 
 /// A convex polygon with at least three vertices, stored counter-clockwise with
@@ -90,6 +90,15 @@ impl ConvexPolygon {
         ConvexPolygon::new(self.vertices.iter().map(|&p| f(p)))
     }
 
+    /// Translates every vertex in place, each coordinate rounded to nearest, without
+    /// validating: for callers that validated the same rounded coordinates already (a
+    /// scene translating a linked polygon and its snapshot together). O(n).
+    pub(crate) fn translate_unchecked(&mut self, dx: f64, dy: f64) {
+        for p in &mut self.vertices {
+            *p = Point::new(p.x + dx, p.y + dy);
+        }
+    }
+
     /// Axis-aligned bounding box `(min, max)`.
     pub fn bounding_box(&self) -> (Point, Point) {
         let mut lo = self.vertices[0];
@@ -143,7 +152,7 @@ impl TryFrom<Vec<Point>> for ConvexPolygon {
 /// Whether direction `d` lies in the upper half-turn [0, π) of angles.
 /// Exact: `b − a` computed in floating point has the sign of the true difference.
 #[inline]
-fn upper(a: Point, b: Point) -> bool {
+pub(crate) fn upper(a: Point, b: Point) -> bool {
     let dy = b.y - a.y;
     dy > 0.0 || (dy == 0.0 && b.x > a.x)
 }
@@ -152,21 +161,47 @@ fn upper(a: Point, b: Point) -> bool {
 /// around: the number of edges leaving the lower half-turn of directions for the
 /// upper one (each turn is less than π, so no crossing is skipped).
 fn winding_number(v: &[Point]) -> usize {
-    let n = v.len();
-    (0..n)
-        .filter(|&i| {
-            let d0 = upper(v[i], v[(i + 1) % n]);
-            let d1 = upper(v[(i + 1) % n], v[(i + 2) % n]);
-            !d0 && d1
-        })
-        .count()
+    winding_of(v.iter().copied())
+}
+
+/// [`winding_number`] of the closed chain listed by `points` (from any vertex). The
+/// count is the same for the chain walked backwards (negating every edge direction
+/// swaps the half-turns, and reversing the order swaps "leaving" and "entering").
+fn winding_of(mut points: impl Iterator<Item = Point>) -> usize {
+    let (Some(first), Some(second)) = (points.next(), points.next()) else {
+        return 0;
+    };
+    let mut count = 0;
+    let mut step = |a: Point, b: Point, c: Point| {
+        if !upper(a, b) && upper(b, c) {
+            count += 1;
+        }
+    };
+    let (mut a, mut b) = (first, second);
+    for c in points {
+        step(a, b, c);
+        (a, b) = (b, c);
+    }
+    step(a, b, first);
+    step(b, first, second);
+    count
 }
 
 /// Validates and cleans a vertex list; see [`ConvexPolygon::new`]. Returns the
 /// strictly convex counter-clockwise vertices, starting at the first surviving input vertex.
 pub(crate) fn clean(points: &[Point]) -> Result<Vec<Point>, PolygonError> {
+    // Validation keeps input indices, not copies of the points: 4 bytes a vertex, plus
+    // one byte for its turn, until the cleaned polygon itself is built.
+    if u32::try_from(points.len()).is_ok() {
+        clean_with::<u32>(points)
+    } else {
+        clean_with::<usize>(points)
+    }
+}
+
+fn clean_with<I: InputIndex>(points: &[Point]) -> Result<Vec<Point>, PolygonError> {
     // 1. Non-finite values, repeats, too few or collinear vertices (shared checks).
-    let v = distinct_vertices(points).map_err(|e| match e {
+    let v = distinct_indices::<I>(points).map_err(|e| match e {
         Prefilter::NonFinite { index } => PolygonError::NonFinite {
             index,
             point: points[index],
@@ -175,37 +210,42 @@ pub(crate) fn clean(points: &[Point]) -> Result<Vec<Point>, PolygonError> {
         Prefilter::AllCollinear => PolygonError::AllCollinear,
     })?;
     let n = v.len();
+    let at = |i: usize| points[v[i].get()];
     // 2. Turns on the deduplicated list. Dropping a collinear vertex that lies between
     //    its neighbours leaves the other turns' signs unchanged (the neighbour lies on the
     //    same ray), so one pass decides everything.
     let mut turns = Vec::with_capacity(n);
-    for i in 0..n {
-        let (prev, cur, next) = (v[(i + n - 1) % n].0, v[i].0, v[(i + 1) % n].0);
+    for (i, &input) in v.iter().enumerate() {
+        let (prev, cur, next) = (at((i + n - 1) % n), at(i), at((i + 1) % n));
         let t = Exact.orient(prev, cur, next);
         if t == Orientation::Collinear && !strictly_between(prev, cur, next) {
-            return Err(PolygonError::DoublesBack { index: v[i].1 });
+            return Err(PolygonError::DoublesBack { index: input.get() });
         }
         turns.push(t);
     }
     let ccw = turns.iter().filter(|&&t| t == Orientation::Ccw).count();
     let cw = turns.iter().filter(|&&t| t == Orientation::Cw).count();
     if ccw > 0 && cw > 0 {
-        return Err(non_convex_error(&v, &turns, ccw, cw));
+        return Err(non_convex_error(points, v, turns, ccw, cw));
     }
-    let mut kept: Vec<Point> = v
-        .iter()
-        .zip(&turns)
-        .filter(|(_, t)| **t != Orientation::Collinear)
-        .map(|(&(p, _), _)| p)
-        .collect();
+    let kept = || {
+        v.iter()
+            .zip(&turns)
+            .filter(|(_, t)| **t != Orientation::Collinear)
+            .map(|(&i, _)| points[i.get()])
+    };
+    // The winding is counted before the cleaned list is built (either direction gives
+    // the same count).
+    match winding_of(kept()) {
+        1 => {}
+        times => return Err(PolygonError::WindsMoreThanOnce { times }),
+    }
+    let mut kept: Vec<Point> = kept().collect();
     if cw > 0 {
         kept.reverse();
         kept.rotate_right(1); // keep the same start vertex
     }
-    match winding_number(&kept) {
-        1 => Ok(kept),
-        times => Err(PolygonError::WindsMoreThanOnce { times }),
-    }
+    Ok(kept)
 }
 
 /// `cur` lies strictly inside the segment prev–next (given the three are collinear and
@@ -217,11 +257,19 @@ fn strictly_between(prev: Point, cur: Point, next: Point) -> bool {
 
 /// Mixed turns: name a vertex that turns against the polygon's overall orientation
 /// (decided by the signed area, or by the majority of turns when the area is zero).
-fn non_convex_error(v: &[(Point, usize)], turns: &[Orientation], ccw: usize, cw: usize) -> PolygonError {
+/// `v` holds the input indices of the distinct vertices, `turns` their turns.
+fn non_convex_error<I: InputIndex>(
+    points: &[Point],
+    mut v: Vec<I>,
+    turns: Vec<Orientation>,
+    ccw: usize,
+    cw: usize,
+) -> PolygonError {
     let n = v.len();
+    let at = |i: usize| points[v[i].get()];
     let twice_area: f64 = (0..n)
         .map(|i| {
-            let (a, b) = (v[i].0, v[(i + 1) % n].0);
+            let (a, b) = (at(i), at((i + 1) % n));
             a.x * b.y - a.y * b.x
         })
         .sum();
@@ -234,12 +282,13 @@ fn non_convex_error(v: &[(Point, usize)], turns: &[Orientation], ccw: usize, cw:
         .iter()
         .position(|&t| t == overall.reverse())
         .expect("mixed turns include one against the overall orientation");
-    let index = v[i].1;
-    // In convex position (every distinct vertex on the hull) the list is merely out
-    // of order; otherwise some vertex is truly reflex.
-    let pts: Vec<Point> = v.iter().map(|&(p, _)| p).collect();
-    let on_hull = convex_hull(&pts).map(|h| h.len()).unwrap_or(0);
+    let index = v[i].get();
     let non_collinear = turns.iter().filter(|&&t| t != Orientation::Collinear).count();
+    drop(turns);
+    // In convex position (every distinct vertex on the hull) the list is merely out
+    // of order; otherwise some vertex is truly reflex. The hull reorders `v` in place.
+    let hull = hull_indices(points, &mut v).len();
+    let on_hull = if hull >= 3 { hull } else { 0 };
     if on_hull == non_collinear {
         PolygonError::OutOfOrder { index }
     } else {

@@ -82,6 +82,9 @@ pub enum EditError {
     WouldBreakConvexity { point: Point },
     /// A removal would leave fewer than three vertices.
     TooFewVertices,
+    /// A translation would round the vertices (this one first, in counter-clockwise
+    /// order) so that the polygon is no longer strictly convex.
+    RoundingBreaksConvexity { point: Point },
 }
 
 impl fmt::Display for EditError {
@@ -99,6 +102,12 @@ impl fmt::Display for EditError {
             EditError::TooFewVertices => {
                 write!(f, "a polygon keeps at least 3 vertices; removal refused")
             }
+            EditError::RoundingBreaksConvexity { point } => write!(
+                f,
+                "translation refused: rounding moves the vertex to ({}, {}) and the polygon would \
+                 no longer be strictly convex",
+                point.x, point.y
+            ),
         }
     }
 }

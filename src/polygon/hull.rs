@@ -8,7 +8,7 @@
 //! endpoints) are not vertices; ties in the sort are broken by y, so vertical runs
 //! are ordered. Fewer than three non-collinear points have no hull polygon: an error.
 
-use super::{ConvexPolygon, PolygonError};
+use super::{ConvexPolygon, InputIndex, PolygonError};
 use crate::kernel::{Exact, Kernel, Orientation, Point};
 
 /// The convex hull of `points` as a [`ConvexPolygon`] (counter-clockwise, starting at
@@ -32,24 +32,42 @@ pub fn convex_hull(points: &[Point]) -> Result<ConvexPolygon, PolygonError> {
             point: points[index],
         });
     }
-    let mut pts = points.to_vec();
-    pts.sort_unstable_by(|a, b| a.lex_cmp(*b));
-    pts.dedup();
-    if pts.len() < 3 {
-        return Err(PolygonError::TooFewVertices { distinct: pts.len() });
+    let mut idx: Vec<usize> = (0..points.len()).collect();
+    let hull = hull_indices(points, &mut idx);
+    if idx.len() < 3 {
+        return Err(PolygonError::TooFewVertices { distinct: idx.len() });
     }
-    let mut hull: Vec<Point> = Vec::with_capacity(pts.len() + 1);
+    let hull: Vec<Point> = hull.into_iter().map(|i| points[i]).collect();
+    if hull.len() < 3 {
+        return Err(PolygonError::AllCollinear);
+    }
+    Ok(ConvexPolygon::from_ccw_unchecked(hull))
+}
+
+/// Andrew's monotone chain on indices into `points` (finite): sorts `idx`
+/// lexicographically by point and drops repeated points (so `idx.len()` is then the
+/// number of distinct points), and returns the hull's vertex indices counter-clockwise
+/// from the lexicographically smallest point (fewer than three when the points are
+/// collinear). Extra memory: the indices, never a copy of the points.
+pub(crate) fn hull_indices<I: InputIndex>(points: &[Point], idx: &mut Vec<I>) -> Vec<I> {
+    let at = |i: I| points[i.get()];
+    idx.sort_unstable_by(|&a, &b| at(a).lex_cmp(at(b)));
+    idx.dedup_by(|a, b| at(*a) == at(*b));
+    if idx.len() < 3 {
+        return Vec::new();
+    }
+    let mut hull: Vec<I> = Vec::new();
     // Lower hull left to right, then upper hull right to left; pop non-left turns.
     for pass in 0..2 {
         let floor = hull.len();
-        let iter: Box<dyn Iterator<Item = &Point>> = if pass == 0 {
-            Box::new(pts.iter())
+        let iter: Box<dyn Iterator<Item = &I>> = if pass == 0 {
+            Box::new(idx.iter())
         } else {
-            Box::new(pts.iter().rev())
+            Box::new(idx.iter().rev())
         };
         for &p in iter {
             while hull.len() >= floor + 2
-                && Exact.orient(hull[hull.len() - 2], hull[hull.len() - 1], p) != Orientation::Ccw
+                && Exact.orient(at(hull[hull.len() - 2]), at(hull[hull.len() - 1]), at(p)) != Orientation::Ccw
             {
                 hull.pop();
             }
@@ -57,10 +75,7 @@ pub fn convex_hull(points: &[Point]) -> Result<ConvexPolygon, PolygonError> {
         }
         hull.pop(); // the last point starts the other chain
     }
-    if hull.len() < 3 {
-        return Err(PolygonError::AllCollinear);
-    }
-    Ok(ConvexPolygon::from_ccw_unchecked(hull))
+    hull
 }
 
 #[cfg(test)]

@@ -213,7 +213,20 @@ impl LinkedPolygon {
         self.pos(id).map(|p| self.id_at(self.prev_at(p)))
     }
 
-    /// The vertices counter-clockwise, starting at `id`.
+    /// The vertices with their handles, counter-clockwise, starting at `id`. O(n) for
+    /// the whole walk.
+    ///
+    /// # Errors
+    /// `StaleHandle` when `id` names no live vertex.
+    ///
+    /// ```
+    /// use polysect::{LinkedPolygon, Point};
+    /// let p = LinkedPolygon::from_points([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+    /// let start = p.next(p.first())?; // (2, 0)
+    /// let points: Vec<Point> = p.iter_from(start)?.map(|(_, v)| v).collect();
+    /// assert_eq!(points, [Point::new(2., 0.), Point::new(2., 2.), Point::new(0., 2.), Point::new(0., 0.)]);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn iter_from(&self, id: VertexId) -> Result<impl Iterator<Item = (VertexId, Point)> + '_, EditError> {
         let start = self.pos(id)?;
         let mut pos = start;
@@ -302,6 +315,87 @@ impl LinkedPolygon {
             return Err(EditError::WouldBreakConvexity { point });
         }
         Ok(std::mem::replace(&mut self.nodes[v].point, point))
+    }
+
+    /// Translates every vertex to (x + dx, y + dy), each coordinate rounded to nearest
+    /// (IEEE addition), or refuses and changes nothing. O(n).
+    ///
+    /// Rounding moves each vertex by at most half an ulp of its new coordinates, which is
+    /// enough to flatten or flip a turn whose vertices are only a few ulps apart, so the
+    /// rounded polygon is validated again, exactly: every turn strictly left and the
+    /// boundary winding once. When no addition rounds (checked per coordinate, in
+    /// storage order, with the two-sum error) the polygon moved rigidly and the walk is
+    /// skipped. Handles and the arena order are unchanged.
+    ///
+    /// # Errors
+    /// `NonFinite` when `dx` or `dy` is not finite or a translated coordinate overflows
+    /// (the point is the first overflowing vertex); `RoundingBreaksConvexity` naming the
+    /// first rounded vertex (counter-clockwise from [`first`](Self::first)) whose turn is
+    /// no longer strictly convex, or the first vertex when the boundary would wind more
+    /// than once.
+    ///
+    /// ```
+    /// use polysect::{EditError, LinkedPolygon, Point};
+    /// let mut p = LinkedPolygon::from_points([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])?;
+    /// p.translate(0.5, -2.0)?;
+    /// assert_eq!(p.point(p.first())?, Point::new(0.5, -2.0));
+    /// // Near 2^1000 the triangle's vertices would round onto one point: refused.
+    /// let mut tiny = LinkedPolygon::from_points([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])?;
+    /// assert!(matches!(tiny.translate(2f64.powi(1000), 0.0), Err(EditError::RoundingBreaksConvexity { .. })));
+    /// assert_eq!(tiny.point(tiny.first())?, Point::new(0.0, 0.0)); // unchanged
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn translate(&mut self, dx: f64, dy: f64) -> Result<(), EditError> {
+        let by = Point::new(dx, dy);
+        if !by.is_finite() {
+            return Err(EditError::NonFinite { point: by });
+        }
+        let moved = |p: Point| Point::new(p.x + dx, p.y + dy);
+        // One pass in storage order: overflow, and whether every addition is exact
+        // (Knuth's two-sum error is zero). An exact translation preserves every
+        // orientation, so only a rounded one needs the boundary walk below.
+        let mut exact = true;
+        for node in &self.nodes {
+            let (p, q) = (node.point, moved(node.point));
+            if !q.is_finite() {
+                return Err(EditError::NonFinite { point: q });
+            }
+            exact &= two_sum_error(p.x, dx, q.x) == 0.0 && two_sum_error(p.y, dy, q.y) == 0.0;
+        }
+        if !exact {
+            self.check_translated(moved)?;
+        }
+        for node in &mut self.nodes {
+            node.point = moved(node.point);
+        }
+        Ok(())
+    }
+
+    /// Checks exactly that the polygon with every vertex mapped by `f` is strictly convex,
+    /// counter-clockwise and winds once, walking the boundary from position 0.
+    fn check_translated(&self, f: impl Fn(Point) -> Point) -> Result<(), EditError> {
+        use super::convex::upper;
+        let start = 0;
+        let (mut a, mut b) = (f(self.point_at(self.prev_at(start))), f(self.point_at(start)));
+        let mut pos = start;
+        let mut windings = 0;
+        for _ in 0..self.len() {
+            let next = self.next_at(pos);
+            let c = f(self.point_at(next));
+            if Exact.orient(a, b, c) != Orientation::Ccw {
+                return Err(EditError::RoundingBreaksConvexity { point: b });
+            }
+            if !upper(a, b) && upper(b, c) {
+                windings += 1;
+            }
+            (a, b, pos) = (b, c, next);
+        }
+        if windings != 1 {
+            return Err(EditError::RoundingBreaksConvexity {
+                point: f(self.point_at(start)),
+            });
+        }
+        Ok(())
     }
 
     /// Whether `v` may sit between the vertices at positions a and b = next(a) (or
@@ -460,6 +554,13 @@ impl LinkedPolygon {
         }
         self.to_convex().debug_validate()
     }
+}
+
+/// The rounding error of `s = a + b` (Knuth's two-sum): zero exactly when the sum was
+/// exact. `a`, `b` and `s` finite.
+fn two_sum_error(a: f64, b: f64, s: f64) -> f64 {
+    let bb = s - a;
+    (a - (s - bb)) + (b - bb)
 }
 
 /// Serialised as its vertex list, counter-clockwise from [`LinkedPolygon::first`];

@@ -35,28 +35,64 @@ pub(crate) enum Prefilter {
     AllCollinear,
 }
 
+/// An index into an input vertex list, as validation stores it: `u32` for lists of up
+/// to 2^32 − 1 vertices (4 bytes a vertex while validating), `usize` beyond.
+pub(crate) trait InputIndex: Copy {
+    fn new(i: usize) -> Self;
+    fn get(self) -> usize;
+}
+
+impl InputIndex for u32 {
+    #[inline]
+    fn new(i: usize) -> Self {
+        i as u32
+    }
+    #[inline]
+    fn get(self) -> usize {
+        self as usize
+    }
+}
+
+impl InputIndex for usize {
+    #[inline]
+    fn new(i: usize) -> Self {
+        i
+    }
+    #[inline]
+    fn get(self) -> usize {
+        self
+    }
+}
+
 /// The first steps of validating a vertex list, shared by [`ConvexPolygon`] and
 /// [`SimplePolygon`]: non-finite coordinates are refused; consecutive duplicates and a
 /// repeated closing vertex are dropped (each kept vertex keeps its input index); fewer
 /// than three distinct vertices, or all of them on one line (exact kernel), are refused.
-pub(crate) fn distinct_vertices(points: &[Point]) -> Result<Vec<(Point, usize)>, Prefilter> {
+/// Returns the input indices of the distinct vertices.
+pub(crate) fn distinct_indices<I: InputIndex>(points: &[Point]) -> Result<Vec<I>, Prefilter> {
     if let Some(index) = points.iter().position(|p| !p.is_finite()) {
         return Err(Prefilter::NonFinite { index });
     }
-    let mut v: Vec<(Point, usize)> = Vec::with_capacity(points.len());
+    let at = |i: I| points[i.get()];
+    let mut v: Vec<I> = Vec::with_capacity(points.len());
     for (i, &p) in points.iter().enumerate() {
-        if v.last().is_none_or(|&(q, _)| q != p) {
-            v.push((p, i));
+        if v.last().is_none_or(|&q| at(q) != p) {
+            v.push(I::new(i));
         }
     }
-    while v.len() > 1 && v[v.len() - 1].0 == v[0].0 {
+    while v.len() > 1 && at(v[v.len() - 1]) == at(v[0]) {
         v.pop();
     }
     if v.len() < 3 {
         return Err(Prefilter::TooFew { distinct: v.len() });
     }
-    if (2..v.len()).all(|i| Exact.orient(v[0].0, v[1].0, v[i].0) == Orientation::Collinear) {
+    if (2..v.len()).all(|i| Exact.orient(at(v[0]), at(v[1]), at(v[i])) == Orientation::Collinear) {
         return Err(Prefilter::AllCollinear);
     }
     Ok(v)
+}
+
+/// [`distinct_indices`] with each vertex beside its input index.
+pub(crate) fn distinct_vertices(points: &[Point]) -> Result<Vec<(Point, usize)>, Prefilter> {
+    distinct_indices::<usize>(points).map(|v| v.into_iter().map(|i| (points[i], i)).collect())
 }

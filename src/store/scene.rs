@@ -176,12 +176,14 @@ impl<K: Kernel> Scene<K> {
             costs: CostModel::default(),
             stats: PlannerStats::default(),
             workspace: QueryWorkspace::default(),
-            rng: SmallRng::seed_from_u64(0x5ce9e),
+            rng: crate::intersect::fresh_rng(),
         }
     }
 
-    /// Reseeds the RNG of the sampled test (answers do not depend on it under the exact
-    /// kernel; running times and the fast kernel's rare wrong answers do).
+    /// Reseeds the RNG of the sampled test, which is otherwise seeded from the operating
+    /// system (docs/design.md, "Randomness"): the same seed and the same operations give
+    /// the same draws. Answers do not depend on it under the exact kernel; running times
+    /// and the fast kernel's rare wrong answers do.
     pub fn seed(&mut self, seed: u64) {
         self.rng = SmallRng::seed_from_u64(seed);
     }
@@ -355,6 +357,51 @@ impl<K: Kernel> Scene<K> {
         Ok(old)
     }
 
+    /// Translates the polygon by `(dx, dy)`: every vertex becomes `(x + dx, y + dy)`, each
+    /// coordinate rounded to nearest (IEEE addition). O(n) to translate and validate, then
+    /// O(1) for the bounding box (shifted; rounding is monotone, so the shifted box still
+    /// contains, or equals, the translated polygon's box) and no reconversion: a valid
+    /// array snapshot is translated in place with the same roundings and stays valid.
+    /// Vertex handles stay valid. See docs/store.md for what is exact here.
+    ///
+    /// # Errors
+    /// `StalePolygon`; [`EditError::NonFinite`] when `dx` or `dy` is not finite or a
+    /// coordinate would overflow; [`EditError::RoundingBreaksConvexity`] when rounding
+    /// would leave the polygon not strictly convex. Nothing changes on error.
+    ///
+    /// ```
+    /// use polysect::store::Scene;
+    /// let mut scene = Scene::new();
+    /// let a = scene.insert_points([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+    /// let b = scene.insert_points([[3.0, 0.0], [4.0, 0.0], [4.0, 1.0]])?;
+    /// assert!(!scene.intersects(a, b)?);
+    /// scene.translate(b, -1.0, 0.5)?; // b's corner (2, 0.5) now lies on a's edge
+    /// assert!(scene.intersects(a, b)?);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn translate(&mut self, id: PolygonId, dx: f64, dy: f64) -> Result<(), SceneError> {
+        let key = self.key(id)?;
+        let e = &mut self.entries[key];
+        e.polygon.translate(dx, dy)?;
+        e.version += 1;
+        if let Some(s) = &mut e.snapshot {
+            s.translate_unchecked(dx, dy);
+        }
+        let shifted = BoundingBox {
+            min: Point::new(e.bbox.min.x + dx, e.bbox.min.y + dy),
+            max: Point::new(e.bbox.max.x + dx, e.bbox.max.y + dy),
+        };
+        if shifted.min.is_finite() && shifted.max.is_finite() {
+            e.bbox = shifted;
+        } else {
+            // A loose box reaching past the polygon overflowed: take the true box.
+            e.bbox = BoundingBox::of(e.polygon.iter().map(|(_, p)| p)).expect("a polygon has vertices");
+            e.bbox_tight = true;
+        }
+        self.broad.mark(key);
+        Ok(())
+    }
+
     fn grow_box(&mut self, key: usize, p: Point) {
         let e = &mut self.entries[key];
         let before = e.bbox;
@@ -503,14 +550,14 @@ impl<K: Kernel> Scene<K> {
             })
             .collect();
         self.convert_all(pending);
+        let base: u64 = rand::Rng::random(&mut self.rng);
         let this = &*self;
         routes
             .par_iter()
             .enumerate()
             .map_init(QueryWorkspace::default, |ws, (i, route)| {
                 let route = route.clone()?;
-                let mut rng =
-                    SmallRng::seed_from_u64(0x9a1e_u64 ^ (i as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15));
+                let mut rng = SmallRng::seed_from_u64(base ^ (i as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15));
                 Ok(this.answer(route, ws, &mut rng))
             })
             .collect()

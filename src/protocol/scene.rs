@@ -1,0 +1,572 @@
+//! The `scene` protocol: one [`Scene`] driven by JSON Lines operations, one reply line
+//! per input line.
+//!
+//! # Names and ids
+//! Polygons are named by the caller (any JSON string). Vertices are named by integer
+//! ids: `add` gives the k-th input point (from 0) the id k if it survives cleaning, and
+//! no id otherwise (of consecutive equal points the first survives, a repeated closing
+//! point is dropped in favour of the first, collinear middle points are dropped; the
+//! input may be clockwise). Each accepted `insert` takes the next id: the first is the
+//! number of points `add` was given, then one more each time; a refused insert takes
+//! none. Ids are never reused.
+//!
+//! Each polygon keeps its ids in an ordered map from id to [`VertexId`], updated at
+//! every insert and removal, so the session holds one entry per live vertex: memory
+//! is bounded by the live polygons whatever the history. An edit is O(log n) on top of
+//! the scene's O(1); `vertices` is O(n).
+//!
+//! # Precision
+//! Edits are always validated with the exact kernel (that is how [`LinkedPolygon`]
+//! edits work); the session's kernel `K` decides queries only.
+
+use super::json::shown;
+use super::line::{Channel, Stop, json_string, serve};
+use super::write_point;
+use crate::kernel::{Exact, Kernel, Point};
+use crate::polygon::{ConvexPolygon, EditError, LinkedPolygon, VertexId};
+use crate::store::{PolygonId, Scene, SceneError, Strategy};
+use std::collections::{BTreeMap, HashMap};
+use std::fmt::{self, Write as _};
+use std::io::{self, Read, Write};
+
+/// How a session answers; see [`SceneSession::with_kernel`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SceneOptions {
+    /// How the scene answers queries (the planner by default).
+    pub strategy: Strategy,
+    /// A fixed seed for the sampled test's generator (reproducible runs); `None` seeds
+    /// it from the operating system (the default; see docs/design.md, "Randomness").
+    pub seed: Option<u64>,
+    /// Answer `intersects` with a certificate as `check --certificate` does.
+    pub certificate: bool,
+}
+
+/// An option the session cannot honour.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum OptionError {
+    /// Certificates are not available in this build.
+    CertificatesUnavailable,
+}
+
+impl fmt::Display for OptionError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            OptionError::CertificatesUnavailable => write!(
+                f,
+                "--certificate: intersection certificates are not available in this build yet"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for OptionError {}
+
+/// A polygon of the session: its handle, its ids and the next id to give.
+#[derive(Clone, Debug)]
+struct Named {
+    id: PolygonId,
+    vertices: BTreeMap<u64, VertexId>,
+    next_id: u64,
+}
+
+/// One `scene` session: a [`Scene`] plus the caller's names and vertex ids.
+///
+/// ```
+/// use polysect::protocol::scene::{SceneOptions, SceneSession};
+/// let mut session = SceneSession::new(SceneOptions::default())?;
+/// let input = br#"{"op": "add", "name": "a", "points": [[0,0],[0,2],[2,2],[2,0]]}
+/// {"op": "vertices", "name": "a"}
+/// {"op": "insert", "name": "a", "after": 0, "point": [1, -1]}
+/// {"id": "x", "op": "remove", "name": "b", "vertex": 0}
+/// "#;
+/// let mut out = Vec::new();
+/// session.run(&input[..], &mut out)?;
+/// let out = String::from_utf8(out).unwrap();
+/// let lines: Vec<&str> = out.lines().collect();
+/// assert_eq!(lines[0], r#"{"ok": true}"#);
+/// // The input was clockwise: counter-clockwise from id 0 the ids run 0, 3, 2, 1.
+/// assert_eq!(lines[1], r#"{"ids": [0,3,2,1], "points": [[0.0,0.0],[2.0,0.0],[2.0,2.0],[0.0,2.0]]}"#);
+/// assert_eq!(lines[2], r#"{"vertex": 4}"#);
+/// assert_eq!(lines[3], r#"{"id": "x", "error": "line 4: no polygon is named \"b\""}"#);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug)]
+pub struct SceneSession<K: Kernel = Exact> {
+    scene: Scene<K>,
+    polygons: HashMap<String, Named>,
+    names: HashMap<PolygonId, String>,
+    certificate: bool,
+    /// Lines answered so far (error messages number the next one from here).
+    lines: u64,
+}
+
+impl SceneSession<Exact> {
+    /// A session on the exact kernel.
+    ///
+    /// # Errors
+    /// As [`SceneSession::with_kernel`].
+    pub fn new(options: SceneOptions) -> Result<Self, OptionError> {
+        SceneSession::with_kernel(Exact, options)
+    }
+}
+
+/// The object every line should be, for messages.
+const SHAPE: &str = r#"{"op": ..., ...}"#;
+
+const OPS: &str = "add, drop, insert, remove, move, translate, intersects, pairs, vertices";
+
+const KEYS: [&str; 10] = [
+    "op", "name", "points", "after", "point", "vertex", "to", "by", "a", "b",
+];
+
+/// One line's fields, each typed as its key says wherever it appears.
+#[derive(Debug, Default)]
+struct OpLine {
+    op: Option<String>,
+    name: Option<String>,
+    points: Option<Vec<Point>>,
+    after: Option<u64>,
+    point: Option<Point>,
+    vertex: Option<u64>,
+    to: Option<Point>,
+    by: Option<Point>,
+    a: Option<String>,
+    b: Option<String>,
+}
+
+fn parse_op<R: Read, W: Write>(ch: &mut Channel<R, W>) -> Result<OpLine, Stop> {
+    let mut l = OpLine::default();
+    ch.object(SHAPE, &KEYS, |ch, key| {
+        let field = KEYS[key];
+        match key {
+            0 => l.op = ch.string(field)?,
+            1 => l.name = ch.string(field)?,
+            2 => l.points = ch.points(field)?,
+            3 => l.after = ch.integer(field)?,
+            4 => l.point = ch.point(field)?,
+            5 => l.vertex = ch.integer(field)?,
+            6 => l.to = ch.point(field)?,
+            7 => l.by = ch.point(field)?,
+            8 => l.a = ch.string(field)?,
+            _ => l.b = ch.string(field)?,
+        }
+        Ok(())
+    })?;
+    Ok(l)
+}
+
+/// The ids of the cleaned polygon's vertices (`cleaned`, counter-clockwise from the first
+/// surviving input point): each survivor's input index. Survivors appear in the input in
+/// boundary order, forwards for counter-clockwise input and backwards for clockwise
+/// input, each as the first point of its run of equal points (the closing repeats of the
+/// first survivor come after every other survivor); the points in between are repeats or
+/// collinear middle points, which lie strictly between two survivors and so equal none.
+/// A greedy scan in either order therefore finds them. `None` if neither order matches
+/// (not a cleaning of `input`).
+fn survivor_ids(input: &[Point], cleaned: &[Point]) -> Option<Vec<u64>> {
+    let m = cleaned.len();
+    if m == 0 {
+        return None;
+    }
+    [1, m - 1].into_iter().find_map(|step| {
+        let mut ids = vec![0u64; m];
+        let mut j = 0;
+        for (k, &p) in input.iter().enumerate() {
+            let at = (j * step) % m;
+            if j < m && p == cleaned[at] {
+                ids[at] = k as u64;
+                j += 1;
+            }
+        }
+        (j == m).then_some(ids)
+    })
+}
+
+impl<K: Kernel> SceneSession<K> {
+    /// A session whose queries use `kernel`, with the options' strategy and seed.
+    ///
+    /// # Errors
+    /// [`OptionError::CertificatesUnavailable`] when certificates are asked for.
+    pub fn with_kernel(kernel: K, options: SceneOptions) -> Result<Self, OptionError> {
+        if options.certificate {
+            return Err(OptionError::CertificatesUnavailable);
+        }
+        let mut scene = Scene::with_kernel(kernel);
+        scene.set_strategy(options.strategy);
+        if let Some(seed) = options.seed {
+            scene.seed(seed);
+        }
+        Ok(SceneSession {
+            scene,
+            polygons: HashMap::new(),
+            names: HashMap::new(),
+            certificate: options.certificate,
+            lines: 0,
+        })
+    }
+
+    /// The scene (read-only).
+    pub fn scene(&self) -> &Scene<K> {
+        &self.scene
+    }
+
+    /// Answers every line of `input` on `output`, one reply line per input line, in
+    /// order, flushing whenever the next line is not already read. Lines are numbered
+    /// on from the lines this session answered before.
+    ///
+    /// # Errors
+    /// Only I/O errors; a bad line gets an error line and changes nothing.
+    pub fn run<R: Read, W: Write>(&mut self, input: R, output: W) -> io::Result<()> {
+        let mut ch = Channel::new(input, output);
+        ch.set_line_number(self.lines);
+        let mut lines = self.lines;
+        let result = serve(
+            &mut ch,
+            |ch| {
+                lines += 1;
+                parse_op(ch)
+            },
+            |l| self.apply(l),
+        );
+        self.lines = lines;
+        result
+    }
+
+    /// Answers one line (a newline in it ends it) and returns the reply without its
+    /// newline.
+    pub fn answer_line(&mut self, line: &[u8]) -> String {
+        let line = line.split(|&b| b == b'\n').next().unwrap_or_default();
+        let input: &[u8] = if line.is_empty() { b"\n" } else { line };
+        let mut out = Vec::new();
+        self.run(input, &mut out)
+            .expect("reading a slice and writing a Vec cannot fail");
+        let mut text = String::from_utf8(out).expect("replies are UTF-8");
+        if text.ends_with('\n') {
+            text.pop();
+        }
+        text
+    }
+
+    /// Number of vertex ids the session maps (one per live vertex).
+    pub fn mapped_vertices(&self) -> usize {
+        self.polygons.values().map(|n| n.vertices.len()).sum()
+    }
+
+    /// Every polygon by name with its vertices and their ids, counter-clockwise from the
+    /// smallest id: what `vertices` would answer for each (for tests that check a refused
+    /// line changed nothing).
+    pub(crate) fn state(&self) -> BTreeMap<String, Vec<(u64, Point)>> {
+        self.polygons
+            .iter()
+            .map(|(name, named)| {
+                let ids: HashMap<VertexId, u64> = named.vertices.iter().map(|(&id, &v)| (v, id)).collect();
+                let start = named.vertices.first_key_value().map(|(_, &v)| v);
+                let walk: Vec<(u64, Point)> = match (self.scene.polygon(named.id), start) {
+                    (Ok(poly), Some(start)) => poly
+                        .iter_from(start)
+                        .map(|it| {
+                            it.map(|(v, p)| (ids.get(&v).copied().unwrap_or(u64::MAX), p))
+                                .collect()
+                        })
+                        .unwrap_or_default(),
+                    _ => Vec::new(),
+                };
+                (name.clone(), walk)
+            })
+            .collect()
+    }
+
+    /// Checks the scene's invariants and that the names and ids match it exactly: every
+    /// name has a live polygon, every live vertex exactly one id, every id is below the
+    /// polygon's next id.
+    pub fn debug_validate(&self) -> Result<(), String> {
+        self.scene.debug_validate()?;
+        if self.polygons.len() != self.scene.len() || self.names.len() != self.scene.len() {
+            return Err(format!(
+                "{} names, {} handles, {} polygons",
+                self.polygons.len(),
+                self.names.len(),
+                self.scene.len()
+            ));
+        }
+        for (name, named) in &self.polygons {
+            if self.names.get(&named.id) != Some(name) {
+                return Err(format!("{name:?}: the handle maps to another name"));
+            }
+            let poly = self
+                .scene
+                .polygon(named.id)
+                .map_err(|e| format!("{name:?}: {e}"))?;
+            if named.vertices.len() != poly.len() {
+                return Err(format!(
+                    "{name:?}: {} ids for {} vertices",
+                    named.vertices.len(),
+                    poly.len()
+                ));
+            }
+            for (&id, &v) in &named.vertices {
+                if !poly.contains(v) || id >= named.next_id {
+                    return Err(format!("{name:?}: id {id} is stale or beyond {}", named.next_id));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn named(&self, name: &str) -> Result<&Named, String> {
+        self.polygons
+            .get(name)
+            .ok_or_else(|| format!("no polygon is named {}", quoted(name)))
+    }
+
+    fn vertex(&self, name: &str, id: u64) -> Result<(PolygonId, VertexId), String> {
+        let named = self.named(name)?;
+        match named.vertices.get(&id) {
+            Some(&v) => Ok((named.id, v)),
+            None => Err(format!(
+                "polygon {} has no vertex {id} ({})",
+                quoted(name),
+                if id < named.next_id {
+                    "it was removed"
+                } else {
+                    "no such id was given"
+                }
+            )),
+        }
+    }
+
+    /// Applies one parsed line: the reply body, or the error message (nothing changed).
+    fn apply(&mut self, l: OpLine) -> Result<String, String> {
+        let op = l.op.ok_or("missing field `op`")?;
+        let need = |field: &str| format!("op `{op}` needs the field `{field}`");
+        match op.as_str() {
+            "add" => {
+                let name = l.name.ok_or_else(|| need("name"))?;
+                let points = l.points.ok_or_else(|| need("points"))?;
+                self.add(name, points)
+            }
+            "drop" => self.drop_polygon(&l.name.ok_or_else(|| need("name"))?),
+            "insert" => {
+                let name = l.name.ok_or_else(|| need("name"))?;
+                let after = l.after.ok_or_else(|| need("after"))?;
+                let point = l.point.ok_or_else(|| need("point"))?;
+                self.insert(&name, after, point)
+            }
+            "remove" => {
+                let name = l.name.ok_or_else(|| need("name"))?;
+                let vertex = l.vertex.ok_or_else(|| need("vertex"))?;
+                let (pid, v) = self.vertex(&name, vertex)?;
+                self.scene
+                    .remove_vertex(pid, v)
+                    .map_err(|e| format!("remove refused: {e}"))?;
+                if let Some(named) = self.polygons.get_mut(&name) {
+                    named.vertices.remove(&vertex);
+                }
+                Ok(OK.into())
+            }
+            "move" => {
+                let name = l.name.ok_or_else(|| need("name"))?;
+                let vertex = l.vertex.ok_or_else(|| need("vertex"))?;
+                let to = l.to.ok_or_else(|| need("to"))?;
+                let (pid, v) = self.vertex(&name, vertex)?;
+                self.scene
+                    .move_vertex(pid, v, to)
+                    .map_err(|e| format!("move refused: {e}"))?;
+                Ok(OK.into())
+            }
+            "translate" => {
+                let name = l.name.ok_or_else(|| need("name"))?;
+                let by = l.by.ok_or_else(|| need("by"))?;
+                let pid = self.named(&name)?.id;
+                self.scene.translate(pid, by.x, by.y).map_err(|e| match e {
+                    // Its message starts with "translation refused".
+                    SceneError::Edit(EditError::RoundingBreaksConvexity { .. }) => e.to_string(),
+                    _ => format!("translate refused: {e}"),
+                })?;
+                Ok(OK.into())
+            }
+            "intersects" => {
+                let a = l.a.ok_or_else(|| need("a"))?;
+                let b = l.b.ok_or_else(|| need("b"))?;
+                self.intersects(&a, &b)
+            }
+            "pairs" => Ok(self.pairs()),
+            "vertices" => self.vertices(&l.name.ok_or_else(|| need("name"))?),
+            other => Err(format!("unknown op {} (valid: {OPS})", quoted(other))),
+        }
+    }
+
+    fn add(&mut self, name: String, points: Vec<Point>) -> Result<String, String> {
+        if self.polygons.contains_key(&name) {
+            return Err(format!("the name {} is in use", quoted(&name)));
+        }
+        let polygon = ConvexPolygon::new(points.iter().copied()).map_err(|e| format!("points: {e}"))?;
+        let ids = survivor_ids(&points, polygon.vertices())
+            .ok_or("internal error: the cleaned polygon's vertices were not found in the input")?;
+        let next_id = points.len() as u64;
+        drop(points);
+        let linked = LinkedPolygon::from_convex(&polygon);
+        drop(polygon);
+        // `from_convex` links the vertices in boundary order from `first`.
+        let vertices: BTreeMap<u64, VertexId> = ids.into_iter().zip(linked.iter().map(|(v, _)| v)).collect();
+        let id = self.scene.insert(linked);
+        self.names.insert(id, name.clone());
+        self.polygons.insert(
+            name,
+            Named {
+                id,
+                vertices,
+                next_id,
+            },
+        );
+        Ok(OK.into())
+    }
+
+    fn drop_polygon(&mut self, name: &str) -> Result<String, String> {
+        let named = self
+            .polygons
+            .remove(name)
+            .ok_or_else(|| format!("no polygon is named {}", quoted(name)))?;
+        self.names.remove(&named.id);
+        self.scene
+            .remove(named.id)
+            .map_err(|e| format!("internal error: {e}"))?;
+        Ok(OK.into())
+    }
+
+    fn insert(&mut self, name: &str, after: u64, point: Point) -> Result<String, String> {
+        let (pid, v) = self.vertex(name, after)?;
+        let new = self
+            .scene
+            .insert_vertex(pid, v, point)
+            .map_err(|e| format!("insert refused: {e}"))?;
+        let named = self
+            .polygons
+            .get_mut(name)
+            .ok_or("internal error: the polygon vanished")?;
+        let id = named.next_id;
+        named.next_id += 1;
+        named.vertices.insert(id, new);
+        Ok(format!("\"vertex\": {id}"))
+    }
+
+    /// The `intersects` reply. With certificates enabled, this is where the certificate
+    /// for the pair is added to the reply (`"certificate": {...}` after the answer, in
+    /// the format of `check --certificate`); until they exist the session refuses the
+    /// option at construction.
+    fn intersects(&mut self, a: &str, b: &str) -> Result<String, String> {
+        let (ia, ib) = (self.named(a)?.id, self.named(b)?.id);
+        let hit = self
+            .scene
+            .intersects(ia, ib)
+            .map_err(|e| format!("internal error: {e}"))?;
+        debug_assert!(!self.certificate, "refused at construction");
+        Ok(format!("\"intersects\": {hit}"))
+    }
+
+    fn pairs(&mut self) -> String {
+        let mut pairs: Vec<(&str, &str)> = self
+            .scene
+            .intersecting_pairs()
+            .into_iter()
+            .filter_map(|(a, b)| {
+                let (a, b) = (self.names.get(&a)?.as_str(), self.names.get(&b)?.as_str());
+                Some(if a <= b { (a, b) } else { (b, a) })
+            })
+            .collect();
+        pairs.sort_unstable();
+        let mut body = String::from("\"pairs\": [");
+        for (i, (a, b)) in pairs.iter().enumerate() {
+            if i > 0 {
+                body.push(',');
+            }
+            let _ = write!(body, "[{},{}]", json_string(a), json_string(b));
+        }
+        body.push(']');
+        body
+    }
+
+    fn vertices(&self, name: &str) -> Result<String, String> {
+        let named = self.named(name)?;
+        let poly = self
+            .scene
+            .polygon(named.id)
+            .map_err(|e| format!("internal error: {e}"))?;
+        let (_, &start) = named
+            .vertices
+            .first_key_value()
+            .ok_or("internal error: a polygon without ids")?;
+        let ids: HashMap<VertexId, u64> = named.vertices.iter().map(|(&id, &v)| (v, id)).collect();
+        let walk = poly
+            .iter_from(start)
+            .map_err(|e| format!("internal error: {e}"))?;
+        let mut id_text = String::from("\"ids\": [");
+        let mut point_text = String::from("\"points\": [");
+        for (i, (v, p)) in walk.enumerate() {
+            if i > 0 {
+                id_text.push(',');
+                point_text.push(',');
+            }
+            let id = ids.get(&v).ok_or("internal error: a vertex without an id")?;
+            let _ = write!(id_text, "{id}");
+            write_point(&mut point_text, p);
+        }
+        id_text.push_str("], ");
+        point_text.push(']');
+        id_text.push_str(&point_text);
+        Ok(id_text)
+    }
+}
+
+const OK: &str = "\"ok\": true";
+
+/// A name for a message: as a JSON string, shortened when long.
+fn quoted(name: &str) -> String {
+    json_string(&shown(name.as_bytes()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn pts(v: &[[f64; 2]]) -> Vec<Point> {
+        v.iter().map(|&p| p.into()).collect()
+    }
+
+    fn ids_of(input: &[[f64; 2]]) -> Vec<u64> {
+        let input = pts(input);
+        let poly = ConvexPolygon::new(input.iter().copied()).unwrap();
+        survivor_ids(&input, poly.vertices()).unwrap()
+    }
+
+    #[test]
+    fn survivors_keep_their_input_positions() {
+        // Counter-clockwise, plain.
+        assert_eq!(ids_of(&[[0., 0.], [1., 0.], [0., 1.]]), [0, 1, 2]);
+        // Clockwise: cleaned counter-clockwise from input 0, so ids run 0, 2, 1.
+        assert_eq!(ids_of(&[[0., 0.], [0., 1.], [1., 0.]]), [0, 2, 1]);
+        // Repeats: the first of each run; the closing repeat of the first point is dropped.
+        assert_eq!(
+            ids_of(&[
+                [0., 0.],
+                [0., 0.],
+                [1., 0.],
+                [1., 0.],
+                [0., 1.],
+                [0., 0.],
+                [0., 0.]
+            ]),
+            [0, 2, 4]
+        );
+        // Collinear middles get no id; a collinear first point moves the start.
+        assert_eq!(
+            ids_of(&[[1., 0.], [2., 0.], [2., 2.], [0., 2.], [0., 1.], [0., 0.]]),
+            [1, 2, 3, 5]
+        );
+        // Clockwise with a collinear first point and a closing repeat of it.
+        assert_eq!(
+            ids_of(&[[1., 0.], [0., 0.], [0., 2.], [2., 2.], [2., 0.], [1., 0.]]),
+            [1, 4, 3, 2]
+        );
+    }
+}

@@ -1,0 +1,426 @@
+// polysect live page: draws what the server's simulation sends and forwards edits.
+// All geometry decisions are made in Rust; this file keeps the picture and the controls.
+"use strict";
+(() => {
+  const $ = (id) => document.getElementById(id);
+  const canvas = $("view");
+  const ctx = canvas.getContext("2d");
+  const params = new URLSearchParams(location.search);
+  // ?unthrottled: draw and ask for the next frame as soon as one arrives (measures the
+  // whole pipeline's capacity instead of following the display's refresh).
+  const unthrottled = params.has("unthrottled");
+  const FILL = "#a9c4e8", STROKE = "#2d5a96", HIT_FILL = "rgba(235,86,54,0.55)", HIT_STROKE = "#b3260d";
+  const littleEndian = new Uint8Array(new Uint16Array([1]).buffer)[0] === 1;
+
+  const S = {
+    ws: null, ready: false, scene: 0, world: [1200, 800], sizes: null,
+    polys: [], // {ids: Int32Array, c: Float64Array (x0, y0, x1, y1, ... base), path, handles, box}
+    offsets: new Float64Array(0), pairs: [], normals: [], hit: new Uint8Array(0),
+    settings: null, frame: 0, last: null, pending: null, inflight: false, dirty: true,
+    edits: 0, editsAtFrame: 0, moveInflight: false, moveQueued: null, drag: null, hover: null,
+    times: [], fps: 0, drawMs: 0, refusals: 0, errors: 0, lastRefusal: "", lastError: "",
+    view: { scale: 1, ox: 0, oy: 0, dpr: 1 }, figuresAt: 0, figuresOf: null, appliedParams: false,
+  };
+
+  function send(msg) {
+    if (S.ws && S.ws.readyState === WebSocket.OPEN) S.ws.send(JSON.stringify(msg));
+  }
+  function status(text, kind) {
+    const el = $("status");
+    el.textContent = text;
+    el.className = kind || "";
+  }
+
+  // ---- connection ----
+  function connect() {
+    const ws = new WebSocket(`ws://${location.host}/ws`);
+    ws.binaryType = "arraybuffer";
+    S.ws = ws;
+    ws.onopen = () => status("connected", "ok");
+    ws.onclose = () => { S.ready = false; status("disconnected: reload the page to start again", "error"); };
+    ws.onmessage = (ev) => (typeof ev.data === "string" ? onText(JSON.parse(ev.data)) : onBinary(ev.data));
+  }
+
+  function onText(m) {
+    switch (m.type) {
+      case "settings": onSettings(m); break;
+      case "scene": S.sizes = m.sizes; S.world = m.world; S.scene = m.scene; S.ready = false; resize(); break;
+      case "frame": onFrame(m); break;
+      case "edit": onEdit(m); break;
+      case "refused":
+        S.refusals++; S.lastRefusal = m.reason; S.moveInflight = false;
+        status(`Refused ${m.op} on polygon ${m.polygon}: ${m.reason}`, "refused");
+        flushMove(); break;
+      case "error":
+        S.errors++; S.lastError = m.message; S.moveInflight = false;
+        status(`Error: ${m.message}`, "error");
+        flushMove(); break;
+    }
+  }
+
+  function onBinary(buf) {
+    let all;
+    if (littleEndian) all = new Float64Array(buf);
+    else {
+      const dv = new DataView(buf);
+      all = new Float64Array(buf.byteLength / 8);
+      for (let i = 0; i < all.length; i++) all[i] = dv.getFloat64(8 * i, true);
+    }
+    let at = 0;
+    S.polys = S.sizes.map((n) => {
+      const c = all.slice(at, at + 2 * n);
+      at += 2 * n;
+      return { ids: Int32Array.from({ length: n }, (_, k) => k), c, path: null, handles: null, box: bbox(c) };
+    });
+    S.offsets = new Float64Array(2 * S.polys.length);
+    S.pairs = []; S.normals = []; S.hit = new Uint8Array(S.polys.length);
+    S.frame = 0; S.last = null; S.pending = null; S.inflight = false; S.drag = null; S.hover = null;
+    S.ready = true; S.dirty = true;
+    S.times = [];
+    requestFrame(true);
+  }
+
+  function onSettings(m) {
+    S.settings = m;
+    for (const k of ["polygons", "vertices", "seed", "strategy", "precision", "speed"]) $(k).value = m[k];
+    $("speedValue").textContent = Number(m.speed).toFixed(1);
+    $("pause").textContent = m.paused ? "Resume" : "Pause";
+    if (!S.appliedParams) {
+      // Settings from the address (?polygons=200&vertices=64&strategy=cached ...).
+      S.appliedParams = true;
+      const change = {};
+      for (const k of ["polygons", "vertices", "seed", "speed"]) if (params.has(k)) change[k] = Number(params.get(k));
+      for (const k of ["strategy", "precision"]) if (params.has(k)) change[k] = params.get(k);
+      if (params.has("paused")) change.paused = params.get("paused") !== "false";
+      if (Object.keys(change).length) send({ op: "settings", ...change });
+    }
+    if (!m.paused) requestFrame();
+  }
+
+  function requestFrame(force) {
+    if (!S.ready || S.inflight || (!force && S.settings && S.settings.paused)) return;
+    S.inflight = true;
+    send({ op: "frame" });
+  }
+
+  function onFrame(m) {
+    S.inflight = false;
+    if (m.scene !== S.scene || !S.ready) return;
+    m.editsSeen = S.edits;
+    S.pending = m;
+    if (unthrottled) { applyFrame(); draw(); requestFrame(); }
+  }
+
+  function applyFrame() {
+    const m = S.pending;
+    S.pending = null;
+    S.last = m;
+    S.frame = m.frame;
+    S.editsAtFrame = m.editsSeen;
+    S.offsets = Float64Array.from(m.offsets);
+    S.pairs = m.pairs; S.normals = m.normals;
+    S.hit = new Uint8Array(S.polys.length);
+    for (const [i, j] of m.pairs) { S.hit[i] = 1; S.hit[j] = 1; }
+    if (m.advanced) {
+      const now = performance.now();
+      S.times.push(now);
+      while (S.times.length > 2 && now - S.times[0] > 1000) S.times.shift();
+      S.fps = S.times.length > 1 ? (1000 * (S.times.length - 1)) / (now - S.times[0]) : 0;
+    }
+    S.dirty = true;
+  }
+
+  // ---- edits ----
+  function onEdit(m) {
+    const p = S.polys[m.polygon];
+    if (!p) return;
+    const at = (id) => p.ids.indexOf(id);
+    if (m.kind === "move") {
+      const k = at(m.vertex);
+      p.c[2 * k] = m.point[0]; p.c[2 * k + 1] = m.point[1];
+      S.moveInflight = false;
+    } else if (m.kind === "insert") {
+      const k = at(m.after) + 1, n = p.ids.length;
+      const ids = new Int32Array(n + 1), c = new Float64Array(2 * n + 2);
+      ids.set(p.ids.subarray(0, k)); ids[k] = m.vertex; ids.set(p.ids.subarray(k), k + 1);
+      c.set(p.c.subarray(0, 2 * k)); c[2 * k] = m.point[0]; c[2 * k + 1] = m.point[1]; c.set(p.c.subarray(2 * k), 2 * k + 2);
+      p.ids = ids; p.c = c;
+    } else if (m.kind === "remove") {
+      const k = at(m.vertex), n = p.ids.length;
+      const ids = new Int32Array(n - 1), c = new Float64Array(2 * n - 2);
+      ids.set(p.ids.subarray(0, k)); ids.set(p.ids.subarray(k + 1), k);
+      c.set(p.c.subarray(0, 2 * k)); c.set(p.c.subarray(2 * k + 2), 2 * k);
+      p.ids = ids; p.c = c;
+    }
+    p.path = null; p.handles = null; p.box = bbox(p.c);
+    S.edits++;
+    S.dirty = true;
+    if (m.kind !== "move") status(`${m.kind === "insert" ? "Inserted" : "Removed"} vertex ${m.vertex} of polygon ${m.polygon}`, "ok");
+    if (S.settings.paused) requestFrame(true); // the pairs for the edited polygon
+    flushMove();
+  }
+
+  function sendMove(poly, vertex, to) {
+    if (S.moveInflight) { S.moveQueued = { poly, vertex, to }; return; }
+    S.moveInflight = true;
+    send({ op: "move", scene: S.scene, polygon: poly, vertex, to });
+  }
+  function flushMove() {
+    if (!S.moveInflight && S.moveQueued) {
+      const q = S.moveQueued;
+      S.moveQueued = null;
+      sendMove(q.poly, q.vertex, q.to);
+    }
+  }
+
+  // ---- view and picking ----
+  function bbox(c) {
+    let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+    for (let k = 0; k < c.length; k += 2) {
+      const x = c[k], y = c[k + 1];
+      if (x < x0) x0 = x; if (x > x1) x1 = x; if (y < y0) y0 = y; if (y > y1) y1 = y;
+    }
+    return [x0, y0, x1, y1];
+  }
+  function resize() {
+    const r = canvas.getBoundingClientRect(), dpr = window.devicePixelRatio || 1, v = S.view;
+    canvas.width = Math.round(r.width * dpr); canvas.height = Math.round(r.height * dpr);
+    const pad = 12;
+    v.dpr = dpr;
+    v.scale = Math.min((r.width - 2 * pad) / S.world[0], (r.height - 2 * pad) / S.world[1]);
+    v.ox = (r.width - S.world[0] * v.scale) / 2; v.oy = (r.height - S.world[1] * v.scale) / 2;
+    for (const p of S.polys) { p.path = null; p.handles = null; }
+    S.dirty = true;
+  }
+  const toWorld = (mx, my) => [(mx - S.view.ox) / S.view.scale, (my - S.view.oy) / S.view.scale];
+  function mouse(ev) {
+    const r = canvas.getBoundingClientRect();
+    return toWorld(ev.clientX - r.left, ev.clientY - r.top);
+  }
+
+  // Nearest vertex within `px` pixels, over polygons whose box is near; topmost first.
+  function pickVertex(w, px) {
+    const tol = px / S.view.scale;
+    let best = null, bestD = tol * tol;
+    for (let i = S.polys.length - 1; i >= 0; i--) {
+      const p = S.polys[i], x = w[0] - S.offsets[2 * i], y = w[1] - S.offsets[2 * i + 1], b = p.box;
+      if (x < b[0] - tol || x > b[2] + tol || y < b[1] - tol || y > b[3] + tol) continue;
+      for (let k = 0; k < p.ids.length; k++) {
+        const dx = p.c[2 * k] - x, dy = p.c[2 * k + 1] - y, d = dx * dx + dy * dy;
+        if (d <= bestD) { bestD = d; best = { poly: i, vertex: p.ids[k] }; }
+      }
+      if (best) return best;
+    }
+    return null;
+  }
+  // Nearest edge within `px` pixels: the polygon and the edge's first vertex.
+  function pickEdge(w, px) {
+    const tol = px / S.view.scale;
+    for (let i = S.polys.length - 1; i >= 0; i--) {
+      const p = S.polys[i], x = w[0] - S.offsets[2 * i], y = w[1] - S.offsets[2 * i + 1], b = p.box, n = p.ids.length;
+      if (x < b[0] - tol || x > b[2] + tol || y < b[1] - tol || y > b[3] + tol) continue;
+      let best = -1, bestD = tol * tol;
+      for (let k = 0; k < n; k++) {
+        const ax = p.c[2 * k], ay = p.c[2 * k + 1], k2 = (k + 1) % n, bx = p.c[2 * k2], by = p.c[2 * k2 + 1];
+        const ex = bx - ax, ey = by - ay, len = ex * ex + ey * ey;
+        const t = len > 0 ? Math.max(0, Math.min(1, ((x - ax) * ex + (y - ay) * ey) / len)) : 0;
+        const dx = ax + t * ex - x, dy = ay + t * ey - y, d = dx * dx + dy * dy;
+        if (d <= bestD) { bestD = d; best = k; }
+      }
+      if (best >= 0) return { poly: i, after: p.ids[best] };
+    }
+    return null;
+  }
+
+  canvas.addEventListener("mousedown", (ev) => {
+    if (ev.button !== 0 || !S.ready) return;
+    const w = mouse(ev), v = pickVertex(w, 8);
+    if (v) { S.drag = v; ev.preventDefault(); return; }
+    const e = pickEdge(w, 6);
+    if (e) send({ op: "insert", scene: S.scene, polygon: e.poly, after: e.after, point: w });
+  });
+  window.addEventListener("mousemove", (ev) => {
+    if (S.drag) { sendMove(S.drag.poly, S.drag.vertex, mouse(ev)); return; }
+    if ($("showVertices").checked && S.ready) {
+      const h = pickVertex(mouse(ev), 8);
+      if ((h && (!S.hover || h.poly !== S.hover.poly || h.vertex !== S.hover.vertex)) || (!h && S.hover)) { S.hover = h; S.dirty = true; }
+    }
+  });
+  window.addEventListener("mouseup", () => { S.drag = null; });
+  const removeAt = (ev) => {
+    const v = S.ready && pickVertex(mouse(ev), 8);
+    if (v) { ev.preventDefault(); send({ op: "remove", scene: S.scene, polygon: v.poly, vertex: v.vertex }); }
+  };
+  canvas.addEventListener("dblclick", removeAt);
+  canvas.addEventListener("contextmenu", removeAt);
+
+  // ---- drawing ----
+  // The outline in pixels relative to the polygon's offset, decimated to the half-pixel
+  // grid: a vertex is kept only if it falls in another half-pixel cell than the last one
+  // kept, so a 65,536-vertex polygon becomes a few hundred points. Rebuilt after an edit
+  // or a resize, never per frame: a frame only translates it.
+  function pathOf(p) {
+    if (p.path) return p.path;
+    const s = S.view.scale, c = p.c, path = new Path2D();
+    let lx = NaN, ly = NaN, kept = 0;
+    for (let k = 0; k < c.length; k += 2) {
+      const x = c[k] * s, y = c[k + 1] * s, cx = Math.round(2 * x), cy = Math.round(2 * y);
+      if (cx === lx && cy === ly) continue;
+      if (kept++ === 0) path.moveTo(x, y); else path.lineTo(x, y);
+      lx = cx; ly = cy;
+    }
+    path.closePath();
+    p.path = path;
+    p.kept = kept;
+    return path;
+  }
+  // Handles only where vertices are at least 5 px apart on average.
+  function handlesOf(p) {
+    if (p.handles !== null) return p.handles;
+    const s = S.view.scale, n = p.ids.length, b = p.box;
+    const perimeter = 2 * ((b[2] - b[0]) + (b[3] - b[1])) * s;
+    if (perimeter / n < 5) return (p.handles = false);
+    const h = new Path2D();
+    for (let k = 0; k < n; k++) h.rect(p.c[2 * k] * s - 2, p.c[2 * k + 1] * s - 2, 4, 4);
+    return (p.handles = h);
+  }
+
+  function draw() {
+    const t0 = performance.now(), v = S.view, d = v.dpr;
+    ctx.setTransform(d, 0, 0, d, 0, 0);
+    ctx.clearRect(0, 0, canvas.width, canvas.height);
+    ctx.fillStyle = "#fbfcfe"; ctx.strokeStyle = "#9aa3b2"; ctx.lineWidth = 1;
+    ctx.fillRect(v.ox, v.oy, S.world[0] * v.scale, S.world[1] * v.scale);
+    ctx.strokeRect(v.ox, v.oy, S.world[0] * v.scale, S.world[1] * v.scale);
+    const handles = $("showVertices").checked;
+    for (let i = 0; i < S.polys.length; i++) {
+      const p = S.polys[i];
+      ctx.setTransform(d, 0, 0, d, d * (v.ox + S.offsets[2 * i] * v.scale), d * (v.oy + S.offsets[2 * i + 1] * v.scale));
+      const path = pathOf(p);
+      ctx.fillStyle = S.hit[i] ? HIT_FILL : FILL;
+      ctx.fill(path);
+      ctx.strokeStyle = S.hit[i] ? HIT_STROKE : STROKE;
+      ctx.lineWidth = S.hit[i] ? 1.6 : 1;
+      ctx.stroke(path);
+      const h = handles && handlesOf(p);
+      if (h) { ctx.fillStyle = "#1d2330"; ctx.fill(h); }
+    }
+    ctx.setTransform(d, 0, 0, d, 0, 0);
+    if ($("showNormals").checked) {
+      ctx.strokeStyle = "#5a0f00"; ctx.lineWidth = 2;
+      ctx.beginPath();
+      S.pairs.forEach(([i, j], k) => {
+        const n = S.normals[k];
+        if (!n) return;
+        const ci = centre(i), cj = centre(j), mx = (ci[0] + cj[0]) / 2, my = (ci[1] + cj[1]) / 2;
+        const sx = v.ox + mx * v.scale, sy = v.oy + my * v.scale;
+        ctx.moveTo(sx - 9 * n[0], sy - 9 * n[1]); ctx.lineTo(sx + 9 * n[0], sy + 9 * n[1]);
+        ctx.moveTo(sx + 9 * n[0], sy + 9 * n[1]); ctx.arc(sx + 9 * n[0], sy + 9 * n[1], 1.5, 0, 2 * Math.PI);
+      });
+      ctx.stroke();
+    }
+    if (S.hover) {
+      const p = S.polys[S.hover.poly], k = p && p.ids.indexOf(S.hover.vertex);
+      if (p && k >= 0) {
+        const i = S.hover.poly;
+        ctx.beginPath();
+        ctx.arc(v.ox + (p.c[2 * k] + S.offsets[2 * i]) * v.scale, v.oy + (p.c[2 * k + 1] + S.offsets[2 * i + 1]) * v.scale, 6, 0, 2 * Math.PI);
+        ctx.strokeStyle = "#000"; ctx.lineWidth = 1.5; ctx.stroke();
+      }
+    }
+    S.dirty = false;
+    S.drawMs = 0.9 * S.drawMs + 0.1 * (performance.now() - t0);
+    figures();
+  }
+  function centre(i) {
+    const b = S.polys[i].box;
+    return [(b[0] + b[2]) / 2 + S.offsets[2 * i], (b[1] + b[3]) / 2 + S.offsets[2 * i + 1]];
+  }
+
+  // At most four times a second (the DOM is slower than the canvas); tick() catches up.
+  // Frames per second over the last second; 0 once no frame has moved for a second.
+  function fps() {
+    const last = S.times[S.times.length - 1];
+    return last !== undefined && performance.now() - last < 1000 ? S.fps : 0;
+  }
+
+  function figures() {
+    const now = performance.now();
+    if (now - S.figuresAt < 250 || !S.last || (S.figuresOf === S.last && fps() > 0)) return;
+    S.figuresAt = now;
+    S.figuresOf = S.last;
+    const m = S.last, t = m.timing, set = (id, x) => { $(id).textContent = x; };
+    const f2 = (x) => x.toFixed(2);
+    set("f-fps", fps().toFixed(1));
+    set("f-total", f2(t.update_ms + t.broad_ms + t.narrow_ms + t.response_ms));
+    set("f-update", f2(t.update_ms)); set("f-broad", f2(t.broad_ms)); set("f-narrow", f2(t.narrow_ms));
+    set("f-response", f2(t.response_ms)); set("f-draw", f2(S.drawMs));
+    set("f-queries", m.queries); set("f-box", m.stats.box_rejects);
+    set("f-sampled", m.stats.sampled_tests); set("f-array", m.stats.array_tests);
+    set("f-candidates", m.candidates); set("f-pairs", m.pairs.length);
+    set("f-conversions", m.totals.conversions + m.totals.throwaway_conversions);
+    set("f-sampledTotal", m.totals.sampled_tests);
+    set("f-vertices", S.polys.reduce((a, p) => a + p.ids.length, 0));
+    set("f-frame", m.frame);
+  }
+
+  function tick() {
+    if (S.pending) { applyFrame(); draw(); requestFrame(); }
+    else if (S.dirty) draw();
+    else figures();
+    requestAnimationFrame(tick);
+  }
+
+  // ---- controls ----
+  $("apply").onclick = () => send({ op: "settings", polygons: Number($("polygons").value), vertices: Number($("vertices").value), seed: Number($("seed").value) });
+  $("strategy").onchange = (e) => send({ op: "settings", strategy: e.target.value });
+  $("precision").onchange = (e) => send({ op: "settings", precision: e.target.value });
+  $("speed").oninput = (e) => send({ op: "settings", speed: Number(e.target.value) });
+  $("pause").onclick = () => S.settings && send({ op: "settings", paused: !S.settings.paused });
+  $("step").onclick = () => { if (S.ready && !S.inflight) { S.inflight = true; send({ op: "step" }); } };
+  $("showVertices").onchange = () => { S.dirty = true; };
+  $("showNormals").onchange = () => { S.dirty = true; };
+  window.addEventListener("resize", resize);
+
+  // What the page shows, for tests and the curious: exact world coordinates (base +
+  // offset, the same additions the server made), the pairs drawn as colliding, and
+  // whether the drawn pairs already account for every edit received.
+  window.polysect = {
+    get ready() { return S.ready; },
+    // No frame requested and none waiting to be drawn.
+    get idle() { return !S.inflight && !S.pending; },
+    get scene() { return S.scene; },
+    get world() { return S.world; },
+    get frame() { return S.frame; },
+    get fps() { return fps(); },
+    get drawMs() { return S.drawMs; },
+    get settings() { return S.settings; },
+    get figures() { return S.last && { timing: S.last.timing, queries: S.last.queries, candidates: S.last.candidates, stats: S.last.stats, totals: S.last.totals }; },
+    get refusals() { return S.refusals; },
+    get lastRefusal() { return S.lastRefusal; },
+    get errors() { return S.errors; },
+    get lastError() { return S.lastError; },
+    get status() { return $("status").textContent; },
+    shown() {
+      return {
+        scene: S.scene, frame: S.frame, pairs: S.pairs.map((p) => [p[0], p[1]]),
+        consistent: S.editsAtFrame === S.edits && !S.moveInflight,
+        polygons: S.polys.map((p, i) => {
+          const out = [];
+          for (let k = 0; k < p.ids.length; k++) out.push([p.c[2 * k] + S.offsets[2 * i], p.c[2 * k + 1] + S.offsets[2 * i + 1]]);
+          return out;
+        }),
+        ids: S.polys.map((p) => Array.from(p.ids)),
+      };
+    },
+    // Viewport coordinates (CSS pixels) of a world point.
+    toScreen(x, y) {
+      const r = canvas.getBoundingClientRect();
+      return [r.left + S.view.ox + x * S.view.scale, r.top + S.view.oy + y * S.view.scale];
+    },
+  };
+
+  resize();
+  connect();
+  requestAnimationFrame(tick);
+})();

@@ -1,0 +1,968 @@
+//! The simulation behind the live page: convex polygons moving in a box, held in a real
+//! [`Scene`], bouncing elastically off the walls and off each other.
+//!
+//! # One frame
+//! 1. **Update**: each polygon moves by its velocity times the speed with
+//!    [`Scene::translate`] (O(n) per polygon: the store validates the translated
+//!    polygon, and translates a snapshot in place instead of dropping it); a polygon
+//!    whose box would leave the box through a wall has that velocity component flipped
+//!    first.
+//! 2. **Broad phase**: [`Scene::candidate_pairs`], the pairs whose boxes overlap (timed
+//!    on its own and reported as the candidate count).
+//! 3. **Narrow phase**: [`Scene::intersecting_pairs`], the store's own answer, planned
+//!    per pair (sampled, converted, cached) as the chosen strategy says. It flushes the
+//!    already-flushed broad phase once more; that repeat is counted in this phase.
+//! 4. **Response**: each intersecting pair whose polygons approach along the contact
+//!    normal ([`contact_normal`]) exchanges momentum along it, an elastic collision with
+//!    masses proportional to area.
+//!
+//! # Exact positions on both sides of the wire
+//! Every coordinate in the simulation (vertices, edit targets, per-frame moves) is a
+//! multiple of [`GRID`] = 2^-36 inside the area [`AREA_MIN`]..[`AREA_MAX`] (the box and
+//! half its size around it), so every coordinate has magnitude below 2^12 and needs at
+//! most 48 significant bits. A sum or difference of two such numbers is therefore exact
+//! in `f64`: [`Scene::translate`]'s rounding never rounds, a polygon's current vertex is
+//! exactly its first vertex plus the sum of its moves, and the page can draw each
+//! polygon as a cached outline plus one offset per frame while holding the same
+//! coordinates as the store, bit for bit. The browser test relies on it: it checks the
+//! page's pairs against the exact reference on the page's own coordinates.
+//!
+//! # Bounds
+//! At most [`MAX_POLYGONS`] polygons of [`MIN_VERTICES`]..=[`MAX_VERTICES`] vertices,
+//! [`MAX_TOTAL_VERTICES`] in all; speed in 0..=[`MAX_SPEED`]; each polygon hands out at
+//! most [`MAX_VERTEX_IDS`] vertex ids.
+
+use super::contact::contact_normal;
+use crate::kernel::{Exact, Fast, Point, Precision};
+use crate::polygon::{LinkedPolygon, VertexId, convex_hull};
+use crate::store::{PlannerStats, PolygonId, Scene, SceneError, Strategy};
+use rand::rngs::SmallRng;
+use rand::{Rng, SeedableRng};
+use std::collections::HashMap;
+use std::f64::consts::TAU;
+use std::time::Instant;
+
+/// The box the polygons move in: `[0, WORLD[0]] × [0, WORLD[1]]`.
+pub const WORLD: [f64; 2] = [1200.0, 800.0];
+/// Every coordinate is a multiple of this (2^-36); see the module docs.
+pub const GRID: f64 = 1.0 / (1u64 << 36) as f64;
+/// Edit targets must lie in `[AREA_MIN, AREA_MAX]` on both axes (per axis: the box and
+/// half its size on each side).
+pub const AREA_MIN: [f64; 2] = [-0.5 * WORLD[0], -0.5 * WORLD[1]];
+pub const AREA_MAX: [f64; 2] = [1.5 * WORLD[0], 1.5 * WORLD[1]];
+pub const MAX_POLYGONS: usize = 1000;
+pub const MIN_VERTICES: usize = 3;
+pub const MAX_VERTICES: usize = 65_536;
+pub const MAX_TOTAL_VERTICES: usize = 1 << 21;
+pub const MAX_SPEED: f64 = 5.0;
+pub const MAX_VERTEX_IDS: usize = 1 << 20;
+/// Distance per frame at speed 1, in box units (the box is 1200 wide).
+const BASE_SPEED: f64 = 1.6;
+/// The largest velocity after collisions, in box units per frame at speed 1.
+const MAX_VELOCITY: f64 = 4.0 * BASE_SPEED;
+/// The largest distance a polygon moves in one frame, whatever the speed.
+const MAX_STEP: f64 = 20.0;
+
+/// Rounds to the nearest multiple of [`GRID`] (exact: scaling by a power of two).
+pub fn snap(x: f64) -> f64 {
+    (x / GRID).round() * GRID
+}
+
+/// What the page controls.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    pub polygons: usize,
+    pub vertices: usize,
+    pub seed: u64,
+    pub strategy: Strategy,
+    pub precision: Precision,
+    pub speed: f64,
+    pub paused: bool,
+}
+
+impl Default for Settings {
+    /// The scene the page starts with: enough polygons, big enough and fast enough, to
+    /// collide within the first second.
+    fn default() -> Self {
+        Settings {
+            polygons: 36,
+            vertices: 16,
+            seed: 1,
+            strategy: Strategy::Planner,
+            precision: Precision::Exact,
+            speed: 1.0,
+            paused: false,
+        }
+    }
+}
+
+impl Settings {
+    /// Checks the bounds of the module docs.
+    ///
+    /// # Errors
+    /// A message naming the field and its allowed range.
+    pub fn validate(&self) -> Result<(), String> {
+        if !(1..=MAX_POLYGONS).contains(&self.polygons) {
+            return Err(format!(
+                "polygons must be between 1 and {MAX_POLYGONS}, not {}",
+                self.polygons
+            ));
+        }
+        if !(MIN_VERTICES..=MAX_VERTICES).contains(&self.vertices) {
+            return Err(format!(
+                "vertices must be between {MIN_VERTICES} and {MAX_VERTICES}, not {}",
+                self.vertices
+            ));
+        }
+        if self.polygons * self.vertices > MAX_TOTAL_VERTICES {
+            return Err(format!(
+                "{} polygons of {} vertices exceed the limit of {MAX_TOTAL_VERTICES} vertices in all",
+                self.polygons, self.vertices
+            ));
+        }
+        if !(0.0..=MAX_SPEED).contains(&self.speed) {
+            return Err(format!(
+                "speed must be between 0 and {MAX_SPEED}, not {}",
+                self.speed
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// The store, on the kernel the precision names.
+#[derive(Debug)]
+enum Store {
+    Exact(Scene<Exact>),
+    Fast(Scene<Fast>),
+}
+
+/// Runs `$body` with `$s` bound to the scene, whatever its kernel.
+macro_rules! on_scene {
+    ($store:expr, $s:ident => $body:expr) => {
+        match $store {
+            Store::Exact($s) => $body,
+            Store::Fast($s) => $body,
+        }
+    };
+}
+
+impl Store {
+    fn new(precision: Precision, strategy: Strategy) -> Store {
+        let mut store = match precision {
+            Precision::Exact => Store::Exact(Scene::new()),
+            Precision::Fast => Store::Fast(Scene::with_kernel(Fast)),
+        };
+        on_scene!(&mut store, s => s.set_strategy(strategy));
+        store
+    }
+}
+
+#[derive(Debug)]
+struct Body {
+    id: PolygonId,
+    /// The sum of all moves: current vertex = base vertex + offset, exactly.
+    offset: [f64; 2],
+    /// Box units per frame at speed 1.
+    velocity: [f64; 2],
+    /// Proportional to the area.
+    mass: f64,
+    /// Wire vertex id → vertex handle (`None` once removed). Ids are never reused.
+    ids: Vec<Option<VertexId>>,
+}
+
+/// Milliseconds spent in each part of a frame on the server.
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+pub struct Timing {
+    pub update_ms: f64,
+    pub broad_ms: f64,
+    pub narrow_ms: f64,
+    pub response_ms: f64,
+}
+
+/// What one frame changed, for the page.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Frame {
+    pub scene: u64,
+    pub frame: u64,
+    /// Whether the polygons moved (false while paused).
+    pub advanced: bool,
+    /// Per polygon, x then y: current vertex = base vertex + offset, exactly.
+    pub offsets: Vec<f64>,
+    /// Intersecting pairs of polygon indices `[i, j]`, `i < j`, sorted.
+    pub pairs: Vec<[usize; 2]>,
+    /// The contact normal of each pair, from `i` towards `j` (null when degenerate).
+    pub normals: Vec<Option<[f64; 2]>>,
+    /// Pairs whose boxes overlap.
+    pub candidates: usize,
+    /// Queries the store answered in this frame (box rejects included).
+    pub queries: u64,
+    pub timing: Timing,
+    /// What the planner did in this frame.
+    pub stats: PlannerStats,
+    /// What the planner did since the scene (or the precision) was set.
+    pub totals: PlannerStats,
+}
+
+/// An accepted edit, as the page applies it: points are base coordinates (current
+/// position minus the polygon's offset).
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Edit {
+    pub polygon: usize,
+    /// `move`, `insert` or `remove`.
+    pub kind: &'static str,
+    pub vertex: u32,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub after: Option<u32>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub point: Option<[f64; 2]>,
+}
+
+/// Why an edit did not happen.
+#[derive(Clone, Debug, PartialEq)]
+pub enum EditFailure {
+    /// The request names nothing valid (polygon index, vertex id) or a point outside
+    /// the area.
+    Invalid(String),
+    /// The store refused it; the text is the error's `Display`.
+    Refused(String),
+}
+
+/// The simulation of one page.
+#[derive(Debug)]
+pub struct Simulation {
+    settings: Settings,
+    store: Store,
+    bodies: Vec<Body>,
+    index: HashMap<PolygonId, usize>,
+    scene: u64,
+    frame: u64,
+}
+
+impl Simulation {
+    /// A new scene from `settings`, numbered `scene`.
+    ///
+    /// # Errors
+    /// The settings are out of bounds ([`Settings::validate`]).
+    pub fn new(settings: Settings, scene: u64) -> Result<Simulation, String> {
+        settings.validate()?;
+        let mut sim = Simulation {
+            settings,
+            store: Store::new(settings.precision, settings.strategy),
+            bodies: Vec::new(),
+            index: HashMap::new(),
+            scene,
+            frame: 0,
+        };
+        let mut rng = SmallRng::seed_from_u64(settings.seed);
+        for (points, velocity) in generate(&settings, &mut rng) {
+            let polygon = match LinkedPolygon::from_points(points.iter().copied()) {
+                Ok(p) => p,
+                // Snapping made some vertices collinear: keep their hull (still on the grid).
+                Err(_) => LinkedPolygon::from_convex(&convex_hull(&points).map_err(|e| e.to_string())?),
+            };
+            let ids = polygon.iter().map(|(v, _)| Some(v)).collect();
+            let mass = area(polygon.iter().map(|(_, p)| p));
+            let id = on_scene!(&mut sim.store, s => s.insert(polygon));
+            sim.index.insert(id, sim.bodies.len());
+            sim.bodies.push(Body {
+                id,
+                offset: [0.0, 0.0],
+                velocity,
+                mass,
+                ids,
+            });
+        }
+        Ok(sim)
+    }
+
+    pub fn settings(&self) -> Settings {
+        self.settings
+    }
+
+    pub fn scene(&self) -> u64 {
+        self.scene
+    }
+
+    pub fn frame_number(&self) -> u64 {
+        self.frame
+    }
+
+    pub fn len(&self) -> usize {
+        self.bodies.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.bodies.is_empty()
+    }
+
+    /// Changes what can change in place: strategy, speed, pause, and the precision (the
+    /// polygons move into a scene on the other kernel, handles and offsets unchanged;
+    /// the planner's counters start again).
+    ///
+    /// # Errors
+    /// The speed is out of bounds.
+    pub fn adjust(
+        &mut self,
+        strategy: Strategy,
+        precision: Precision,
+        speed: f64,
+        paused: bool,
+    ) -> Result<(), String> {
+        Settings {
+            speed,
+            ..self.settings
+        }
+        .validate()?;
+        if precision != self.settings.precision {
+            let mut store = Store::new(precision, strategy);
+            self.index.clear();
+            for (i, body) in self.bodies.iter_mut().enumerate() {
+                let polygon =
+                    on_scene!(&mut self.store, s => s.remove(body.id)).map_err(|e| e.to_string())?;
+                body.id = on_scene!(&mut store, s => s.insert(polygon));
+                self.index.insert(body.id, i);
+            }
+            self.store = store;
+        }
+        on_scene!(&mut self.store, s => s.set_strategy(strategy));
+        self.settings.strategy = strategy;
+        self.settings.precision = precision;
+        self.settings.speed = speed;
+        self.settings.paused = paused;
+        Ok(())
+    }
+
+    /// Every polygon's base vertices (counter-clockwise, wire ids 0, 1, ... in that order
+    /// for a new scene), as `x, y` pairs, with the count per polygon.
+    pub fn base_vertices(&self) -> (Vec<usize>, Vec<f64>) {
+        let mut sizes = Vec::with_capacity(self.bodies.len());
+        let mut coords = Vec::new();
+        for body in &self.bodies {
+            let polygon = on_scene!(&self.store, s => s.polygon(body.id)).expect("live polygon");
+            sizes.push(polygon.len());
+            for (_, p) in polygon.iter() {
+                coords.push(p.x - body.offset[0]);
+                coords.push(p.y - body.offset[1]);
+            }
+        }
+        (sizes, coords)
+    }
+
+    /// Every polygon's current vertices, counter-clockwise.
+    pub fn current_vertices(&self) -> Vec<Vec<Point>> {
+        self.bodies
+            .iter()
+            .map(|b| {
+                let polygon = on_scene!(&self.store, s => s.polygon(b.id)).expect("live polygon");
+                polygon.iter().map(|(_, p)| p).collect()
+            })
+            .collect()
+    }
+
+    /// The store's intersecting pairs as polygon indices, sorted (no timing, no motion).
+    pub fn store_pairs(&mut self) -> Vec<[usize; 2]> {
+        let pairs = on_scene!(&mut self.store, s => s.intersecting_pairs());
+        self.index_pairs(&pairs)
+    }
+
+    fn index_pairs(&self, pairs: &[(PolygonId, PolygonId)]) -> Vec<[usize; 2]> {
+        let mut out: Vec<[usize; 2]> = pairs
+            .iter()
+            .map(|(a, b)| {
+                let (i, j) = (self.index[a], self.index[b]);
+                [i.min(j), i.max(j)]
+            })
+            .collect();
+        out.sort_unstable();
+        out
+    }
+
+    /// One frame: moves the polygons (unless `advance` is false), asks the store for the
+    /// intersecting pairs and bounces the pairs that approach.
+    pub fn frame(&mut self, advance: bool) -> Frame {
+        let t0 = Instant::now();
+        if advance {
+            self.update();
+            self.frame += 1;
+        }
+        let t1 = Instant::now();
+        let before = on_scene!(&self.store, s => s.stats());
+        let candidates = on_scene!(&mut self.store, s => s.candidate_pairs()).len();
+        let t2 = Instant::now();
+        let found = on_scene!(&mut self.store, s => s.intersecting_pairs());
+        let pairs = self.index_pairs(&found);
+        let t3 = Instant::now();
+        let after = on_scene!(&self.store, s => s.stats());
+        let normals = self.respond(&pairs, advance);
+        let t4 = Instant::now();
+        let stats = stats_delta(after, before);
+        let ms = |a: Instant, b: Instant| (b - a).as_secs_f64() * 1e3;
+        Frame {
+            scene: self.scene,
+            frame: self.frame,
+            advanced: advance,
+            offsets: self.bodies.iter().flat_map(|b| b.offset).collect(),
+            pairs,
+            normals,
+            candidates,
+            queries: stats.box_rejects + stats.array_tests + stats.sampled_tests,
+            timing: Timing {
+                update_ms: ms(t0, t1),
+                broad_ms: ms(t1, t2),
+                narrow_ms: ms(t2, t3),
+                response_ms: ms(t3, t4),
+            },
+            stats,
+            totals: after,
+        }
+    }
+
+    fn update(&mut self) {
+        let speed = self.settings.speed;
+        for body in &mut self.bodies {
+            let bbox = on_scene!(&self.store, s => s.bounding_box(body.id)).expect("live polygon");
+            let mut d = [0.0; 2];
+            for axis in 0..2 {
+                let (lo, hi) = match axis {
+                    0 => (bbox.min.x, bbox.max.x),
+                    _ => (bbox.min.y, bbox.max.y),
+                };
+                let v = &mut body.velocity[axis];
+                let step = (*v * speed).clamp(-MAX_STEP, MAX_STEP);
+                if (lo + step < 0.0 && *v < 0.0) || (hi + step > WORLD[axis] && *v > 0.0) {
+                    *v = -*v;
+                }
+                d[axis] = *v * speed;
+            }
+            let len = d[0].hypot(d[1]);
+            if len > MAX_STEP {
+                d = [d[0] * MAX_STEP / len, d[1] * MAX_STEP / len];
+            }
+            let d = [snap(d[0]), snap(d[1])];
+            if d == [0.0, 0.0] {
+                continue;
+            }
+            // Exact by construction (module docs), so the store cannot refuse; if it
+            // did, the polygon would simply not move this frame.
+            if on_scene!(&mut self.store, s => s.translate(body.id, d[0], d[1])).is_ok() {
+                body.offset = [body.offset[0] + d[0], body.offset[1] + d[1]];
+            }
+        }
+    }
+
+    /// Contact normals for `pairs`; when the frame advanced, the elastic bounce of every
+    /// pair approaching along its normal.
+    fn respond(&mut self, pairs: &[[usize; 2]], bounce: bool) -> Vec<Option<[f64; 2]>> {
+        let mut walked: HashMap<usize, Vec<Point>> = HashMap::new();
+        let mut normals = Vec::with_capacity(pairs.len());
+        for &[i, j] in pairs {
+            for k in [i, j] {
+                walked.entry(k).or_insert_with(|| {
+                    let polygon =
+                        on_scene!(&self.store, s => s.polygon(self.bodies[k].id)).expect("live polygon");
+                    polygon.iter().map(|(_, p)| p).collect()
+                });
+            }
+            let n = contact_normal(&walked[&i], &walked[&j]);
+            normals.push(n);
+            if let (true, Some(n)) = (bounce, n) {
+                let (a, b) = (&self.bodies[i], &self.bodies[j]);
+                if let Some((va, vb)) = elastic(a.velocity, b.velocity, a.mass, b.mass, n) {
+                    self.bodies[i].velocity = clamp_speed(va);
+                    self.bodies[j].velocity = clamp_speed(vb);
+                }
+            }
+        }
+        normals
+    }
+
+    fn body(&self, polygon: usize) -> Result<&Body, EditFailure> {
+        self.bodies.get(polygon).ok_or_else(|| {
+            EditFailure::Invalid(format!(
+                "no polygon {polygon} (the scene has {} polygons, numbered from 0)",
+                self.bodies.len()
+            ))
+        })
+    }
+
+    fn vertex(&self, polygon: usize, vertex: u32) -> Result<VertexId, EditFailure> {
+        match self.body(polygon)?.ids.get(vertex as usize) {
+            Some(Some(v)) => Ok(*v),
+            Some(None) => Err(EditFailure::Invalid(format!(
+                "vertex {vertex} of polygon {polygon} was removed"
+            ))),
+            None => Err(EditFailure::Invalid(format!(
+                "polygon {polygon} has no vertex {vertex}"
+            ))),
+        }
+    }
+
+    /// Validates an edit target and snaps it to the grid.
+    fn target(point: [f64; 2]) -> Result<Point, EditFailure> {
+        for axis in 0..2 {
+            if !(AREA_MIN[axis]..=AREA_MAX[axis]).contains(&point[axis]) {
+                return Err(EditFailure::Invalid(format!(
+                    "point ({}, {}) is outside the area [{}, {}] × [{}, {}]",
+                    point[0], point[1], AREA_MIN[0], AREA_MAX[0], AREA_MIN[1], AREA_MAX[1]
+                )));
+            }
+        }
+        Ok(Point::new(snap(point[0]), snap(point[1])))
+    }
+
+    fn base(&self, polygon: usize, p: Point) -> [f64; 2] {
+        let o = self.bodies[polygon].offset;
+        [p.x - o[0], p.y - o[1]]
+    }
+
+    fn edited(&mut self, polygon: usize) {
+        let id = self.bodies[polygon].id;
+        let p = on_scene!(&self.store, s => s.polygon(id)).expect("live polygon");
+        self.bodies[polygon].mass = area(p.iter().map(|(_, p)| p));
+    }
+
+    /// Moves vertex `vertex` (a wire id) of polygon `polygon` to `to` (box coordinates,
+    /// snapped to the grid) through [`Scene::move_vertex`]. O(1) plus the polygon's new
+    /// mass, O(n).
+    ///
+    /// # Errors
+    /// `Invalid` for an unknown polygon or vertex or a point outside the area; `Refused`
+    /// when the store refuses the move (it would break convexity).
+    pub fn move_vertex(&mut self, polygon: usize, vertex: u32, to: [f64; 2]) -> Result<Edit, EditFailure> {
+        let v = self.vertex(polygon, vertex)?;
+        let p = Self::target(to)?;
+        let id = self.bodies[polygon].id;
+        on_scene!(&mut self.store, s => s.move_vertex(id, v, p)).map_err(refused)?;
+        self.edited(polygon);
+        Ok(Edit {
+            polygon,
+            kind: "move",
+            vertex,
+            after: None,
+            point: Some(self.base(polygon, p)),
+        })
+    }
+
+    /// Inserts `point` after vertex `after` (its counter-clockwise successor) through
+    /// [`Scene::insert_vertex`]; the new vertex takes the polygon's next wire id.
+    ///
+    /// # Errors
+    /// As [`move_vertex`](Self::move_vertex), and `Invalid` once the polygon has handed
+    /// out [`MAX_VERTEX_IDS`] ids.
+    pub fn insert_vertex(
+        &mut self,
+        polygon: usize,
+        after: u32,
+        point: [f64; 2],
+    ) -> Result<Edit, EditFailure> {
+        let a = self.vertex(polygon, after)?;
+        let p = Self::target(point)?;
+        let next = self.bodies[polygon].ids.len();
+        if next >= MAX_VERTEX_IDS {
+            return Err(EditFailure::Invalid(format!(
+                "polygon {polygon} has used all its {MAX_VERTEX_IDS} vertex ids; start a new scene"
+            )));
+        }
+        let id = self.bodies[polygon].id;
+        if on_scene!(&self.store, s => s.polygon(id)).map_or(0, |p| p.len()) >= MAX_VERTICES {
+            return Err(EditFailure::Invalid(format!(
+                "polygon {polygon} already has {MAX_VERTICES} vertices, the page's limit"
+            )));
+        }
+        let v = on_scene!(&mut self.store, s => s.insert_vertex(id, a, p)).map_err(refused)?;
+        self.bodies[polygon].ids.push(Some(v));
+        self.edited(polygon);
+        Ok(Edit {
+            polygon,
+            kind: "insert",
+            vertex: next as u32,
+            after: Some(after),
+            point: Some(self.base(polygon, p)),
+        })
+    }
+
+    /// Removes vertex `vertex` through [`Scene::remove_vertex`].
+    ///
+    /// # Errors
+    /// `Invalid` for an unknown polygon or vertex; `Refused` when only three remain.
+    pub fn remove_vertex(&mut self, polygon: usize, vertex: u32) -> Result<Edit, EditFailure> {
+        let v = self.vertex(polygon, vertex)?;
+        let id = self.bodies[polygon].id;
+        on_scene!(&mut self.store, s => s.remove_vertex(id, v)).map_err(refused)?;
+        self.bodies[polygon].ids[vertex as usize] = None;
+        self.edited(polygon);
+        Ok(Edit {
+            polygon,
+            kind: "remove",
+            vertex,
+            after: None,
+            point: None,
+        })
+    }
+
+    /// Checks that every store vertex is its base vertex plus the offset and lies on the
+    /// grid (the module docs' claim), and the store's own invariants.
+    pub fn debug_validate(&self, base: &[f64]) -> Result<(), String> {
+        on_scene!(&self.store, s => s.debug_validate())?;
+        let mut k = 0;
+        for (i, body) in self.bodies.iter().enumerate() {
+            let polygon = on_scene!(&self.store, s => s.polygon(body.id)).map_err(|e| e.to_string())?;
+            for (_, p) in polygon.iter() {
+                let (bx, by) = (base[k], base[k + 1]);
+                k += 2;
+                if p.x != bx + body.offset[0] || p.y != by + body.offset[1] {
+                    return Err(format!(
+                        "polygon {i}: vertex {p:?} is not base ({bx}, {by}) + offset"
+                    ));
+                }
+                if snap(p.x) != p.x || snap(p.y) != p.y {
+                    return Err(format!("polygon {i}: vertex {p:?} is off the grid"));
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+fn refused(e: SceneError) -> EditFailure {
+    match e {
+        SceneError::Edit(crate::EditError::StaleHandle) | SceneError::StalePolygon => {
+            EditFailure::Invalid(e.to_string())
+        }
+        e => EditFailure::Refused(e.to_string()),
+    }
+}
+
+fn stats_delta(a: PlannerStats, b: PlannerStats) -> PlannerStats {
+    PlannerStats {
+        box_rejects: a.box_rejects - b.box_rejects,
+        array_tests: a.array_tests - b.array_tests,
+        sampled_tests: a.sampled_tests - b.sampled_tests,
+        conversions: a.conversions - b.conversions,
+        throwaway_conversions: a.throwaway_conversions - b.throwaway_conversions,
+        invalidations: a.invalidations - b.invalidations,
+    }
+}
+
+/// The area of a polygon (shoelace), at least the smallest positive `f64`.
+fn area(points: impl Iterator<Item = Point>) -> f64 {
+    let pts: Vec<Point> = points.collect();
+    let n = pts.len();
+    let twice: f64 = (0..n)
+        .map(|i| {
+            let (a, b) = (pts[i], pts[(i + 1) % n]);
+            a.x * b.y - a.y * b.x
+        })
+        .sum();
+    (0.5 * twice).abs().max(f64::MIN_POSITIVE)
+}
+
+/// The elastic collision of bodies with velocities `va`, `vb` and masses `ma`, `mb`
+/// along the unit normal `n` (from a to b): the new velocities, or `None` when they do
+/// not approach along `n`. Momentum and kinetic energy are conserved.
+pub fn elastic(va: [f64; 2], vb: [f64; 2], ma: f64, mb: f64, n: [f64; 2]) -> Option<([f64; 2], [f64; 2])> {
+    let rel = (vb[0] - va[0]) * n[0] + (vb[1] - va[1]) * n[1];
+    // NaN or non-negative: not approaching.
+    if rel.is_nan() || rel >= 0.0 {
+        return None;
+    }
+    let total = ma + mb;
+    let (ka, kb) = (2.0 * mb / total * rel, 2.0 * ma / total * rel);
+    Some((
+        [va[0] + ka * n[0], va[1] + ka * n[1]],
+        [vb[0] - kb * n[0], vb[1] - kb * n[1]],
+    ))
+}
+
+fn clamp_speed(v: [f64; 2]) -> [f64; 2] {
+    let len = v[0].hypot(v[1]);
+    if len > MAX_VELOCITY {
+        [v[0] * MAX_VELOCITY / len, v[1] * MAX_VELOCITY / len]
+    } else {
+        v
+    }
+}
+
+/// The polygons of a new scene (on the grid, counter-clockwise) and their velocities:
+/// ellipses of random axes and rotation with `vertices` vertices at equal parameter
+/// steps, sized so that they cover about a fifth of the box, on a jittered grid of cells.
+fn generate(settings: &Settings, rng: &mut SmallRng) -> Vec<(Vec<Point>, [f64; 2])> {
+    let count = settings.polygons;
+    let [w, h] = WORLD;
+    let cols = ((count as f64 * w / h).sqrt().ceil() as usize).max(1);
+    let rows = count.div_ceil(cols);
+    let (cw, ch) = (w / cols as f64, h / rows as f64);
+    let area_each = 0.2 * w * h / count as f64;
+    (0..count)
+        .map(|k| {
+            let aspect: f64 = rng.random_range(0.45..=1.0);
+            let a = (area_each / (std::f64::consts::PI * aspect))
+                .sqrt()
+                .min(0.45 * cw.max(ch))
+                .min(0.25 * h);
+            let b = a * aspect;
+            let (col, row) = (k % cols, k / cols);
+            let slack = |cell: f64| (0.5 * cell - a).max(0.0);
+            let cx = (col as f64 + 0.5) * cw + rng.random_range(-1.0..=1.0) * slack(cw);
+            let cy = (row as f64 + 0.5) * ch + rng.random_range(-1.0..=1.0) * slack(ch);
+            let (cx, cy) = (cx.clamp(a, w - a), cy.clamp(a, h - a));
+            let rot: f64 = rng.random_range(0.0..TAU);
+            let phase: f64 = rng.random_range(0.0..TAU);
+            let (c, s) = (rot.cos(), rot.sin());
+            let n = settings.vertices;
+            let points = (0..n)
+                .map(|i| {
+                    let t = phase + TAU * i as f64 / n as f64;
+                    let (x, y) = (a * t.cos(), b * t.sin());
+                    Point::new(snap(cx + c * x - s * y), snap(cy + s * x + c * y))
+                })
+                .collect();
+            let dir: f64 = rng.random_range(0.0..TAU);
+            let speed = BASE_SPEED * rng.random_range(0.6..=1.4);
+            (points, [speed * dir.cos(), speed * dir.sin()])
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ConvexPolygon;
+    use crate::intersect::{ArrayIntersection, Linear};
+
+    fn reference_pairs(polygons: &[Vec<Point>]) -> Vec<[usize; 2]> {
+        let convex: Vec<ConvexPolygon> = polygons
+            .iter()
+            .map(|p| ConvexPolygon::new(p.iter().copied()).expect("valid"))
+            .collect();
+        let mut out = Vec::new();
+        for i in 0..convex.len() {
+            for j in i + 1..convex.len() {
+                if Linear.intersects(&convex[i], &convex[j]) {
+                    out.push([i, j]);
+                }
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn settings_out_of_bounds_are_refused_with_the_field_named() {
+        let ok = Settings::default();
+        assert!(ok.validate().is_ok());
+        for (bad, word) in [
+            (Settings { polygons: 0, ..ok }, "polygons"),
+            (Settings { polygons: 1001, ..ok }, "polygons"),
+            (Settings { vertices: 2, ..ok }, "vertices"),
+            (
+                Settings {
+                    vertices: 65_537,
+                    ..ok
+                },
+                "vertices",
+            ),
+            (
+                Settings {
+                    polygons: 100,
+                    vertices: 65_536,
+                    ..ok
+                },
+                "in all",
+            ),
+            (Settings { speed: -1.0, ..ok }, "speed"),
+            (
+                Settings {
+                    speed: f64::NAN,
+                    ..ok
+                },
+                "speed",
+            ),
+        ] {
+            let e = bad.validate().expect_err("out of bounds");
+            assert!(e.contains(word), "{e}");
+        }
+    }
+
+    /// Frames of the default scene, under every strategy and both precisions: the
+    /// store's coordinates stay base + offset exactly and on the grid, and the pairs the
+    /// frame reports are the exact reference's pairs on those coordinates.
+    #[test]
+    fn frames_keep_exact_positions_and_report_the_reference_pairs() {
+        for strategy in Strategy::ALL {
+            for precision in Precision::ALL {
+                let settings = Settings {
+                    polygons: 24,
+                    vertices: 7,
+                    seed: 3,
+                    strategy,
+                    precision,
+                    speed: 3.0,
+                    ..Settings::default()
+                };
+                let mut sim = Simulation::new(settings, 1).expect("valid settings");
+                let (_, base) = sim.base_vertices();
+                let mut collided = 0;
+                for _ in 0..120 {
+                    let f = sim.frame(true);
+                    let now = sim.current_vertices();
+                    if precision == Precision::Exact {
+                        assert_eq!(f.pairs, reference_pairs(&now), "{strategy:?} frame {}", f.frame);
+                    }
+                    assert_eq!(f.offsets.len(), 2 * sim.len());
+                    collided += f.pairs.len();
+                }
+                sim.debug_validate(&base).expect("exact positions");
+                assert!(collided > 0, "the scene collides");
+            }
+        }
+    }
+
+    #[test]
+    fn the_default_scene_collides_within_a_second() {
+        let mut sim = Simulation::new(Settings::default(), 1).expect("valid");
+        let first = (0..60).find(|_| !sim.frame(true).pairs.is_empty());
+        assert!(first.is_some(), "no collision in 60 frames");
+    }
+
+    #[test]
+    fn polygons_stay_in_the_box() {
+        let mut sim = Simulation::new(
+            Settings {
+                polygons: 10,
+                speed: MAX_SPEED,
+                ..Settings::default()
+            },
+            1,
+        )
+        .expect("valid");
+        for _ in 0..2000 {
+            sim.frame(true);
+        }
+        for poly in sim.current_vertices() {
+            for p in poly {
+                assert!((-MAX_STEP..=WORLD[0] + MAX_STEP).contains(&p.x), "{p:?}");
+                assert!((-MAX_STEP..=WORLD[1] + MAX_STEP).contains(&p.y), "{p:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn elastic_bounce_conserves_momentum_and_energy() {
+        let (va, vb, ma, mb) = ([2.0, 0.5], [-1.0, 0.25], 3.0, 1.5);
+        let n = [0.6, 0.8];
+        let (ua, ub) = elastic(va, vb, ma, mb, n).expect("approaching");
+        for axis in 0..2 {
+            let before = ma * va[axis] + mb * vb[axis];
+            let after = ma * ua[axis] + mb * ub[axis];
+            assert!((before - after).abs() < 1e-12);
+        }
+        let energy =
+            |a: [f64; 2], b: [f64; 2]| ma * (a[0] * a[0] + a[1] * a[1]) + mb * (b[0] * b[0] + b[1] * b[1]);
+        assert!((energy(va, vb) - energy(ua, ub)).abs() < 1e-12);
+        let rel_after = (ub[0] - ua[0]) * n[0] + (ub[1] - ua[1]) * n[1];
+        assert!(rel_after > 0.0, "they separate afterwards");
+        assert_eq!(
+            elastic(ua, ub, ma, mb, n),
+            None,
+            "separating pairs do not bounce again"
+        );
+    }
+
+    #[test]
+    fn edits_go_through_the_store_and_keep_positions_exact() {
+        let settings = Settings {
+            polygons: 4,
+            vertices: 8,
+            ..Settings::default()
+        };
+        let mut sim = Simulation::new(settings, 1).expect("valid");
+        for _ in 0..10 {
+            sim.frame(true);
+        }
+        let (_, mut base) = sim.base_vertices();
+        let now = sim.current_vertices();
+        // Pull vertex 0 of polygon 0 outwards a little, away from the centre.
+        let c = now[0]
+            .iter()
+            .fold((0.0, 0.0), |s, p| (s.0 + p.x / 8.0, s.1 + p.y / 8.0));
+        let v = now[0][0];
+        let to = [v.x + 0.1 * (v.x - c.0), v.y + 0.1 * (v.y - c.1)];
+        let e = sim.move_vertex(0, 0, to).expect("valid move");
+        let p = e.point.expect("a point");
+        base[0] = p[0];
+        base[1] = p[1];
+        sim.debug_validate(&base).expect("base + offset");
+        // Into the centre: refused with the store's reason.
+        match sim.move_vertex(0, 0, [c.0, c.1]) {
+            Err(EditFailure::Refused(r)) => assert!(r.contains("non-convex"), "{r}"),
+            other => panic!("expected a refusal, got {other:?}"),
+        }
+        // Remove down to three, then refused.
+        for w in 3..8 {
+            sim.remove_vertex(0, w).expect("removal above three vertices");
+        }
+        assert!(matches!(sim.remove_vertex(0, 0), Err(EditFailure::Refused(_))));
+        assert!(matches!(sim.remove_vertex(0, 5), Err(EditFailure::Invalid(m)) if m.contains("was removed")));
+        assert!(
+            matches!(sim.remove_vertex(0, 99), Err(EditFailure::Invalid(m)) if m.contains("no vertex 99"))
+        );
+        assert!(
+            matches!(sim.remove_vertex(9, 0), Err(EditFailure::Invalid(m)) if m.contains("no polygon 9"))
+        );
+        assert!(
+            matches!(sim.move_vertex(1, 0, [1e9, 0.0]), Err(EditFailure::Invalid(m)) if m.contains("outside"))
+        );
+    }
+
+    /// Inserting and removing one vertex over and over uses up the polygon's ids (they
+    /// are never reused); then insertions are refused with a message, removals go on.
+    #[test]
+    fn vertex_ids_are_bounded() {
+        let mut sim = Simulation::new(
+            Settings {
+                polygons: 1,
+                ..Settings::default()
+            },
+            1,
+        )
+        .expect("valid");
+        let poly = &sim.current_vertices()[0];
+        let (a, b) = (poly[0], poly[1]);
+        let (ex, ey) = (b.x - a.x, b.y - a.y);
+        // Just outside the middle of edge 0 → 1 (outward is to the right of a → b).
+        let out = [0.5 * (a.x + b.x) + 0.01 * ey, 0.5 * (a.y + b.y) - 0.01 * ex];
+        let first = sim.settings().vertices as u32;
+        for k in first..MAX_VERTEX_IDS as u32 {
+            let e = sim.insert_vertex(0, 0, out).expect("valid insertion");
+            assert_eq!(e.vertex, k);
+            sim.remove_vertex(0, k).expect("removal");
+        }
+        match sim.insert_vertex(0, 0, out) {
+            Err(EditFailure::Invalid(m)) => assert!(m.contains("used all its"), "{m}"),
+            other => panic!("expected the id limit, got {other:?}"),
+        }
+        sim.remove_vertex(0, 5).expect("removals still work");
+    }
+
+    #[test]
+    fn switching_precision_keeps_polygons_handles_and_offsets() {
+        let mut sim = Simulation::new(Settings::default(), 1).expect("valid");
+        for _ in 0..5 {
+            sim.frame(true);
+        }
+        let before = sim.current_vertices();
+        let s = sim.settings();
+        sim.adjust(Strategy::Sampled, Precision::Fast, 2.0, true)
+            .expect("valid");
+        assert_eq!(sim.current_vertices(), before);
+        assert_eq!(sim.settings().precision, Precision::Fast);
+        let f = sim.frame(false);
+        assert_eq!(f.totals.conversions, 0, "the sampled strategy converts nothing");
+        sim.remove_vertex(0, 1)
+            .expect("the old wire ids still name vertices");
+        sim.adjust(s.strategy, Precision::Exact, 1.0, false)
+            .expect("valid");
+        assert!(sim.adjust(s.strategy, Precision::Exact, 9.0, false).is_err());
+    }
+}

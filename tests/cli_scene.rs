@@ -1,0 +1,568 @@
+//! `polysect scene`, and what every line protocol of the binary promises: a reply per
+//! line as soon as it is computed (a client can wait for each), hostile input answered
+//! line by line, output failures and closed pipes, bounded memory in long sessions.
+
+mod common;
+use common::run;
+use polysect::protocol::scene::{SceneOptions, SceneSession};
+use serde_json::{Value, json};
+use std::io::{self, BufRead, BufReader, Read, Write};
+use std::process::{Command, Stdio};
+use std::sync::mpsc;
+use std::time::Duration;
+
+fn replies(args: &[&str], input: &str) -> Vec<Value> {
+    let (code, out, err) = run(args, input.as_bytes());
+    assert_eq!(code, 0, "stderr: {err}");
+    out.lines()
+        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{e}: {l}")))
+        .collect()
+}
+
+/// The README's session.
+const SESSION: &str = r#"{"op": "add", "name": "square", "points": [[0,0],[4,0],[4,4],[0,4]]}
+{"op": "add", "name": "tri", "points": [[5,1],[5,1],[7,1],[6,3],[5,1]]}
+{"id": 1, "op": "intersects", "a": "square", "b": "tri"}
+{"op": "translate", "name": "tri", "by": [-1, 0]}
+{"id": 2, "op": "intersects", "a": "square", "b": "tri"}
+{"op": "insert", "name": "square", "after": 1, "point": [5, 2]}
+{"op": "vertices", "name": "square"}
+{"op": "pairs"}
+{"op": "remove", "name": "square", "vertex": 7}
+{"op": "move", "name": "tri", "vertex": 0, "to": [3, 3]}
+{"op": "insert", "name": "tri", "after": 0, "point": [4.5, 2]}
+{"op": "drop", "name": "square"}
+{"op": "pairs"}
+"#;
+
+#[test]
+fn the_readme_session() {
+    for strategy in ["planner", "sampled", "convert", "cached"] {
+        for precision in ["exact", "fast"] {
+            let got = replies(
+                &[
+                    "scene",
+                    "--strategy",
+                    strategy,
+                    "--precision",
+                    precision,
+                    "--seed",
+                    "7",
+                ],
+                SESSION,
+            );
+            let want = [
+                json!({"ok": true}),
+                json!({"ok": true}),
+                json!({"id": 1, "intersects": false}),
+                json!({"ok": true}),
+                json!({"id": 2, "intersects": true}),
+                json!({"vertex": 4}),
+                json!({"ids": [0, 1, 4, 2, 3], "points": [[0.0, 0.0], [4.0, 0.0], [5.0, 2.0], [4.0, 4.0], [0.0, 4.0]]}),
+                json!({"pairs": [["square", "tri"]]}),
+                json!({"error": "line 9: polygon \"square\" has no vertex 7 (no such id was given)"}),
+                json!({"ok": true}),
+                json!({"error": "line 11: insert refused: placing a vertex at (4.5, 2) would make the polygon non-convex"}),
+                json!({"ok": true}),
+                json!({"pairs": []}),
+            ];
+            assert_eq!(got, want, "{strategy} {precision}");
+        }
+    }
+    // The session with the README's options shown in its text.
+    let readme = include_str!("../README.md");
+    assert!(readme.contains(r#"{"op": "insert", "name": "square", "after": 1, "point": [5, 2]}"#));
+    assert!(
+        readme.contains(
+            r#"{"ids": [0,1,4,2,3], "points": [[0.0,0.0],[4.0,0.0],[5.0,2.0],[4.0,4.0],[0.0,4.0]]}"#
+        )
+    );
+}
+
+#[test]
+fn usage_errors() {
+    let (code, _, err) = run(&["scene", "--certificate"], b"");
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("--certificate") && err.contains("not available"),
+        "{err}"
+    );
+    let (code, _, err) = run(&["scene", "--certificate", "/no/such/file"], b"");
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("--certificate") && err.contains("not available"),
+        "{err}"
+    );
+    let (code, _, err) = run(&["scene", "--strategy", "eager"], b"");
+    assert_eq!(code, 2);
+    assert!(err.contains("planner") && err.contains("cached"), "{err}");
+    let (code, _, err) = run(&["scene", "--seed", "x"], b"");
+    assert_eq!(code, 2, "{err}");
+    let (code, _, err) = run(&["scene", "/no/such/file"], b"");
+    assert_eq!(code, 1);
+    assert!(err.contains("cannot read"), "{err}");
+}
+
+/// Runs the binary as a co-process: writes one line, waits (at most 30 s) for its reply,
+/// and only then writes the next, keeping standard input open throughout.
+fn converse(args: &[&str], lines: &[String]) -> Vec<String> {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_polysect"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .expect("the binary starts");
+    let mut stdin = child.stdin.take().unwrap();
+    let stdout = child.stdout.take().unwrap();
+    let (tx, rx) = mpsc::channel();
+    std::thread::spawn(move || {
+        for line in BufReader::new(stdout).lines() {
+            if tx.send(line).is_err() {
+                break;
+            }
+        }
+    });
+    let mut got = Vec::new();
+    for line in lines {
+        stdin.write_all(line.as_bytes()).unwrap();
+        stdin.write_all(b"\n").unwrap();
+        stdin.flush().unwrap();
+        match rx.recv_timeout(Duration::from_secs(30)) {
+            Ok(reply) => got.push(reply.unwrap()),
+            Err(_) => {
+                let _ = child.kill();
+                panic!("no reply to {line:?} while standard input stays open");
+            }
+        }
+    }
+    drop(stdin);
+    assert!(child.wait().unwrap().success());
+    got
+}
+
+#[test]
+fn each_reply_comes_while_the_input_stays_open() {
+    let session: Vec<String> = SESSION.lines().map(String::from).collect();
+    let got = converse(&["scene"], &session);
+    assert_eq!(got.len(), session.len());
+    assert_eq!(got[4], r#"{"id": 2, "intersects": true}"#);
+    let pair = r#"{"id": "x", "p": [[0,0],[2,0],[2,2],[0,2]], "q": [[1,1],[3,1],[3,3]]}"#.to_string();
+    let bad = "not json".to_string();
+    let got = converse(&["check"], &[pair.clone(), bad.clone(), pair.clone()]);
+    assert_eq!(got[0], r#"{"id": "x", "intersects": true}"#);
+    assert!(
+        got[1].starts_with(r#"{"error": "line 2, column 1: "#),
+        "{}",
+        got[1]
+    );
+    let got = converse(&["crossings"], &[pair.clone(), bad, pair]);
+    assert_eq!(got[2], r#"{"id": "x", "points": [[2.0,1.0],[2.0,2.0]]}"#);
+}
+
+#[test]
+fn bad_lines_get_one_error_line_each_and_change_nothing() {
+    let add = r#"{"op": "add", "name": "a", "points": [[0,0],[1,0],[0,1]]}"#;
+    let cases: &[(&str, &str)] = &[
+        (r#"{"op": "explode", "name": "a"}"#, r#"unknown op \"explode\""#),
+        (
+            r#"{"op": 3, "name": "a"}"#,
+            "`op` must be a string, found a number",
+        ),
+        (r#"{"name": "a"}"#, "missing field `op`"),
+        (
+            r#"{"op": "add", "name": "b"}"#,
+            "op `add` needs the field `points`",
+        ),
+        (
+            r#"{"op": "add", "points": [[0,0],[1,0],[0,1]]}"#,
+            "op `add` needs the field `name`",
+        ),
+        (
+            r#"{"op": "add", "name": "a", "points": [[5,5],[6,5],[5,6]]}"#,
+            r#"the name \"a\" is in use"#,
+        ),
+        (
+            r#"{"op": "add", "name": "b", "points": [[0,0],[1,1],[2,2]]}"#,
+            "points: all vertices lie on one line",
+        ),
+        (
+            r#"{"op": "add", "name": "b", "points": "[[0,0]]"}"#,
+            "`points` must be an array",
+        ),
+        (
+            r#"{"op": "add", "name": ["b"], "points": [[0,0],[1,0],[0,1]]}"#,
+            "`name` must be a string, found an array",
+        ),
+        (
+            r#"{"op": "drop", "name": null}"#,
+            "`name` must be a string, found null",
+        ),
+        (
+            r#"{"op": "drop", "name": 1}"#,
+            "`name` must be a string, found a number",
+        ),
+        (r#"{"op": "drop", "name": "zz"}"#, r#"no polygon is named \"zz\""#),
+        (
+            r#"{"op": "insert", "name": "a", "after": "0", "point": [1, 1]}"#,
+            "`after` must be an integer vertex id, found a string",
+        ),
+        (
+            r#"{"op": "insert", "name": "a", "after": 0.0, "point": [1, 1]}"#,
+            "without fraction or exponent",
+        ),
+        (
+            r#"{"op": "insert", "name": "a", "after": 1e0, "point": [1, 1]}"#,
+            "without fraction or exponent",
+        ),
+        (
+            r#"{"op": "insert", "name": "a", "after": -1, "point": [1, 1]}"#,
+            "an id is not negative",
+        ),
+        (
+            r#"{"op": "insert", "name": "a", "after": 99999999999999999999999, "point": [1, 1]}"#,
+            "no vertex has an id this large",
+        ),
+        (
+            r#"{"op": "insert", "name": "a", "after": 0, "point": [1, -1, 0]}"#,
+            "`point` must be a point [x, y], found 3 numbers",
+        ),
+        (
+            r#"{"op": "insert", "name": "a", "after": 0, "point": {"x": 1, "y": -1}}"#,
+            "`point` must be a point [x, y], found an object",
+        ),
+        (
+            r#"{"op": "insert", "name": "a", "after": 0}"#,
+            "op `insert` needs the field `point`",
+        ),
+        (
+            r#"{"op": "insert", "name": "a", "after": 0, "point": [0.5, 0]}"#,
+            "insert refused",
+        ),
+        (
+            r#"{"op": "insert", "name": "a", "after": 3, "point": [1, -1]}"#,
+            r#"polygon \"a\" has no vertex 3 (no such id was given)"#,
+        ),
+        (
+            r#"{"op": "remove", "name": "a", "vertex": 0}"#,
+            "remove refused: a polygon keeps at least 3 vertices",
+        ),
+        (
+            r#"{"op": "remove", "name": "a", "vertex": true}"#,
+            "`vertex` must be an integer vertex id, found a boolean",
+        ),
+        (
+            r#"{"op": "move", "name": "a", "vertex": 1, "to": [-1, 2]}"#,
+            "move refused",
+        ),
+        (
+            r#"{"op": "move", "name": "a", "vertex": 1, "to": [1e400, 0]}"#,
+            "beyond the f64 range",
+        ),
+        (
+            r#"{"op": "translate", "name": "a", "by": [1.7976931348623157e308, 0]}"#,
+            "translation refused: rounding",
+        ),
+        (
+            r#"{"op": "translate", "name": "a", "by": [1267650600228229401496703205376, 0]}"#,
+            "translation refused: rounding",
+        ),
+        (
+            r#"{"op": "translate", "name": "a", "by": ["1", 0]}"#,
+            "`by`[0] must be a number",
+        ),
+        (
+            r#"{"op": "intersects", "a": "a"}"#,
+            "op `intersects` needs the field `b`",
+        ),
+        (
+            r#"{"op": "intersects", "a": "a", "b": "nope"}"#,
+            r#"no polygon is named \"nope\""#,
+        ),
+        (
+            r#"{"op": "vertices", "name": "a", "name": "a"}"#,
+            "repeated key `name`",
+        ),
+        (
+            r#"{"op": "drop", "name": "a", "op": "pairs"}"#,
+            "repeated key `op`",
+        ),
+        (r#"["drop", "a"]"#, "expected a JSON object"),
+        (
+            r#"{"op": "drop", "name": "a"} {"op": "pairs"}"#,
+            "trailing characters",
+        ),
+        ("", "empty line"),
+        ("{\"op\": \"drop\", \"name\": \"\\ud800\"}", "unpaired surrogate"),
+    ];
+    let mut input = format!("{add}\n");
+    for (line, _) in cases {
+        input.push_str(line);
+        input.push('\n');
+    }
+    input.push_str("{\"op\": \"vertices\", \"name\": \"a\"}\n");
+    let got = replies(&["scene"], &input);
+    assert_eq!(got.len(), cases.len() + 2);
+    assert_eq!(got[0], json!({"ok": true}));
+    for (i, (line, needle)) in cases.iter().enumerate() {
+        let message = got[i + 1]["error"]
+            .as_str()
+            .unwrap_or_else(|| panic!("{line} -> {}", got[i + 1]));
+        assert!(message.starts_with(&format!("line {}", i + 2)), "{message}");
+        let needle = needle.replace("\\\"", "\"");
+        assert!(
+            message.contains(&needle),
+            "{line}\n -> {message}\n wants {needle}"
+        );
+    }
+    assert_eq!(
+        got.last().unwrap(),
+        &json!({"ids": [0, 1, 2], "points": [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]})
+    );
+}
+
+#[test]
+fn hostile_lines_never_crash_a_session() {
+    let nested = format!("{}{}", "[".repeat(100_000), "]".repeat(100_000));
+    let garbage = "x".repeat(2_000_000);
+    let lines = [
+        nested.clone(),
+        format!(r#"{{"op": "pairs", "junk": {nested}}}"#),
+        format!(r#"{{"op": "add", "name": "{garbage}", "points": [[0,0],[1,0],[0,1]]}}"#),
+        garbage.clone(),
+        r#"{"op": "add", "name": "a", "points": [[0,0],[1,0],[0,"#.to_string(),
+        format!(r#"{{"op": "pairs", "id": "{}"}}"#, "\\u00e9".repeat(50_000)),
+        r#"{"op": "pairs"}"#.to_string(),
+    ];
+    let input = lines.join("\n");
+    let (code, out, _) = run(&["scene"], input.as_bytes());
+    assert_eq!(code, 0);
+    let got: Vec<&str> = out.lines().collect();
+    assert_eq!(got.len(), lines.len());
+    assert!(got[0].contains("expected a JSON object"));
+    assert!(got[1].starts_with(r#"{"pairs": []"#));
+    assert!(got[2].starts_with(r#"{"ok": true}"#));
+    assert!(got[3].contains("invalid JSON"));
+    assert!(got[4].contains("invalid JSON"));
+    assert!(got[5].ends_with(r#", "pairs": []}"#));
+    assert_eq!(got[6], r#"{"pairs": []}"#);
+}
+
+/// Produces `count` lines from `make` on demand, so a long session needs no big buffer.
+struct Lines<F: FnMut(usize) -> String> {
+    make: F,
+    next: usize,
+    count: usize,
+    pending: Vec<u8>,
+    at: usize,
+}
+
+impl<F: FnMut(usize) -> String> Read for Lines<F> {
+    fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+        if self.at == self.pending.len() {
+            if self.next == self.count {
+                return Ok(0);
+            }
+            self.pending = (self.make)(self.next).into_bytes();
+            self.pending.push(b'\n');
+            self.at = 0;
+            self.next += 1;
+        }
+        let n = buf.len().min(self.pending.len() - self.at);
+        buf[..n].copy_from_slice(&self.pending[self.at..self.at + n]);
+        self.at += n;
+        Ok(n)
+    }
+}
+
+/// Counts reply lines and the errors among them.
+#[derive(Default)]
+struct Tally {
+    lines: usize,
+    errors: usize,
+    partial: Vec<u8>,
+}
+
+impl Write for Tally {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        for &b in buf {
+            if b == b'\n' {
+                self.lines += 1;
+                self.errors += usize::from(self.partial.windows(8).any(|w| w == b"\"error\":"));
+                self.partial.clear();
+            } else if self.partial.len() < 64 {
+                self.partial.push(b);
+            }
+        }
+        Ok(buf.len())
+    }
+    fn flush(&mut self) -> io::Result<()> {
+        Ok(())
+    }
+}
+
+#[test]
+fn a_million_ops_in_one_session_keep_the_maps_bounded() {
+    let mut session = SceneSession::new(SceneOptions {
+        seed: Some(1),
+        ..SceneOptions::default()
+    })
+    .unwrap();
+    let mut tally = Tally::default();
+    let count = 1_000_000;
+    // Cycles of four lines: insert a vertex, query, remove it, list the pairs; every
+    // 1,000 lines the polygon is added afresh and dropped at the end; now and then a
+    // stale id or a bad line.
+    let make = |i: usize| -> String {
+        let (block, j) = (i % 1000, (i % 1000) / 4);
+        let id = 3 + j - usize::from(j > 125); // the id this cycle's insert got
+        match (block, i % 4) {
+            (0, _) => r#"{"op": "add", "name": "sq", "points": [[0,0],[4,0],[4,4],[0,4]]}"#.to_string(),
+            (999, _) => r#"{"op": "drop", "name": "sq"}"#.to_string(),
+            (500, _) => r#"{"op": "insert", "name": "sq", "after": "0", "point": [2, -1]}"#.to_string(),
+            (_, 0) => format!(
+                r#"{{"op": "insert", "name": "sq", "after": 0, "point": [2, -{}]}}"#,
+                1 + j % 7
+            ),
+            (_, 1) => r#"{"op": "intersects", "a": "sq", "b": "sq"}"#.to_string(),
+            (_, 2) => format!(r#"{{"op": "remove", "name": "sq", "vertex": {id}}}"#),
+            _ if j % 8 == 0 => format!(r#"{{"op": "remove", "name": "sq", "vertex": {}}}"#, id - 1),
+            _ => r#"{"op": "pairs"}"#.to_string(),
+        }
+    };
+    let input = Lines {
+        make,
+        next: 0,
+        count,
+        pending: Vec::new(),
+        at: 0,
+    };
+    session.run(input, &mut tally).unwrap();
+    assert_eq!(tally.lines, count);
+    // The bad lines, the stale ids and the removals from the triangle: about 3.4%.
+    assert!(
+        tally.errors > count / 50 && tally.errors < count / 20,
+        "{} errors",
+        tally.errors
+    );
+    session.debug_validate().unwrap();
+    // The session maps one id per live vertex, whatever the history.
+    assert_eq!(
+        session.mapped_vertices(),
+        0,
+        "every polygon was dropped at the end"
+    );
+    assert!(session.scene().is_empty());
+}
+
+#[test]
+fn a_polygon_of_two_to_the_twenty_vertices() {
+    let n = 1 << 20;
+    let points: Vec<[f64; 2]> = (0..n)
+        .map(|i| {
+            let t = std::f64::consts::TAU * i as f64 / n as f64;
+            [t.cos(), t.sin()]
+        })
+        .collect();
+    let mut input = json!({"op": "add", "name": "big", "points": points}).to_string();
+    input.push('\n');
+    input.push_str(r#"{"op": "add", "name": "t", "points": [[0.5,0.5],[2,0.5],[2,2]]}"#);
+    input.push('\n');
+    input.push_str(r#"{"op": "intersects", "a": "big", "b": "t"}"#);
+    input.push('\n');
+    input.push_str(r#"{"op": "vertices", "name": "big"}"#);
+    input.push('\n');
+    input.push_str(r#"{"op": "drop", "name": "big"}"#);
+    input.push('\n');
+    let mut session = SceneSession::new(SceneOptions::default()).unwrap();
+    let mut out = Vec::new();
+    session.run(input.as_bytes(), &mut out).unwrap();
+    let out = String::from_utf8(out).unwrap();
+    let got: Vec<&str> = out.lines().collect();
+    assert_eq!(got.len(), 5);
+    assert_eq!(got[0], r#"{"ok": true}"#);
+    assert_eq!(got[2], r#"{"intersects": true}"#);
+    let vertices: Value = serde_json::from_str(got[3]).unwrap();
+    let ids = vertices["ids"].as_array().unwrap();
+    assert!(ids.len() > n - 16, "{} vertices survive cleaning", ids.len());
+    assert_eq!(ids[0], 0);
+    assert_eq!(got[4], r#"{"ok": true}"#);
+    assert_eq!(session.mapped_vertices(), 3);
+}
+
+#[test]
+fn output_failures_exit_1_and_closed_pipes_exit_0() {
+    let full = std::path::Path::new("/dev/full");
+    if full.exists() {
+        for args in [
+            vec!["list"],
+            vec!["gen", "--count", "5"],
+            vec!["check"],
+            vec!["scene"],
+            vec!["crossings"],
+            vec!["--help"],
+            vec![
+                "demo",
+                "--polygons",
+                "2",
+                "--max-log2",
+                "4",
+                "--steps",
+                "2",
+                "--svg",
+                "/dev/null",
+            ],
+        ] {
+            let input: &[u8] = match args[0] {
+                "scene" => b"{\"op\": \"pairs\"}\n",
+                "check" | "crossings" => b"{\"p\": [[0,0],[1,0],[0,1]], \"q\": [[0,0],[1,0],[0,1]]}\n",
+                _ => b"",
+            };
+            let mut child = Command::new(env!("CARGO_BIN_EXE_polysect"))
+                .args(&args)
+                .stdin(Stdio::piped())
+                .stdout(std::fs::OpenOptions::new().write(true).open(full).unwrap())
+                .stderr(Stdio::piped())
+                .spawn()
+                .unwrap();
+            let mut stdin = child.stdin.take().unwrap();
+            let _ = stdin.write_all(input);
+            drop(stdin);
+            let out = child.wait_with_output().unwrap();
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(1), "{args:?}: {err}");
+            assert_eq!(err.lines().count(), 1, "{args:?}: one line: {err}");
+            assert!(err.contains("No space left"), "{args:?}: {err}");
+        }
+    }
+    // An output directory that cannot be made.
+    let (code, _, err) = run(
+        &[
+            "bench",
+            "sqrt",
+            "--quick",
+            "--no-progress",
+            "--out",
+            "/proc/polysect-bench",
+        ],
+        b"",
+    );
+    assert_eq!(code, 1, "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("cannot write to /proc/polysect-bench"), "{err}");
+    // A reader that stops early: the writer stops quietly with status 0.
+    let mut child = Command::new(env!("CARGO_BIN_EXE_polysect"))
+        .args(["gen", "--count", "1000000"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut first = String::new();
+    BufReader::new(child.stdout.take().unwrap())
+        .read_line(&mut first)
+        .unwrap();
+    assert!(first.starts_with("{\"id\": 0"));
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    assert!(out.stderr.is_empty(), "{}", String::from_utf8_lossy(&out.stderr));
+}
