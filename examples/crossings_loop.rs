@@ -16,6 +16,14 @@
 //! `division-sweep` (seed 003's brute force and sweep), `geo` (geo's sweep over both
 //! edge sets)) and the count. The pair comes from a fixed seed per n. Prints the
 //! number of points, the lists' work and which sweep `Sweep` chose, on standard error.
+//!
+//! The algorithm `json` instead writes the pair COUNT times as `polysect crossings`
+//! input lines on standard output, to time the command line on the same pairs:
+//!
+//! ```text
+//! target/release/examples/crossings_loop needles 16000 json 1 > needles16k.jsonl
+//! target/release/polysect crossings needles16k.jsonl
+//! ```
 
 use geo::algorithm::sweep::{Cross, Intersections};
 use polysect::crossings::lists::ListWorkspace;
@@ -85,6 +93,21 @@ fn main() -> ExitCode {
             }
         },
     };
+    if alg == "json" {
+        let ring = |p: &SimplePolygon| {
+            let v: Vec<String> = p
+                .vertices()
+                .iter()
+                .map(|v| format!("[{:?},{:?}]", v.x, v.y))
+                .collect();
+            format!("[{}]", v.join(","))
+        };
+        let line = format!("{{\"p\": {}, \"q\": {}}}", ring(&p), ring(&q));
+        for _ in 0..count {
+            println!("{line}");
+        }
+        return ExitCode::SUCCESS;
+    }
     let edges: Vec<Tagged> = tagged(&p, 0).chain(tagged(&q, 1)).collect();
     let (mut ws, mut lists, mut events, mut out) = (
         SweepWorkspace::default(),
