@@ -228,45 +228,94 @@ pub fn algorithms_agree(bytes: &[u8]) -> bool {
     true
 }
 
-/// Two simple polygons from arbitrary coordinates (vertex lists, or the same points in
-/// star order around their mean, which is simple far more often): validation
-/// never panics, and the sweep reports exactly the brute force's points under the exact
-/// kernel. Returns whether both polygons were valid (the pair was compared).
+/// Two simple polygons, either from arbitrary coordinates (vertex lists, or the same
+/// points in star order around their mean, which is simple far more often) or from an
+/// adversarial family (zigzags, needle combs, vertical edges, edges on lines through
+/// one point, collinear overlaps: [`hard_pair`](crate::generate::hard::hard_pair)) with
+/// a size, a seed and exact transformations (swap, reversal, mirroring, scaling by a
+/// power of two) read from the bytes: validation never panics, and the sweep, both
+/// sweeps it chooses between and the brute force report exactly the same points under
+/// the exact kernel, with and without touchings. Returns whether both polygons were
+/// valid (the pair was compared).
 pub fn crossings_agree(bytes: &[u8]) -> bool {
-    use crate::crossings::CrossingAlgorithm;
+    use crate::crossings::{
+        Brute, CrossingAlgorithm, CrossingOptions, Crossings, ListSweep, Sweep, Touching, TreeSweep,
+    };
+    use crate::generate::hard::{HardFamily, hard_pair};
     use crate::generate::simple::star_order;
     use crate::polygon::SimplePolygon;
+    use rand::SeedableRng;
     let mut d = Decoder::new(bytes);
-    let star = d.byte().is_some_and(|b| b % 2 == 0);
-    let (a, b) = (d.points(24), d.points(24));
-    let make = |pts: Vec<Point>| {
-        let n = pts.len() as f64;
-        let mean = Point::new(
-            pts.iter().map(|p| p.x / n).sum(),
-            pts.iter().map(|p| p.y / n).sum(),
-        );
-        let pts = if star && mean.is_finite() {
-            star_order(&pts, mean)
-        } else {
-            pts
+    let mode = d.byte().unwrap_or(0);
+    let (p, q) = if mode % 4 == 3 {
+        // An adversarial family.
+        let family = HardFamily::ALL[d.byte().unwrap_or(0) as usize % HardFamily::ALL.len()];
+        let n = 8 + d.byte().unwrap_or(0) as usize % 64;
+        let seed = (0..8).fold(0u64, |s, _| s << 8 | d.byte().unwrap_or(0) as u64);
+        let (mut p, mut q) = hard_pair(family, n, &mut rand::rngs::SmallRng::seed_from_u64(seed));
+        let t = d.byte().unwrap_or(0);
+        let e = (d.byte().unwrap_or(0) as i8 as i32) * 8;
+        let s = 2f64.powi(e / 2) * 2f64.powi(e - e / 2);
+        let mirror = if t & 4 != 0 { -1.0 } else { 1.0 };
+        let map = |poly: &SimplePolygon| poly.map(|v| Point::new(mirror * v.x * s, v.y * s));
+        if let (Ok(a), Ok(b)) = (map(&p), map(&q)) {
+            (p, q) = (a, b);
+        }
+        if t & 1 != 0 {
+            std::mem::swap(&mut p, &mut q);
+        }
+        if t & 2 != 0 {
+            p = p.reversed();
+        }
+        (p, q)
+    } else {
+        let star = mode.is_multiple_of(2);
+        let (a, b) = (d.points(24), d.points(24));
+        let make = |pts: Vec<Point>| {
+            let n = pts.len() as f64;
+            let mean = Point::new(
+                pts.iter().map(|p| p.x / n).sum(),
+                pts.iter().map(|p| p.y / n).sum(),
+            );
+            let pts = if star && mean.is_finite() {
+                star_order(&pts, mean)
+            } else {
+                pts
+            };
+            SimplePolygon::new(pts)
         };
-        SimplePolygon::new(pts)
-    };
-    let (Ok(p), Ok(q)) = (make(a), make(b)) else {
-        return false;
+        let (Ok(p), Ok(q)) = (make(a), make(b)) else {
+            return false;
+        };
+        (p, q)
     };
     p.debug_validate().unwrap();
     q.debug_validate().unwrap();
-    let sweep = CrossingAlgorithm::Sweep.run(Precision::Exact, &p, &q);
-    let brute = CrossingAlgorithm::Brute.run(Precision::Exact, &p, &q);
-    assert_eq!(
-        sweep,
-        brute,
-        "{:?} {:?}",
-        debug_points(p.vertices()),
-        debug_points(q.vertices())
-    );
+    for touching in [Touching::Include, Touching::Exclude] {
+        let options = CrossingOptions { touching };
+        let brute = Brute.crossings_with_options(Exact, &p, &q, options);
+        for (name, got) in [
+            ("sweep", Sweep.crossings_with_options(Exact, &p, &q, options)),
+            (
+                "list-sweep",
+                ListSweep.crossings_with_options(Exact, &p, &q, options),
+            ),
+            (
+                "tree-sweep",
+                TreeSweep.crossings_with_options(Exact, &p, &q, options),
+            ),
+        ] {
+            assert_eq!(
+                got,
+                brute,
+                "{name}, touching {touching}: {:?} {:?}",
+                debug_points(p.vertices()),
+                debug_points(q.vertices())
+            );
+        }
+    }
     let _ = CrossingAlgorithm::Sweep.run(Precision::Fast, &p, &q);
+    let _ = TreeSweep.crossings_with(crate::kernel::Fast, &p, &q);
     true
 }
 

@@ -56,6 +56,43 @@ fn reports_crossings_touchings_and_overlaps() {
 }
 
 #[test]
+fn touching_exclude_keeps_proper_crossings_and_overlap_ends_only() {
+    let input = [
+        // A proper crossing pair and a vertex on the top edge.
+        line("[[3,1],[6,1],[2,4]]"),
+        // Corner on corner: a touching only.
+        line("[[4,4],[6,4],[6,6]]"),
+        // An overlap (both its ends are kept).
+        line("[[-1,4],[5,4],[2,6]]"),
+        // A vertex on the right edge where Q's boundary passes through P's: still only
+        // touching edge pairs, so nothing.
+        line("[[4,2],[5,0],[5,3],[3,3]]"),
+    ]
+    .concat();
+    let want = [
+        json!({"points": [[4.0, 1.0], [4.0, 2.5]]}),
+        json!({"points": []}),
+        json!({"points": [[0.0, 4.0], [4.0, 4.0]]}),
+        json!({"points": [[4.0, 3.0]]}),
+    ];
+    for algorithm in ["sweep", "brute"] {
+        let got = answers(
+            &["crossings", "--algorithm", algorithm, "--touching", "exclude"],
+            &input,
+        );
+        assert_eq!(got, want, "{algorithm}");
+    }
+    // The default includes touchings, and an unknown mode is a usage error.
+    assert_eq!(
+        answers(&["crossings", "--touching", "include"], &input),
+        answers(&["crossings"], &input)
+    );
+    let (code, _, err) = run(&["crossings", "--touching", "never"], b"");
+    assert_eq!(code, 2);
+    assert!(err.contains("include, exclude"), "{err}");
+}
+
+#[test]
 fn bad_lines_give_error_lines_and_never_stop_the_run() {
     let input = format!(
         "{}{}{}{}{}{}{}",

@@ -2,10 +2,14 @@
 //! on random and degenerate pairs, an independent oracle for the points that are
 //! input vertices, the error bound of constructed crossings, and invalid input.
 
-use polysect::crossings::{Brute, CrossingAlgorithm, Crossings, Sweep, SweepWorkspace, crossing_point};
+use num_bigint::{BigInt, Sign as BigSign};
+use num_traits::Zero;
+use polysect::crossings::{
+    Brute, CrossingAlgorithm, Crossings, ListSweep, Sweep, SweepWorkspace, TreeSweep, crossing_point,
+};
 use polysect::generate::simple::{PointDistribution, SimpleMethod, random_simple_polygon};
-use polysect::kernel::{Polynomial, Ring, SegmentContact, point_on_segment, segment_contact};
-use polysect::{Exact, Fast, Kernel, Point, Precision, Sign, SimplePolygon, SimplePolygonError};
+use polysect::kernel::{SegmentContact, point_on_segment, segment_contact};
+use polysect::{Exact, Fast, Kernel, Point, Precision, SimplePolygon, SimplePolygonError};
 use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};
 
@@ -21,17 +25,24 @@ fn p(x: f64, y: f64) -> Point {
     Point::new(x, y)
 }
 
-/// Sweep and brute force under the exact kernel, required equal; returns the points.
+/// The sweep (and each of the two sweeps it chooses between) and the brute force
+/// under the exact kernel, required equal; returns the points.
 fn agree(a: &SimplePolygon, b: &SimplePolygon) -> Vec<Point> {
     let sweep = Sweep.crossings(a, b);
     let brute = Brute.crossings(a, b);
-    assert_eq!(
-        sweep,
-        brute,
-        "sweep != brute for\nP = {:?}\nQ = {:?}",
-        a.vertices(),
-        b.vertices()
-    );
+    for (name, got) in [
+        ("sweep", &sweep),
+        ("list sweep", &ListSweep.crossings(a, b)),
+        ("tree sweep", &TreeSweep.crossings(a, b)),
+    ] {
+        assert_eq!(
+            got,
+            &brute,
+            "{name} != brute for\nP = {:?}\nQ = {:?}",
+            a.vertices(),
+            b.vertices()
+        );
+    }
     // Sorted, distinct, no negative zero.
     assert!(sweep.windows(2).all(|w| w[0].lex_cmp(w[1]).is_lt()));
     assert!(sweep.iter().all(|q| q.x.is_sign_positive() || q.x != 0.0));
@@ -300,101 +311,216 @@ fn extreme_scales_and_offsets() {
     }
 }
 
-/// The sign of (p̃ − a)·den − num·d ∓ B·den for one coordinate, where the exact
-/// crossing is a + (num/den)·d: its sign tells on which side of the exact value ± B
-/// the constructed coordinate lies.
-struct Deviation {
-    got: f64,
-    a: Point,
-    b: Point,
-    c: Point,
-    e: Point,
-    bound: f64,
-    y: bool,
+/// A finite `f64` times 2^1074: an integer, exactly (every finite `f64` is a
+/// multiple of 2^-1074). Independent of the library's own dyadic arithmetic.
+fn fixed(x: f64) -> BigInt {
+    let bits = x.to_bits();
+    let biased = ((bits >> 52) & 0x7ff) as i64;
+    let frac = (bits & ((1u64 << 52) - 1)) as i64;
+    let (m, e) = if biased == 0 {
+        (frac, 0)
+    } else {
+        (frac | (1 << 52), biased - 1)
+    };
+    let v = BigInt::from(m) << e as usize;
+    if bits >> 63 == 1 { -v } else { v }
 }
 
-impl Polynomial for Deviation {
-    fn eval<R: Ring>(&self) -> R {
-        let f = R::from_f64;
-        let (a, b, c, e) = (self.a, self.b, self.c, self.e);
-        let (dx, dy) = (f(b.x) - f(a.x), f(b.y) - f(a.y));
-        let (ex, ey) = (f(e.x) - f(c.x), f(e.y) - f(c.y));
-        let (wx, wy) = (f(c.x) - f(a.x), f(c.y) - f(a.y));
-        let den = dx.clone() * ey.clone() - dy.clone() * ex.clone();
-        let num = wx * ey - wy * ex;
-        let (a0, d) = if self.y { (a.y, dy) } else { (a.x, dx) };
-        (f(self.got) - f(a0)) * den.clone() - num * d - f(self.bound) * den
+/// True when `got` is the exact coordinate `num / den` rounded to the nearest `f64`
+/// (ties to even); `num / den` in units of 2^-1074.
+fn rounds_to(num: &BigInt, den: &BigInt, got: f64) -> bool {
+    let (num, den) = if den.sign() == BigSign::Minus {
+        (-num, -den)
+    } else {
+        (num.clone(), den.clone())
+    };
+    // Midpoints below and above `got`, in units of 2^-1075.
+    let lo = fixed(got.next_down()) + fixed(got);
+    let hi = fixed(got) + fixed(got.next_up());
+    let x2 = num << 1usize; // the exact value in units of 2^-1075, times den
+    let even = got.to_bits() & 1 == 0;
+    let above_lo = match x2.cmp(&(lo * &den)) {
+        std::cmp::Ordering::Greater => true,
+        std::cmp::Ordering::Equal => even,
+        std::cmp::Ordering::Less => false,
+    };
+    let below_hi = match x2.cmp(&(hi * &den)) {
+        std::cmp::Ordering::Less => true,
+        std::cmp::Ordering::Equal => even,
+        std::cmp::Ordering::Greater => false,
+    };
+    above_lo && below_hi
+}
+
+/// Checks `crossing_point` on segments a→b and c→e (which must not be parallel)
+/// against the exact rational crossing, in every argument order.
+fn assert_correctly_rounded(a: Point, b: Point, c: Point, e: Point) {
+    let (ax, ay, bx, by) = (fixed(a.x), fixed(a.y), fixed(b.x), fixed(b.y));
+    let (cx, cy, ex, ey) = (fixed(c.x), fixed(c.y), fixed(e.x), fixed(e.y));
+    let (dx, dy) = (&bx - &ax, &by - &ay);
+    let den = &dx * (&ey - &cy) - &dy * (&ex - &cx);
+    assert!(!den.is_zero(), "parallel: {a:?} {b:?} {c:?} {e:?}");
+    let num = (&cx - &ax) * (&ey - &cy) - (&cy - &ay) * (&ex - &cx);
+    // x = a + (num / den)·d, in units of 2^-1074: (a·den + num·d) / den.
+    let xn = &ax * &den + &num * &dx;
+    let yn = &ay * &den + &num * &dy;
+    for got in [
+        crossing_point(a, b, c, e),
+        crossing_point(b, a, c, e),
+        crossing_point(e, c, a, b),
+        crossing_point(c, e, b, a),
+    ] {
+        assert!(
+            rounds_to(&xn, &den, got.x) && rounds_to(&yn, &den, got.y),
+            "{got:?} is not the rounded crossing of {a:?} {b:?} {c:?} {e:?}"
+        );
     }
 }
 
-/// The documented bound, doubled for the terms left out of the first-order analysis.
-fn documented_bound(a: Point, b: Point, c: Point, e: Point, got: Point) -> f64 {
-    let u = f64::EPSILON / 2.0;
-    let len = |a: Point, b: Point| ((b.x - a.x).powi(2) + (b.y - a.y).powi(2)).sqrt();
-    let (l1, l2) = (len(a, b).min(len(c, e)), len(a, b).max(len(c, e)));
-    let den = ((b.x - a.x) * (e.y - c.y) - (b.y - a.y) * (e.x - c.x)).abs();
-    let kappa = len(a, b) * len(c, e) / den;
-    2.0 * u * (3.0 * kappa * (3.0 * l1 + l2) + 3.0 * l1 + 2.0 * got.x.abs().max(got.y.abs()))
-}
-
-fn within_bound(a: Point, b: Point, c: Point, e: Point) -> bool {
-    let got = crossing_point(a, b, c, e);
-    let bound = documented_bound(a, b, c, e, got);
-    [false, true].into_iter().all(|y| {
-        let coord = if y { got.y } else { got.x };
-        let den = Exact.cross(a, b, c, e);
-        let s = |bound: f64| {
-            let sg = Exact.sign(&Deviation {
-                got: coord,
-                a,
-                b,
-                c,
-                e,
-                bound,
-                y,
-            });
-            if den == polysect::Orientation::Cw {
-                sg.reverse()
-            } else {
-                sg
-            }
-        };
-        // (got − exact)·den ≤ B·den and ≥ −B·den (den > 0 after the sign flip).
-        s(bound) != Sign::Positive && s(-bound) != Sign::Negative
-    })
-}
-
+/// Crossings of the needle, near-parallel, extreme-scale and tie families, and of
+/// ordinary random segments, checked against exact rational arithmetic
+/// (`POLYSECT_ROUNDING_CASES` per family, default 3,000).
 #[test]
-fn constructed_crossings_stay_within_the_documented_bound() {
+fn constructed_crossings_are_correctly_rounded() {
+    use polysect::generate::hard::{HardFamily, hard_pair};
+    let cases: usize = std::env::var("POLYSECT_ROUNDING_CASES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(3000);
     let mut rng = SmallRng::seed_from_u64(SEED_BOUND);
-    let mut tested = 0;
     let pt = |rng: &mut SmallRng, r: f64| p(rng.random_range(-r..r), rng.random_range(-r..r));
-    while tested < 3000 {
+    let crossing = |a, b, c, e| segment_contact(Exact, a, b, c, e) == SegmentContact::Crossing;
+    // Ordinary segments.
+    let mut tested = 0;
+    while tested < cases {
         let (a, b, c, e) = (
             pt(&mut rng, 1e3),
             pt(&mut rng, 1e3),
             pt(&mut rng, 1e3),
             pt(&mut rng, 1e3),
         );
-        // Every third pair nearly parallel: e − c is b − a turned by a tiny angle.
-        let (c, e) = if tested % 3 == 0 {
-            let mid = p((a.x + b.x) / 2.0, (a.y + b.y) / 2.0);
-            let eps = 10f64.powi(-rng.random_range(3..12));
-            let (dx, dy) = (b.x - a.x, b.y - a.y);
-            (
-                p(mid.x - dx - eps * dy, mid.y - dy + eps * dx),
-                p(mid.x + dx + eps * dy, mid.y + dy - eps * dx),
+        if crossing(a, b, c, e) {
+            assert_correctly_rounded(a, b, c, e);
+            tested += 1;
+        }
+    }
+    // Nearly parallel: e − c is b − a turned by an angle down to 10^-15.
+    tested = 0;
+    while tested < cases {
+        let (a, b) = (pt(&mut rng, 1e3), pt(&mut rng, 1e3));
+        let mid = p((a.x + b.x) / 2.0, (a.y + b.y) / 2.0);
+        let eps = 10f64.powi(-rng.random_range(3..16));
+        let (dx, dy) = (b.x - a.x, b.y - a.y);
+        let (c, e) = (
+            p(mid.x - dx - eps * dy, mid.y - dy + eps * dx),
+            p(mid.x + dx + eps * dy, mid.y + dy - eps * dx),
+        );
+        if crossing(a, b, c, e) {
+            assert_correctly_rounded(a, b, c, e);
+            tested += 1;
+        }
+    }
+    // Needles: every crossing pair of two needle combs (angles near 10^-6).
+    tested = 0;
+    while tested < cases {
+        let (pp, qq) = hard_pair(HardFamily::Needles, 60, &mut rng);
+        for i in 0..pp.len() {
+            for j in 0..qq.len() {
+                let ((a, b), (c, e)) = (pp.edge(i), qq.edge(j));
+                if crossing(a, b, c, e) {
+                    assert_correctly_rounded(a, b, c, e);
+                    tested += 1;
+                }
+            }
+        }
+    }
+    // Extreme scales: ordinary and nearly parallel crossings scaled by 2^k, from the
+    // subnormal range to near f64::MAX, and pairs mixing a tiny and a huge segment.
+    tested = 0;
+    while tested < cases {
+        let (mut a, mut b, mut c, mut e) = (
+            pt(&mut rng, 1.0),
+            pt(&mut rng, 1.0),
+            pt(&mut rng, 1.0),
+            pt(&mut rng, 1.0),
+        );
+        let k = rng.random_range(-1070..1020);
+        let s = |v: Point, k: i32| {
+            p(
+                v.x * 2f64.powi(k / 2) * 2f64.powi(k - k / 2),
+                v.y * 2f64.powi(k / 2) * 2f64.powi(k - k / 2),
             )
-        } else {
-            (c, e)
         };
-        if segment_contact(Exact, a, b, c, e) != SegmentContact::Crossing {
+        if tested % 3 == 0 {
+            // One segment near the origin at a tiny scale crossing a long one.
+            let t = rng.random_range(-1070..-200);
+            a = s(a, t);
+            b = p(-a.x, -a.y);
+            (c, e) = (s(c, k.max(-900)), s(e, k.max(-900)));
+            c = p(-c.x.abs() - 1e-300, c.y);
+            e = p(e.x.abs() + 1e-300, -c.y);
+        } else {
+            (a, b, c, e) = (s(a, k), s(b, k), s(c, k), s(e, k));
+        }
+        if [a, b, c, e].iter().all(|v| v.is_finite()) && crossing(a, b, c, e) {
+            assert_correctly_rounded(a, b, c, e);
+            tested += 1;
+        }
+    }
+    // Exact ties: crossings exactly halfway between two neighbouring f64 values.
+    for k in [-1074, -1022, -600, 0, 1, 52, 600, 970] {
+        let one = 2f64.powi(k / 2) * 2f64.powi(k - k / 2);
+        if one == 0.0 || !one.is_finite() {
             continue;
         }
-        tested += 1;
-        assert!(within_bound(a, b, c, e), "{a:?} {b:?} {c:?} {e:?}");
-        assert!(within_bound(c, e, a, b));
+        let next = one.next_up();
+        // The segment from (next, -one) to (one, one) crosses y = 0 at the midpoint of
+        // one and next: a tie, to the one whose last bit is 0.
+        let (a, b) = (p(-one, 0.0), p(4.0 * one, 0.0));
+        let (c, e) = (p(next, -one), p(one, one));
+        if crossing(a, b, c, e) {
+            assert_correctly_rounded(a, b, c, e);
+            let even = if one.to_bits() & 1 == 0 { one } else { next };
+            assert_eq!(crossing_point(a, b, c, e), p(even, 0.0));
+        }
     }
+}
+
+/// Points reported by the algorithms on random and adversarial pairs are the rounded
+/// exact crossings of their edge pairs, and independent of the polygons' order and
+/// orientation.
+#[test]
+fn reported_crossings_are_correctly_rounded() {
+    use polysect::generate::hard::{HardFamily, hard_pair};
+    let mut rng = SmallRng::seed_from_u64(SEED_BOUND + 1);
+    let mut checked = 0;
+    for i in 0..60 {
+        let (a, b) = if i % 2 == 0 {
+            let dist = PointDistribution::Uniform { min: 0.0, max: 100.0 };
+            (
+                random_simple_polygon(SimpleMethod::SpacePartition, dist, 40, &mut rng).unwrap(),
+                random_simple_polygon(SimpleMethod::SpacePartition, dist, 40, &mut rng).unwrap(),
+            )
+        } else {
+            hard_pair(HardFamily::ALL[i % HardFamily::ALL.len()], 40, &mut rng)
+        };
+        let got = agree(&a, &b);
+        assert_eq!(agree(&b.reversed(), &a), got);
+        for i in 0..a.len() {
+            for j in 0..b.len() {
+                let ((p1, p2), (q1, q2)) = (a.edge(i), b.edge(j));
+                if segment_contact(Exact, p1, p2, q1, q2) == SegmentContact::Crossing {
+                    assert_correctly_rounded(p1, p2, q1, q2);
+                    assert!(
+                        got.binary_search_by(|v| v.lex_cmp(crossing_point(p1, p2, q1, q2)))
+                            .is_ok()
+                    );
+                    checked += 1;
+                }
+            }
+        }
+    }
+    assert!(checked > 500, "{checked}");
 }
 
 #[test]
@@ -470,4 +596,106 @@ fn invalid_polygons_are_errors() {
         }
     }
     assert!(ok > 50 && bad > 500, "{ok} {bad}");
+}
+
+const SEED_HARD: u64 = 0x4a4d_0019;
+
+/// The adversarial families (zigzags, needle combs, vertical edges, edges on lines
+/// through one point, collinear overlaps), transformed by exact maps (reversal,
+/// swapping, power-of-two scaling, reflection), at sizes up to a few thousand.
+#[test]
+fn sweep_equals_brute_force_on_adversarial_families() {
+    use polysect::generate::hard::{HardFamily, hard_pair};
+    let mut rng = SmallRng::seed_from_u64(SEED_HARD);
+    let mut total = 0;
+    for &family in HardFamily::ALL {
+        let mut points = 0;
+        for n in [8, 9, 12, 20, 33, 64, 150, 400, 1500, 3000] {
+            let reps = if n <= 64 { 12 } else { 2 };
+            for _ in 0..reps {
+                let (a, b) = hard_pair(family, n, &mut rng);
+                let got = agree(&a, &b);
+                if n <= 150 {
+                    check_oracle(&a, &b, &got);
+                }
+                points += got.len();
+                if n <= 400 {
+                    // Exact maps: the same points, mapped.
+                    let s = 2f64.powi(rng.random_range(-600..600));
+                    let f = |v: Point| p(-v.x * s, v.y * s);
+                    let (fa, fb) = (a.map(f).unwrap(), b.map(f).unwrap());
+                    let mut want: Vec<Point> = got
+                        .iter()
+                        .map(|&v| f(v))
+                        .map(|v| p(v.x + 0.0, v.y + 0.0))
+                        .collect();
+                    want.sort_by(|x, y| x.lex_cmp(*y));
+                    assert_eq!(agree(&fb.reversed(), &fa), want, "{family} n = {n}");
+                }
+            }
+        }
+        assert!(points > 0 || family == HardFamily::StackedZigzag, "{family}");
+        total += points;
+    }
+    assert!(total > 10_000, "{total}");
+}
+
+/// `Touching::Exclude` on grid and adversarial pairs: every algorithm reports the same
+/// points, and they are exactly the proper crossings and the ends of overlaps, found
+/// independently from the pairs' contacts.
+#[test]
+fn touching_exclude_reports_proper_crossings_and_overlap_ends() {
+    use polysect::crossings::{CrossingOptions, Touching};
+    use polysect::generate::hard::{HardFamily, hard_pair};
+    let exclude = CrossingOptions {
+        touching: Touching::Exclude,
+    };
+    let mut rng = SmallRng::seed_from_u64(SEED_HARD + 1);
+    let (mut with_touchings, mut removed) = (0, 0);
+    for i in 0..900 {
+        let (a, b) = if i % 3 == 0 {
+            hard_pair(
+                HardFamily::ALL[i / 3 % HardFamily::ALL.len()],
+                rng.random_range(8..80),
+                &mut rng,
+            )
+        } else {
+            grid_pair(&mut rng)
+        };
+        let got = Brute.crossings_with_options(Exact, &a, &b, exclude);
+        for other in [
+            Sweep.crossings_with_options(Exact, &a, &b, exclude),
+            ListSweep.crossings_with_options(Exact, &a, &b, exclude),
+            TreeSweep.crossings_with_options(Exact, &a, &b, exclude),
+            CrossingAlgorithm::Sweep.run_with_options(Precision::Exact, &a, &b, exclude),
+        ] {
+            assert_eq!(other, got, "P = {:?}\nQ = {:?}", a.vertices(), b.vertices());
+        }
+        let mut want = Vec::new();
+        for i in 0..a.len() {
+            for j in 0..b.len() {
+                let ((p1, p2), (q1, q2)) = (a.edge(i), b.edge(j));
+                match segment_contact(Exact, p1, p2, q1, q2) {
+                    SegmentContact::Crossing => want.push(crossing_point(p1, p2, q1, q2)),
+                    SegmentContact::Overlapping => {
+                        let mut ends = [p1, p2, q1, q2];
+                        ends.sort_by(|x, y| x.lex_cmp(*y));
+                        want.extend([ends[1], ends[2]].map(|v| p(v.x + 0.0, v.y + 0.0)));
+                    }
+                    _ => {}
+                }
+            }
+        }
+        want.sort_by(|x, y| x.lex_cmp(*y));
+        want.dedup();
+        assert_eq!(got, want);
+        let all = agree(&a, &b);
+        assert!(got.iter().all(|v| all.contains(v)));
+        with_touchings += (all.len() > got.len()) as usize;
+        removed += all.len() - got.len();
+    }
+    assert!(
+        with_touchings > 300 && removed > 1000,
+        "{with_touchings} {removed}"
+    );
 }

@@ -19,6 +19,8 @@ fn tiny(out: &Path) -> Config {
         ratio_log2_sizes: vec![6, 8],
         factor_log2_sizes: vec![6],
         factors: vec![0.5, 1.0],
+        crossings_sizes: vec![5, 40],
+        crossings_pairs: 1,
         progress: false,
         ..Config::quick(out)
     }
@@ -193,6 +195,75 @@ fn every_experiment_writes_csv_and_svg() {
                 assert!(significant <= 3, "{svg}: tick label {label:?}");
             }
         }
+    }
+    check_crossings_csv(&dir.join("crossings.csv"), &[5, 40]);
+    let _ = fs::remove_dir_all(&dir);
+}
+
+/// The crossings experiment's table: every Δ and σ of seed 003 × n × algorithm, the
+/// sweep agreeing with the brute force, the counts consistent.
+fn check_crossings_csv(path: &Path, sizes: &[usize]) {
+    let (header, rows) = read_csv(path);
+    let params: std::collections::BTreeSet<(&str, &str)> = column(&header, &rows, "distribution")
+        .into_iter()
+        .zip(column(&header, &rows, "parameter"))
+        .collect();
+    let want: Vec<(&str, &str)> = ["10", "50", "100", "500"]
+        .map(|d| ("uniform", d))
+        .into_iter()
+        .chain(["10", "20", "50", "100"].map(|s| ("normal", s)))
+        .collect();
+    assert_eq!(params, want.into_iter().collect());
+    let algs = [
+        "sweep",
+        "brute",
+        "brute-nobox",
+        "brute-division",
+        "sweep-division",
+    ];
+    assert_eq!(rows.len(), 8 * sizes.len() * algs.len());
+    for (i, alg) in column(&header, &rows, "algorithm").iter().enumerate() {
+        assert_eq!(*alg, algs[i % algs.len()]);
+    }
+    let num = |name: &str| -> Vec<f64> {
+        column(&header, &rows, name)
+            .iter()
+            .map(|v| v.parse().unwrap())
+            .collect()
+    };
+    assert!(num("median_ns").iter().all(|t| *t > 0.0 && t.is_finite()));
+    assert!(num("wrong").iter().all(|w| *w == 0.0));
+    for ((n, pairs), (cand, tests)) in num("n")
+        .iter()
+        .zip(num("brute_pairs"))
+        .zip(num("candidates").into_iter().zip(num("tests")))
+    {
+        assert!(sizes.contains(&(*n as usize)));
+        assert_eq!(pairs, n * n);
+        assert!(tests <= cand && cand <= 2.0 * pairs, "{tests} {cand} {pairs}");
+    }
+}
+
+#[test]
+fn cli_bench_crossings_quick_writes_its_csv_and_plots() {
+    let dir = std::env::temp_dir().join(format!("polysect-bench-crossings-{}", std::process::id()));
+    let _ = fs::remove_dir_all(&dir);
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_polysect"))
+        .args(["bench", "crossings", "--quick", "--no-progress", "--out"])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("| uniform Δ = 500 | 1000 |"), "{stdout}");
+    check_crossings_csv(&dir.join("crossings.csv"), &[5, 50, 200, 1000]);
+    for svg in [
+        "crossings_uniform.svg",
+        "crossings_normal.svg",
+        "crossings_ratios.svg",
+    ] {
+        let text = fs::read_to_string(dir.join(svg)).unwrap();
+        assert!(text.starts_with("<svg") && text.contains("<polyline"), "{svg}");
     }
     let _ = fs::remove_dir_all(&dir);
 }

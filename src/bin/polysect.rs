@@ -1,7 +1,7 @@
 //! The `polysect` command line: a thin layer over the library.
 
 use clap::{Parser, Subcommand, ValueEnum};
-use polysect::crossings::CrossingAlgorithm;
+use polysect::crossings::{CrossingAlgorithm, CrossingOptions, Touching};
 use polysect::experiments::{self, Config, Experiment};
 use polysect::generate::simple::{GenerateError, PointDistribution, SimpleMethod, random_simple_polygon};
 use polysect::generate::{self, Family, Relation};
@@ -103,6 +103,10 @@ enum Command {
         /// Kernel of the predicates: exact or fast.
         #[arg(long, default_value = "exact", value_parser = parse_precision)]
         precision: Precision,
+        /// include: every point where the boundaries meet; exclude: only proper
+        /// crossings and the ends of collinear overlaps (the crossings report).
+        #[arg(long, default_value = "include", value_parser = parse_touching)]
+        touching: Touching,
     },
     /// Convex hull and farthest pair of point sets, for JSON Lines {"points": [[x,y],...]}:
     /// writes {"hull": [[x,y],...], "diameter": [[x,y],[x,y]]} per line (counter-clockwise
@@ -154,7 +158,7 @@ enum Command {
     /// files and SVG plots.
     Bench {
         /// Experiments to run (default: all): scaling, densities, sqrt, crossover,
-        /// trade, clm-factor.
+        /// trade, clm-factor, crossings.
         #[arg(value_parser = parse_experiment)]
         experiments: Vec<Experiment>,
         /// Fewer sizes and shorter loops (under a minute).
@@ -268,6 +272,10 @@ fn parse_crossing_algorithm(s: &str) -> Result<CrossingAlgorithm, String> {
     s.parse()
 }
 
+fn parse_touching(s: &str) -> Result<Touching, String> {
+    s.parse()
+}
+
 fn parse_simple_method(s: &str) -> Result<SimpleMethod, String> {
     s.parse()
 }
@@ -350,7 +358,14 @@ fn main() -> ExitCode {
             file,
             algorithm,
             precision,
-        }) => crossings(file.as_deref(), algorithm, precision).map_err(Failure::Io),
+            touching,
+        }) => crossings(
+            file.as_deref(),
+            algorithm,
+            precision,
+            CrossingOptions { touching },
+        )
+        .map_err(Failure::Io),
         Some(Command::Hull { file, algorithm }) => open_input(file.as_deref())
             .and_then(|input| protocol::hull::hull(input, output(), algorithm))
             .map_err(Failure::Io),
@@ -553,8 +568,15 @@ fn run_session<K: Kernel>(mut session: SceneSession<K>, file: Option<&str>) -> R
     session.run(input, output()).map_err(Failure::Io)
 }
 
-fn crossings(file: Option<&str>, algorithm: CrossingAlgorithm, precision: Precision) -> io::Result<()> {
-    protocol::check::crossings(open_input(file)?, output(), |p, q| algorithm.run(precision, p, q))
+fn crossings(
+    file: Option<&str>,
+    algorithm: CrossingAlgorithm,
+    precision: Precision,
+    options: CrossingOptions,
+) -> io::Result<()> {
+    protocol::check::crossings(open_input(file)?, output(), |p, q| {
+        algorithm.run_with_options(precision, p, q, options)
+    })
 }
 
 fn gen_pairs(

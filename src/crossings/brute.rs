@@ -9,7 +9,7 @@
 //! As for the [module](super): touchings and overlap ends are input vertices,
 //! crossings are constructed by [`crossing_point`](super::crossing_point).
 
-use super::{Crossings, edge_pair_points, sort_dedup};
+use super::{CrossingOptions, Crossings, edge_pair_points, sort_dedup};
 use crate::kernel::{Kernel, Point};
 use crate::polygon::SimplePolygon;
 
@@ -20,13 +20,19 @@ pub struct Brute;
 impl Crossings for Brute {
     const NAME: &'static str = "brute";
 
-    fn crossings_with<K: Kernel>(&self, k: K, p: &SimplePolygon, q: &SimplePolygon) -> Vec<Point> {
+    fn crossings_with_options<K: Kernel>(
+        &self,
+        k: K,
+        p: &SimplePolygon,
+        q: &SimplePolygon,
+        options: CrossingOptions,
+    ) -> Vec<Point> {
         let mut out = Vec::new();
         for i in 0..p.len() {
             let (p1, p2) = p.edge(i);
             for j in 0..q.len() {
                 let (q1, q2) = q.edge(j);
-                edge_pair_points(k, p1, p2, q1, q2, &mut out);
+                edge_pair_points(k, p1, p2, q1, q2, options, &mut out);
             }
         }
         sort_dedup(&mut out);

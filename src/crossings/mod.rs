@@ -4,8 +4,8 @@
 //! # Output
 //! The distinct points where an edge of P meets an edge of Q, sorted
 //! lexicographically (x, then y) and deduplicated exactly (no epsilon):
-//! * a **proper crossing** (the edges' interiors cross at one point): the point is
-//!   constructed in `f64` by [`crossing_point`], within the bound documented there;
+//! * a **proper crossing** (the edges' interiors cross at one point): the exact
+//!   crossing with each coordinate rounded to the nearest `f64` ([`crossing_point`]);
 //! * a **touching** (a vertex on a vertex, or a vertex on the other polygon's edge):
 //!   the input vertex itself, bit for bit;
 //! * a **collinear overlap** (two edges share a part of positive length): its two
@@ -15,25 +15,42 @@
 //! Polygons are cleaned on construction ([`SimplePolygon`] has no straight vertex),
 //! so every maximal shared stretch of the two boundaries is the overlap of exactly
 //! one pair of edges and is reported by its two endpoints only.
+//! [`Touching::Exclude`] keeps only the proper crossings and the overlap ends: a pair
+//! of edges whose single common point is an endpoint of one of them contributes
+//! nothing (the crossings report's intent; docs/crossings.md has the decision).
 //!
 //! # Algorithms
+//! n and m are the polygons' sizes, k = n + m, c the number of reported points.
+//!
 //! | algorithm | time | notes |
 //! |---|---|---|
-//! | [`Sweep`] | O(k log k + Σ r), worst case O(n·m) | Žalik's sweep with two lists of pierced edges; k = n + m vertices, r = length of the other polygon's list at each insertion |
+//! | [`Sweep`] | O((k + c) log k) on every input | runs [`ListSweep`] when its counted work fits a budget of O(k log k), [`TreeSweep`] otherwise |
+//! | [`ListSweep`] | O(k log k + W), W ≤ 2nm | Žalik's sweep with two unordered lists of pierced edges; W = Σ r, r the other list's length at each insertion |
+//! | [`TreeSweep`] | O((k + c) log k) expected | red–blue sweep over the vertices, one treap of both polygons' pierced edges repaired lazily with exact orientation tests |
 //! | [`Brute`] | O(n·m) | every edge pair; the reference |
 //!
-//! Both test each candidate pair of edges with the same function (a bounding-box
-//! rejection, then [`segment_contact`] with the caller's kernel), so under the
-//! [`Exact`] kernel they report the same points bit for bit; the test suite checks
-//! that on random and degenerate inputs. Under [`Fast`] a near-degenerate pair may be
-//! misclassified (a touching missed or a near miss reported), and the two algorithms
-//! may then differ by such points.
+//! All test each candidate pair of edges with the same function (a bounding-box
+//! rejection, then [`segment_contact`] with the caller's kernel) and construct
+//! crossings with the same correctly rounded function, so under the [`Exact`] kernel
+//! they report the same points bit for bit; the test suite and the fuzz harness check
+//! that on random, degenerate and adversarial inputs. Under [`Fast`] a
+//! near-degenerate pair may be misclassified (a touching missed or a near miss
+//! reported), and the algorithms may then differ by such points ([`TreeSweep`]
+//! orders its status with exact predicates whatever the kernel, so its cost bound
+//! holds for both).
 
 pub mod brute;
+pub mod lists;
+pub mod point;
+mod status;
 pub mod sweep;
+pub mod tree;
 
 pub use brute::Brute;
+pub use lists::ListSweep;
+pub use point::crossing_point;
 pub use sweep::{Sweep, SweepWorkspace};
+pub use tree::TreeSweep;
 
 use crate::kernel::{
     Exact, Fast, Kernel, Point, Precision, SegmentContact, point_on_segment, segment_contact,
@@ -42,14 +59,70 @@ use crate::polygon::SimplePolygon;
 use std::fmt;
 use std::str::FromStr;
 
+/// Which contacts are reported.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Touching {
+    /// Every point where the boundaries meet (the default).
+    #[default]
+    Include,
+    /// Only proper crossings and the ends of collinear overlaps, as the crossings report
+    /// intends: a pair of edges whose only common point is an endpoint of one of
+    /// them contributes nothing (see the [module docs](self)).
+    Exclude,
+}
+
+impl Touching {
+    pub const ALL: [Touching; 2] = [Touching::Include, Touching::Exclude];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Touching::Include => "include",
+            Touching::Exclude => "exclude",
+        }
+    }
+}
+
+impl fmt::Display for Touching {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Touching {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Touching::ALL
+            .into_iter()
+            .find(|t| t.name() == s)
+            .ok_or_else(|| format!("unknown touching mode '{s}' (valid: include, exclude)"))
+    }
+}
+
+/// What a crossings query reports; `CrossingOptions::default()` is every contact.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct CrossingOptions {
+    pub touching: Touching,
+}
+
 /// A crossings algorithm on two simple polygons.
 pub trait Crossings {
     /// The name used by the CLI's `--algorithm` and by benches.
     const NAME: &'static str;
 
     /// The points where the boundaries of `p` and `q` meet (see the [module docs](self)),
-    /// deciding predicates with `kernel`.
-    fn crossings_with<K: Kernel>(&self, kernel: K, p: &SimplePolygon, q: &SimplePolygon) -> Vec<Point>;
+    /// as selected by `options`, deciding predicates with `kernel`.
+    fn crossings_with_options<K: Kernel>(
+        &self,
+        kernel: K,
+        p: &SimplePolygon,
+        q: &SimplePolygon,
+        options: CrossingOptions,
+    ) -> Vec<Point>;
+
+    /// Every point where the boundaries meet, deciding predicates with `kernel`.
+    fn crossings_with<K: Kernel>(&self, kernel: K, p: &SimplePolygon, q: &SimplePolygon) -> Vec<Point> {
+        self.crossings_with_options(kernel, p, q, CrossingOptions::default())
+    }
 
     /// The same with the exact kernel.
     ///
@@ -93,17 +166,34 @@ impl CrossingAlgorithm {
 
     /// Runs the algorithm with the kernel named by `precision`.
     pub fn run(self, precision: Precision, p: &SimplePolygon, q: &SimplePolygon) -> Vec<Point> {
+        self.run_with_options(precision, p, q, CrossingOptions::default())
+    }
+
+    /// Runs the algorithm with the kernel named by `precision` and `options`.
+    pub fn run_with_options(
+        self,
+        precision: Precision,
+        p: &SimplePolygon,
+        q: &SimplePolygon,
+        options: CrossingOptions,
+    ) -> Vec<Point> {
         match precision {
-            Precision::Fast => self.run_with(Fast, p, q),
-            Precision::Exact => self.run_with(Exact, p, q),
+            Precision::Fast => self.run_with(Fast, p, q, options),
+            Precision::Exact => self.run_with(Exact, p, q, options),
         }
     }
 
     /// Runs the algorithm with a kernel chosen at compile time.
-    pub fn run_with<K: Kernel>(self, k: K, p: &SimplePolygon, q: &SimplePolygon) -> Vec<Point> {
+    pub fn run_with<K: Kernel>(
+        self,
+        k: K,
+        p: &SimplePolygon,
+        q: &SimplePolygon,
+        options: CrossingOptions,
+    ) -> Vec<Point> {
         match self {
-            CrossingAlgorithm::Sweep => Sweep.crossings_with(k, p, q),
-            CrossingAlgorithm::Brute => Brute.crossings_with(k, p, q),
+            CrossingAlgorithm::Sweep => Sweep.crossings_with_options(k, p, q, options),
+            CrossingAlgorithm::Brute => Brute.crossings_with_options(k, p, q, options),
         }
     }
 }
@@ -139,6 +229,7 @@ pub(crate) fn edge_pair_points<K: Kernel>(
     p2: Point,
     q1: Point,
     q2: Point,
+    options: CrossingOptions,
     out: &mut Vec<Point>,
 ) {
     // Exact rejection on input coordinates: disjoint bounding boxes cannot meet.
@@ -151,7 +242,8 @@ pub(crate) fn edge_pair_points<K: Kernel>(
     }
     match segment_contact(k, p1, p2, q1, q2) {
         SegmentContact::Disjoint => {}
-        SegmentContact::Crossing => out.push(positive_zero(crossing_point(p1, p2, q1, q2))),
+        SegmentContact::Crossing => out.push(point::proper_crossing(p1, p2, q1, q2)),
+        SegmentContact::Touching if options.touching == Touching::Exclude => {}
         SegmentContact::Touching => {
             // The single common point is an endpoint of one of the segments.
             if let Some(c) = [q1, q2]
@@ -185,104 +277,24 @@ fn positive_zero(p: Point) -> Point {
     Point::new(p.x + 0.0, p.y + 0.0)
 }
 
-/// Sorts lexicographically and removes exact repeats: the final step of both algorithms.
+/// Sorts lexicographically and removes exact repeats: the final step of every algorithm.
+/// The points are finite with no `-0.0`, so the order of their keys ([`lex_key`]) is
+/// the lexicographic order and equal keys are equal points.
 pub(crate) fn sort_dedup(points: &mut Vec<Point>) {
-    points.sort_unstable_by(|a, b| a.lex_cmp(*b));
+    points.sort_unstable_by_key(|&p| lex_key(p));
     points.dedup();
 }
 
-/// 2^k for k in the normal exponent range [-1022, 1023].
-fn pow2(k: i32) -> f64 {
-    debug_assert!((-1022..=1023).contains(&k));
-    f64::from_bits(((k + 1023) as u64) << 52)
-}
-
-/// Multiplies by 2^k for any k in [-2044, 2046], exactly unless the result leaves the
-/// normal range.
-fn scale(x: f64, k: i32) -> f64 {
-    let half = k / 2;
-    x * pow2(half) * pow2(k - half)
-}
-
-/// The crossing point of segments p1p2 and q1q2, constructed in `f64`. Meant for
-/// segments whose interiors cross at one point ([`SegmentContact::Crossing`]); for
-/// any other input it returns a point of the intersection of their bounding boxes.
-///
-/// # Method
-/// The coordinates are scaled by a power of two so that the largest magnitude is
-/// in [1/2, 1) (exact, so the 2^±1000 range neither overflows nor underflows), the
-/// shorter segment a→b (by max-norm) is parameterised, with the other segment c→e:
-/// t = ((c − a) × (e − c)) / ((b − a) × (e − c)), clamped to [0, 1], and
-/// p = a + t (b − a). The result is clamped into the intersection of the two
-/// segments' bounding boxes, which holds the true point, and scaled back.
-///
-/// # Precision
-/// With u = 2^-53, ℓ₁ ≤ ℓ₂ the lengths of the segments, θ the angle between them
-/// and κ = 1 / |sin θ| the condition number of the intersection, the distance from
-/// the returned point to the true crossing is at most
-///
-/// ‖p̃ − p‖ ≤ u · (3κ · (3ℓ₁ + ℓ₂) + 3ℓ₁ + 2‖p‖∞) + O(u²)
-///
-/// (first-order analysis: each cross product is within γ₃ = 3u/(1 − 3u) of its
-/// terms' magnitude, |c − a| ≤ |b − a| + |e − c|, the max-norm choice of the
-/// shorter segment costs at most a factor √2, and two roundings in a + t(b − a)), plus,
-/// only when coordinates of very different magnitudes meet in one pair, the loss
-/// of the smaller ones to subnormal range after scaling (at most 2^-1074 relative
-/// to the largest coordinate). For well-conditioned crossings this is a few ulps of
-/// the segment lengths; for nearly parallel edges it grows like 1/θ, but the point
-/// never leaves the bounding boxes of the two segments. The test suite checks the
-/// bound exactly (with exact arithmetic on the inputs) on random and ill-conditioned
-/// crossings. Touching points and overlap ends are never constructed: they are
-/// input vertices, reported exactly.
-pub fn crossing_point(p1: Point, p2: Point, q1: Point, q2: Point) -> Point {
-    let m = [p1.x, p1.y, p2.x, p2.y, q1.x, q1.y, q2.x, q2.y]
-        .into_iter()
-        .fold(0.0f64, |m, v| m.max(v.abs()));
-    // Scale so that the largest magnitude is in [1/2, 1).
-    let k = if m == 0.0 || !m.is_finite() {
-        0
-    } else {
-        let e = ((m.to_bits() >> 52) & 0x7ff) as i32;
-        let exp = if e == 0 {
-            // Subnormal: the exponent of the leading bit.
-            -1074 + (63 - m.to_bits().leading_zeros() as i32)
-        } else {
-            e - 1023
-        };
-        -(exp + 1)
+/// An integer whose order is the lexicographic order of finite points (x, then y):
+/// each coordinate's bits mapped so that unsigned order is numeric order (`-0.0`
+/// before `0.0`).
+#[inline]
+pub(crate) fn lex_key(p: Point) -> u128 {
+    let key = |v: f64| {
+        let b = v.to_bits();
+        if b >> 63 == 1 { !b } else { b | 1 << 63 }
     };
-    let s = |p: Point| Point::new(scale(p.x, k), scale(p.y, k));
-    let (a1, a2, b1, b2) = (s(p1), s(p2), s(q1), s(q2));
-    let len = |a: Point, b: Point| (b.x - a.x).abs().max((b.y - a.y).abs());
-    let ((a, b), (c, e)) = if len(a1, a2) <= len(b1, b2) {
-        ((a1, a2), (b1, b2))
-    } else {
-        ((b1, b2), (a1, a2))
-    };
-    let (dx, dy) = (b.x - a.x, b.y - a.y);
-    let (ex, ey) = (e.x - c.x, e.y - c.y);
-    let (wx, wy) = (c.x - a.x, c.y - a.y);
-    let den = dx * ey - dy * ex;
-    let num = wx * ey - wy * ex;
-    let mut t = num / den;
-    if !t.is_finite() {
-        t = 0.5;
-    }
-    let t = t.clamp(0.0, 1.0);
-    let mut x = a.x + t * dx;
-    let mut y = a.y + t * dy;
-    // The true point lies in both bounding boxes.
-    let lo_x = a1.x.min(a2.x).max(b1.x.min(b2.x));
-    let hi_x = a1.x.max(a2.x).min(b1.x.max(b2.x));
-    let lo_y = a1.y.min(a2.y).max(b1.y.min(b2.y));
-    let hi_y = a1.y.max(a2.y).min(b1.y.max(b2.y));
-    if lo_x <= hi_x {
-        x = x.clamp(lo_x, hi_x);
-    }
-    if lo_y <= hi_y {
-        y = y.clamp(lo_y, hi_y);
-    }
-    Point::new(scale(x, -k), scale(y, -k))
+    (key(p.x) as u128) << 64 | key(p.y) as u128
 }
 
 #[cfg(test)]
@@ -329,20 +341,24 @@ mod tests {
         assert_eq!(q, p(0., 0.));
     }
 
+    const D: CrossingOptions = CrossingOptions {
+        touching: Touching::Include,
+    };
+
     #[test]
     fn pair_points_cover_every_contact() {
         let mut out = Vec::new();
-        edge_pair_points(Exact, p(0., 0.), p(4., 0.), p(1., 0.), p(1., 3.), &mut out);
+        edge_pair_points(Exact, p(0., 0.), p(4., 0.), p(1., 0.), p(1., 3.), D, &mut out);
         assert_eq!(out, vec![p(1., 0.)]);
         out.clear();
-        edge_pair_points(Exact, p(0., 0.), p(4., 0.), p(6., 0.), p(2., 0.), &mut out);
+        edge_pair_points(Exact, p(0., 0.), p(4., 0.), p(6., 0.), p(2., 0.), D, &mut out);
         assert_eq!(out, vec![p(2., 0.), p(4., 0.)]);
         out.clear();
-        edge_pair_points(Exact, p(1., -0.0), p(1., 3.), p(0., 0.), p(4., 0.), &mut out);
+        edge_pair_points(Exact, p(1., -0.0), p(1., 3.), p(0., 0.), p(4., 0.), D, &mut out);
         assert_eq!(out.len(), 1);
         assert!(out[0].y.is_sign_positive());
         out.clear();
-        edge_pair_points(Exact, p(0., 0.), p(1., 0.), p(0., 1.), p(1., 1.), &mut out);
+        edge_pair_points(Exact, p(0., 0.), p(1., 0.), p(0., 1.), p(1., 1.), D, &mut out);
         assert!(out.is_empty());
     }
 }

@@ -1,104 +1,69 @@
-//! [`Sweep`]: Žalik's sweep line with two lists of pierced edges (sources in
-//! `docs/crossings.md`).
+//! [`Sweep`]: the default crossings algorithm. It sorts the vertices once, counts
+//! exactly how much work Žalik's lists would do, and runs [`ListSweep`] when that
+//! is small and [`TreeSweep`] otherwise.
 //!
-//! # Algorithm
-//! The k = n + m vertices of both polygons are the events, sorted
-//! lexicographically: by x, then by y (so a vertical edge starts at its lower end
-//! and no two neighbours of a vertex tie with it). Each polygon has a list of its
-//! edges currently pierced by the sweep line. At a vertex v with neighbours u
-//! (previous) and w (next) in its polygon:
+//! # The choice
+//! [`ListSweep`] tests each inserted edge against every edge of the other polygon
+//! pierced at that moment: W = Σ r candidates, r the other list's length at each
+//! insertion. A candidate costs a couple of comparisons on contiguous memory, or a
+//! segment test when its y-range meets the new edge's; [`TreeSweep`] costs
+//! O(log(n + m)) treap steps and orientation tests per vertex and tests no pair in
+//! vain. With k = n + m vertices and L = ⌈log₂ k⌉, the budget of the lists is
+//! B = [`LIST_BUDGET`] · k · L units, one unit per candidate and
+//! [`PAIR_COST`](super::lists::PAIR_COST) per segment test, which is about what the
+//! tree costs (measured: 35 to 90 units per vertex and level).
 //!
-//! * rule A: u > v and w > v (both edges start here): insert both edges;
-//! * rule B: u < v and w < v (both edges end here): remove both;
-//! * rules C and D: one neighbour before v, one after: insert the edge that starts
-//!   here, remove the one that ends here;
-//! * rule V (a neighbour on the same vertical line): covered by the y tie-break,
-//!   which makes the lower end the start, so it is rule A, B, C or D.
-//!
-//! Each inserted edge is tested against every edge in the **other** polygon's list
-//! (the polygons are simple, so an edge never meets a non-adjacent edge of its own
-//! polygon). All vertices at one point (at most one per polygon) form one event
-//! group: every insertion of the group happens before any removal. Since the points
-//! of a segment are lexicographically between its ends, two edges that meet have
-//! overlapping closed event ranges, and the one inserted later finds the other
-//! still listed, including when they only touch at the event point. That is what
-//! makes touchings, vertex-on-vertex contacts and overlaps come out complete.
-//!
-//! The lists are vectors with a position index per edge: insertion appends,
-//! removal swaps the last entry in (O(1), where the report's linked lists take O(r)).
-//! Each entry keeps its edge's y-range in a column of its own, and a candidate
-//! whose y-range misses the new edge's is skipped with two comparisons on 16
-//! contiguous bytes (x-ranges overlap by construction).
+//! W depends only on the order of the events, so one pass over the sorted vertices
+//! counts it exactly in O(k) before any pair is tested. When W > B
+//! the tree runs at once (zigzags, needle combs, every family whose lists grow with
+//! n). Otherwise the lists run, counting their units, and give up for the tree as
+//! soon as they exceed B (candidates whose y-ranges all overlap, as in needle combs
+//! of moderate size). Either way the total is O((k + c) log k) for c reported
+//! points: the lists never do more than B = O(k log k) units, and the tree is
+//! O((k + c) log k) on every input.
 //!
 //! # Complexity
-//! O(k log k) to sort plus O(Σ r) pair tests, r being the length of the other
-//! polygon's list at each insertion; worst case O(n·m) (every edge of P spanning
-//! the x-range of every edge of Q, e.g. two combs of long nearly horizontal
-//! teeth). On the report's random polygons r is a small fraction of n. Memory O(k).
+//! O((n + m + c) log(n + m)) time on every input (c reported points; expected over
+//! the tree's pseudo-random priorities), O(n + m) memory plus the output.
 //!
 //! # Degeneracies and precision
-//! As for the module: predicates come from the caller's kernel, touchings and
-//! overlaps are reported as input vertices, crossings are constructed by
-//! [`crossing_point`](super::crossing_point). Under the exact kernel the result is
-//! identical to [`Brute`](super::Brute)'s.
+//! Both sweeps report exactly the points of [`Brute`](super::Brute) under the exact
+//! kernel (they test pairs with the same function; see the [module docs](super)).
 
-use super::{Crossings, edge_pair_points, sort_dedup};
+use super::lists::{self, ListSweep, ListWorkspace};
+use super::tree::{self, TreeSweep, TreeWorkspace};
+use super::{CrossingOptions, Crossings, edge_pair_points, sort_dedup};
 use crate::kernel::{Kernel, Point};
 use crate::polygon::SimplePolygon;
 use std::cmp::Ordering;
 
-/// Žalik's sweep; see the [module docs](self).
+/// The default sweep; see the [module docs](self).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Sweep;
 
-/// One polygon's list of pierced edges, stored by columns so that the scan over
-/// y-ranges (the hot loop) reads 16 bytes per entry.
-#[derive(Clone, Debug, Default)]
-struct List {
-    /// (lowest y, highest y) of each listed edge.
-    ys: Vec<(f64, f64)>,
-    /// The endpoints, in polygon order.
-    segs: Vec<(Point, Point)>,
-    /// The edge index.
-    edges: Vec<u32>,
-}
-
-impl List {
-    fn clear(&mut self) {
-        self.ys.clear();
-        self.segs.clear();
-        self.edges.clear();
-    }
-
-    fn push(&mut self, edge: u32, a: Point, b: Point, ys: (f64, f64)) {
-        self.ys.push(ys);
-        self.segs.push((a, b));
-        self.edges.push(edge);
-    }
-
-    /// Removes entry `at` by moving the last entry there; returns the moved edge.
-    fn swap_remove(&mut self, at: usize) -> Option<u32> {
-        self.ys.swap_remove(at);
-        self.segs.swap_remove(at);
-        self.edges.swap_remove(at);
-        self.edges.get(at).copied()
-    }
-}
+/// The lists' budget in units per vertex and tree level (see the [module docs](self)).
+pub const LIST_BUDGET: u64 = 50;
 
 /// Reusable scratch memory for [`Sweep::crossings_in`].
 #[derive(Clone, Debug, Default)]
 pub struct SweepWorkspace {
     events: Vec<(Point, u32)>,
-    lists: [List; 2],
-    pos: [Vec<u32>; 2],
+    lists: ListWorkspace,
+    tree: TreeWorkspace,
 }
 
 impl Crossings for Sweep {
     const NAME: &'static str = "sweep";
 
-    fn crossings_with<K: Kernel>(&self, k: K, p: &SimplePolygon, q: &SimplePolygon) -> Vec<Point> {
+    fn crossings_with_options<K: Kernel>(
+        &self,
+        k: K,
+        p: &SimplePolygon,
+        q: &SimplePolygon,
+        options: CrossingOptions,
+    ) -> Vec<Point> {
         let mut out = Vec::new();
-        self.crossings_in(k, p, q, &mut SweepWorkspace::default(), &mut out);
+        self.crossings_in_with_options(k, p, q, options, &mut SweepWorkspace::default(), &mut out);
         out
     }
 }
@@ -114,79 +79,149 @@ impl Sweep {
         ws: &mut SweepWorkspace,
         out: &mut Vec<Point>,
     ) {
+        self.crossings_in_with_options(k, p, q, CrossingOptions::default(), ws, out);
+    }
+
+    /// Like [`Crossings::crossings_with_options`], reusing `ws` and writing into `out`
+    /// (cleared first).
+    pub fn crossings_in_with_options<K: Kernel>(
+        &self,
+        k: K,
+        p: &SimplePolygon,
+        q: &SimplePolygon,
+        options: CrossingOptions,
+        ws: &mut SweepWorkspace,
+        out: &mut Vec<Point>,
+    ) {
         out.clear();
-        let polys = [p.vertices(), q.vertices()];
-        let n = polys[0].len();
-        // Event: the point and the vertex (P's vertices first, then Q's).
-        let events = &mut ws.events;
-        events.clear();
-        events.extend(polys[0].iter().enumerate().map(|(i, &v)| (v, i as u32)));
-        events.extend(polys[1].iter().enumerate().map(|(i, &v)| (v, (n + i) as u32)));
-        events.sort_unstable_by(|a, b| a.0.lex_cmp(b.0));
-        for ((list, pos), v) in ws.lists.iter_mut().zip(&mut ws.pos).zip(polys) {
-            list.clear();
-            pos.clear();
-            pos.resize(v.len(), u32::MAX);
-        }
-        let locate = |id: u32| -> (usize, usize) {
-            let id = id as usize;
-            if id < n { (0, id) } else { (1, id - n) }
+        sorted_events(p, q, &mut ws.events);
+        let input = Input {
+            p,
+            q,
+            events: &ws.events,
         };
-        let total = events.len();
-        let mut i = 0;
-        while i < total {
-            let here = events[i].0;
-            let mut j = i + 1;
-            while j < total && events[j].0 == here {
-                j += 1;
-            }
-            // Insertions of the whole group first (rules A, C, D: edges starting here).
-            for &(_, id) in &events[i..j] {
-                let (s, w) = locate(id);
-                let v = polys[s];
-                let len = v.len();
-                for e in [(w + len - 1) % len, w] {
-                    let (a, b) = (v[e], v[(e + 1) % len]);
-                    let other = if e == w { b } else { a };
-                    if here.lex_cmp(other) != Ordering::Less {
-                        continue;
-                    }
-                    let (ylo, yhi) = (a.y.min(b.y), a.y.max(b.y));
-                    let other_list = &ws.lists[1 - s];
-                    for (at, &(lo, hi)) in other_list.ys.iter().enumerate() {
-                        if lo > yhi || hi < ylo {
-                            continue;
-                        }
-                        let (c, d) = other_list.segs[at];
-                        if s == 0 {
-                            edge_pair_points(k, a, b, c, d, out);
-                        } else {
-                            edge_pair_points(k, c, d, a, b, out);
-                        }
-                    }
-                    ws.pos[s][e] = ws.lists[s].edges.len() as u32;
-                    ws.lists[s].push(e as u32, a, b, (ylo, yhi));
-                }
-            }
-            // Then the removals (rules B, C, D: edges ending here).
-            for &(_, id) in &events[i..j] {
-                let (s, w) = locate(id);
-                let v = polys[s];
-                let len = v.len();
-                for e in [(w + len - 1) % len, w] {
-                    let other = if e == w { v[(e + 1) % len] } else { v[e] };
-                    if here.lex_cmp(other) != Ordering::Greater {
-                        continue;
-                    }
-                    let at = ws.pos[s][e] as usize;
-                    if let Some(moved) = ws.lists[s].swap_remove(at) {
-                        ws.pos[s][moved as usize] = at as u32;
-                    }
-                    ws.pos[s][e] = u32::MAX;
-                }
-            }
-            i = j;
+        let budget = budget(p, q);
+        let listed = within_budget(input, budget)
+            && lists::run(input, &mut ws.lists, budget, |a, b, c, d| {
+                edge_pair_points(k, a, b, c, d, options, out)
+            })
+            .is_some();
+        if !listed {
+            out.clear();
+            tree::run(k, input, options, &mut ws.tree, out);
         }
         sort_dedup(out);
     }
+
+    /// Which sweep [`Sweep`] ends up running on this pair: the name of [`ListSweep`]
+    /// or of [`TreeSweep`] (it runs the lists within their budget to find out).
+    pub fn choice(p: &SimplePolygon, q: &SimplePolygon) -> &'static str {
+        let mut events = Vec::new();
+        sorted_events(p, q, &mut events);
+        let input = Input {
+            p,
+            q,
+            events: &events,
+        };
+        let budget = budget(p, q);
+        let listed = within_budget(input, budget)
+            && lists::run(input, &mut ListWorkspace::default(), budget, |_, _, _, _| {}).is_some();
+        if listed { ListSweep::NAME } else { TreeSweep::NAME }
+    }
+}
+
+/// Whether the lists' candidates fit in `budget`: at once when 2·n·m does (W never
+/// exceeds it), else by counting them.
+fn within_budget(input: Input<'_>, budget: u64) -> bool {
+    let (n, m) = (input.p.len() as u64, input.q.len() as u64);
+    2 * n * m <= budget || list_work(input) <= budget
+}
+
+/// B = [`LIST_BUDGET`] · k · ⌈log₂ k⌉ for k = n + m.
+fn budget(p: &SimplePolygon, q: &SimplePolygon) -> u64 {
+    let k = (p.len() + q.len()) as u64;
+    let levels = (64 - k.leading_zeros()) as u64;
+    LIST_BUDGET * k * levels
+}
+
+/// The two polygons and their sorted vertices: the input of both sweeps.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Input<'a> {
+    pub p: &'a SimplePolygon,
+    pub q: &'a SimplePolygon,
+    /// The vertices of P (ids 0..n) and of Q (ids n..n+m), see [`sorted_events`].
+    pub events: &'a [(Point, u32)],
+}
+
+/// Sorts the vertices, lets `run` append points for them, and returns the points
+/// sorted and deduplicated: a whole query for a sweep without a workspace.
+pub(crate) fn standalone(
+    p: &SimplePolygon,
+    q: &SimplePolygon,
+    run: impl FnOnce(Input<'_>, &mut Vec<Point>),
+) -> Vec<Point> {
+    let mut events = Vec::new();
+    sorted_events(p, q, &mut events);
+    let mut out = Vec::new();
+    run(
+        Input {
+            p,
+            q,
+            events: &events,
+        },
+        &mut out,
+    );
+    sort_dedup(&mut out);
+    out
+}
+
+/// The vertices of P (ids 0..n) and of Q (ids n..n+m) sorted lexicographically
+/// (x, then y): the events of both sweeps.
+pub(crate) fn sorted_events(p: &SimplePolygon, q: &SimplePolygon, events: &mut Vec<(Point, u32)>) {
+    let n = p.len();
+    events.clear();
+    events.extend(p.vertices().iter().enumerate().map(|(i, &v)| (v, i as u32)));
+    events.extend(q.vertices().iter().enumerate().map(|(i, &v)| (v, (n + i) as u32)));
+    // Equal points get equal keys whatever the sign of a zero: lexicographic order.
+    events.sort_unstable_by_key(|&(v, _)| super::lex_key(Point::new(v.x + 0.0, v.y + 0.0)));
+}
+
+/// The number of candidates [`ListSweep`] checks on this input: Σ r over the
+/// insertions, r the length of the other polygon's list at that moment. O(n + m).
+pub(crate) fn list_work(input: Input<'_>) -> u64 {
+    let Input { p, q, events } = input;
+    let polys = [p.vertices(), q.vertices()];
+    let n = polys[0].len();
+    let mut len = [0u64; 2];
+    let mut work = 0u64;
+    let total = events.len();
+    let mut i = 0;
+    while i < total {
+        let here = events[i].0;
+        let mut j = i + 1;
+        while j < total && events[j].0 == here {
+            j += 1;
+        }
+        let mut ending = [0u64; 2];
+        for &(_, id) in &events[i..j] {
+            let id = id as usize;
+            let (s, w) = if id < n { (0, id) } else { (1, id - n) };
+            let v = polys[s];
+            let m = v.len();
+            for other in [v[(w + m - 1) % m], v[(w + 1) % m]] {
+                match here.lex_cmp(other) {
+                    Ordering::Less => {
+                        work += len[1 - s];
+                        len[s] += 1;
+                    }
+                    Ordering::Greater => ending[s] += 1,
+                    Ordering::Equal => {}
+                }
+            }
+        }
+        len[0] = len[0].saturating_sub(ending[0]);
+        len[1] = len[1].saturating_sub(ending[1]);
+        i = j;
+    }
+    work
 }

@@ -11,6 +11,7 @@
 //! | `crossover` | CLM against Convert (walk the lists, then Barba) on linked polygons, and the n from which sampling wins | 4.4, Fig. 4.8 | `crossover.csv`, `crossover.svg` |
 //! | `trade` | every algorithm × kernel on adversarial families: time per query and wrong answers against [`Linear`](crate::intersect::Linear) under the exact kernel; the exact kernel's overhead (exact/fast time) per algorithm on random rotated ellipses at [`Config::ratio_log2_sizes`] | | `trade.csv`, `trade_ratio.csv`, `trade.md`, `trade.svg` |
 //! | `clm-factor` | CLM's time against its sample factor c (samples of ⌈c·√n⌉) | | `clm_factor.csv`, `clm_factor.svg` |
+//! | `crossings` | crossing points of two random simple polygons: the sweep and three brute forces against n, for every Δ and σ of the crossings report | the crossings report's Fig. 6.1, Tables 6.1–6.2 | `crossings.csv`, `crossings_uniform.svg`, `crossings_normal.svg`, `crossings_ratios.svg` |
 //!
 //! # Sizes
 //! n is the number of vertices of *each* polygon (the thesis's figures use the total,
@@ -33,6 +34,7 @@
 //! not absolute numbers across machines.
 
 mod clm_factor;
+pub mod crossings;
 mod crossover;
 mod densities;
 pub mod measure;
@@ -62,6 +64,7 @@ pub enum Experiment {
     Crossover,
     Trade,
     ClmFactor,
+    Crossings,
 }
 
 impl Experiment {
@@ -72,6 +75,7 @@ impl Experiment {
         Experiment::Crossover,
         Experiment::Trade,
         Experiment::ClmFactor,
+        Experiment::Crossings,
     ];
 
     pub fn name(self) -> &'static str {
@@ -82,6 +86,7 @@ impl Experiment {
             Experiment::Crossover => "crossover",
             Experiment::Trade => "trade",
             Experiment::ClmFactor => "clm-factor",
+            Experiment::Crossings => "crossings",
         }
     }
 }
@@ -136,6 +141,10 @@ pub struct Config {
     /// Sizes and factors of the CLM sample-factor experiment.
     pub factor_log2_sizes: Vec<u32>,
     pub factors: Vec<f64>,
+    /// Vertices per polygon (n = m) of the crossings experiment.
+    pub crossings_sizes: Vec<usize>,
+    /// Polygon pairs per point of the crossings experiment.
+    pub crossings_pairs: usize,
     /// Show a progress bar on standard error.
     pub progress: bool,
 }
@@ -157,6 +166,8 @@ impl Config {
             ratio_log2_sizes: vec![10, 14, 18],
             factor_log2_sizes: vec![12, 16, 20],
             factors: vec![0.25, 0.5, 1.0, 2.0, 4.0],
+            crossings_sizes: crossings::SEED_SIZES.to_vec(),
+            crossings_pairs: 5,
             progress: true,
         }
     }
@@ -174,6 +185,8 @@ impl Config {
             trade_circle_log2: 16,
             factor_log2_sizes: vec![10, 14],
             factors: vec![0.5, 1.0, 2.0],
+            crossings_sizes: vec![5, 50, 200, 1000],
+            crossings_pairs: 2,
             ..Config::full(out)
         }
     }
@@ -208,6 +221,7 @@ pub fn run(experiments: &[Experiment], config: &Config) -> io::Result<Report> {
             Experiment::Crossover => crossover::run(config)?,
             Experiment::Trade => trade::run(config)?,
             Experiment::ClmFactor => clm_factor::run(config)?,
+            Experiment::Crossings => crossings::run(config)?,
         };
         report.files.extend(r.files);
         report.summary.push_str(&format!("## {e}\n\n{}\n", r.summary));

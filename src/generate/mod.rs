@@ -15,6 +15,7 @@
 //! Ellipse-based polygons are convex hulls of the generated points, so they may have
 //! slightly fewer than n vertices where rounding made neighbours collinear.
 
+pub mod hard;
 pub mod simple;
 
 pub use simple::GenerateError;

@@ -55,7 +55,7 @@
 //! quadrilateral. In the projective frame above the first pencil alone gives a
 //! slab and two monotone chains, so the second pencil, the quadrilateral and the
 //! pentagon are not needed, and every comparison "which crossing comes first along
-//! the boundary" becomes an orientation or a slope comparison. The seed's
+//! the boundary" becomes an orientation or a slope comparison. The source's
 //! description also stops pruning when either chain has fewer than six vertices and
 //! finishes with all pairs of edges, which is not logarithmic when the other chain
 //! is long; case 4 keeps pruning the long chain. See docs/algorithms.md.

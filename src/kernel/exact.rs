@@ -755,6 +755,13 @@ impl Dyadic {
     }
 }
 
+impl Dyadic {
+    /// The mantissa and the exponent: the value is `mantissa · 2^exponent`.
+    pub fn parts(&self) -> (&BigInt, i64) {
+        (&self.mantissa, self.exponent)
+    }
+}
+
 /// Splits a finite `f64` into an integer mantissa and a power-of-two exponent.
 fn decompose(x: f64) -> (i64, i64) {
     let bits = x.to_bits();

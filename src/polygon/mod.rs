@@ -103,8 +103,3 @@ pub(crate) fn distinct_indices<I: InputIndex>(points: &[Point]) -> Result<Vec<I>
     }
     Ok(v)
 }
-
-/// [`distinct_indices`] with each vertex beside its input index.
-pub(crate) fn distinct_vertices(points: &[Point]) -> Result<Vec<(Point, usize)>, Prefilter> {
-    distinct_indices::<usize>(points).map(|v| v.into_iter().map(|i| (points[i], i)).collect())
-}

@@ -3,7 +3,7 @@
 //!
 //! See [`SimplePolygon`] for the validation rules, complexity and precision.
 
-use super::{Prefilter, distinct_vertices};
+use super::{InputIndex, Prefilter, distinct_indices};
 use crate::kernel::{Exact, Kernel, Orientation, Point, SegmentContact, Sign, segment_contact};
 use std::cmp::Ordering;
 use std::fmt;
@@ -135,11 +135,29 @@ impl SimplePolygon {
         P: Into<Point>,
     {
         let points: Vec<Point> = points.into_iter().map(Into::into).collect();
-        let cleaned = clean(&points)?;
-        let vertices: Vec<Point> = cleaned.iter().map(|&(p, _)| p).collect();
+        if u32::try_from(points.len()).is_ok() {
+            Self::validate::<u32>(points)
+        } else {
+            Self::validate::<usize>(points)
+        }
+    }
+
+    /// [`SimplePolygon::new`] on a collected list, with input indices of type `I`. The
+    /// cleaned vertices are compacted into `points` itself and only their input indices
+    /// are kept beside them (for error messages), so the peak memory is the list plus
+    /// one index per vertex and the self-intersection sweep's order.
+    fn validate<I: InputIndex>(mut points: Vec<Point>) -> Result<Self, SimplePolygonError> {
+        let index = clean::<I>(&points)?;
+        // The kept indices increase, so each vertex moves down (or stays).
+        for (j, &i) in index.iter().enumerate() {
+            points[j] = points[i.get()];
+        }
+        points.truncate(index.len());
+        points.shrink_to_fit();
+        let vertices = points;
         if let Some((e, f, contact)) = find_self_intersection(&vertices) {
-            let n = cleaned.len();
-            let edge = |e: usize| (cleaned[e].1, cleaned[(e + 1) % n].1);
+            let n = index.len();
+            let edge = |e: usize| (index[e].get(), index[(e + 1) % n].get());
             let (first, second) = if e < f {
                 (edge(e), edge(f))
             } else {
@@ -238,9 +256,9 @@ impl TryFrom<Vec<Point>> for SimplePolygon {
     }
 }
 
-/// Steps 1–3 of the validation: the cleaned vertices with their input indices.
-fn clean(points: &[Point]) -> Result<Vec<(Point, usize)>, SimplePolygonError> {
-    let v = distinct_vertices(points).map_err(|e| match e {
+/// Steps 1–3 of the validation: the input indices of the cleaned vertices, increasing.
+fn clean<I: InputIndex>(points: &[Point]) -> Result<Vec<I>, SimplePolygonError> {
+    let mut v = distinct_indices::<I>(points).map_err(|e| match e {
         Prefilter::NonFinite { index } => SimplePolygonError::NonFinite {
             index,
             point: points[index],
@@ -248,23 +266,31 @@ fn clean(points: &[Point]) -> Result<Vec<(Point, usize)>, SimplePolygonError> {
         Prefilter::TooFew { distinct } => SimplePolygonError::TooFewVertices { distinct },
         Prefilter::AllCollinear => SimplePolygonError::ZeroArea,
     })?;
+    let at = |i: I| points[i.get()];
     let n = v.len();
-    let mut keep = Vec::with_capacity(n);
+    // Kept vertices are compacted in place: entry w is written after entries i - 1, i
+    // and i + 1 are read, and w ≤ i, so only entry 0 (the last vertex's next) can be
+    // overwritten before it is read.
+    let first = v[0];
+    let mut w = 0;
     for i in 0..n {
-        let (prev, cur, next) = (v[(i + n - 1) % n].0, v[i].0, v[(i + 1) % n].0);
+        let (prev, cur) = (at(v[(i + n - 1) % n]), at(v[i]));
+        let next = if i + 1 == n { at(first) } else { at(v[i + 1]) };
         if Exact.orient(prev, cur, next) == Orientation::Collinear {
             // (cur − prev) · (next − cur) > 0: cur lies strictly between its neighbours.
             if Exact.dot(prev, cur, cur, next) == Sign::Positive {
                 continue;
             }
-            return Err(SimplePolygonError::DoublesBack { index: v[i].1 });
+            return Err(SimplePolygonError::DoublesBack { index: v[i].get() });
         }
-        keep.push(v[i]);
+        v[w] = v[i];
+        w += 1;
     }
+    v.truncate(w);
     // Not all collinear, and dropping straight vertices keeps every turn: at least
     // three vertices with a non-zero turn remain.
-    debug_assert!(keep.len() >= 3);
-    Ok(keep)
+    debug_assert!(v.len() >= 3);
+    Ok(v)
 }
 
 /// An edge in the sweep status, stored left to right (lexicographically), ordered
@@ -499,6 +525,15 @@ mod tests {
                 contact: SegmentContact::Crossing
             })
         );
+        // Input indices survive the removal of a repeat (1) and a straight vertex (2).
+        assert_eq!(
+            poly(&[[0., 0.], [0., 0.], [1., 1.], [2., 2.], [2., 0.], [0., 2.]]),
+            Err(SelfIntersection {
+                first: (0, 3),
+                second: (4, 5),
+                contact: SegmentContact::Crossing
+            })
+        );
         // A vertex repeated further along: non-adjacent edges touch.
         let e = poly(&[[0., 0.], [2., 0.], [1., 1.], [2., 2.], [0., 2.], [1., 1.]]).unwrap_err();
         assert!(
@@ -547,8 +582,8 @@ mod tests {
             let mut v = p.into_vertices();
             let k = rng.random_range(0..v.len());
             v[k] = Point::new(rng.random_range(0..size) as f64, rng.random_range(0..size) as f64);
-            let Ok(cleaned) = clean(&v) else { continue };
-            let w: Vec<Point> = cleaned.iter().map(|c| c.0).collect();
+            let Ok(cleaned) = clean::<usize>(&v) else { continue };
+            let w: Vec<Point> = cleaned.iter().map(|&i| v[i]).collect();
             let sweep = find_self_intersection(&w);
             assert_eq!(sweep.is_some(), brute_self_intersects(&w), "{w:?}");
             if let Some((e, f, c)) = sweep {
@@ -576,8 +611,10 @@ mod tests {
             let pts: Vec<Point> = (0..n)
                 .map(|_| Point::new(rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0)))
                 .collect();
-            let Ok(cleaned) = clean(&pts) else { continue };
-            let v: Vec<Point> = cleaned.iter().map(|c| c.0).collect();
+            let Ok(cleaned) = clean::<usize>(&pts) else {
+                continue;
+            };
+            let v: Vec<Point> = cleaned.iter().map(|&i| pts[i]).collect();
             let sweep = find_self_intersection(&v).is_some();
             assert_eq!(sweep, brute_self_intersects(&v), "{v:?}");
             if sweep { invalid += 1 } else { valid += 1 }
@@ -602,8 +639,8 @@ mod tests {
             let step = 10f64.powi(-rng.random_range(1..4));
             v[k].x += rng.random_range(-step..step);
             v[k].y += rng.random_range(-step..step);
-            let Ok(cleaned) = clean(&v) else { continue };
-            let w: Vec<Point> = cleaned.iter().map(|c| c.0).collect();
+            let Ok(cleaned) = clean::<usize>(&v) else { continue };
+            let w: Vec<Point> = cleaned.iter().map(|&i| v[i]).collect();
             let sweep = find_self_intersection(&w).is_some();
             assert_eq!(sweep, brute_self_intersects(&w));
             if sweep { invalid += 1 } else { valid += 1 }
@@ -626,8 +663,10 @@ mod tests {
             let pts: Vec<Point> = (0..n)
                 .map(|_| Point::new(rng.random_range(0..5) as f64, rng.random_range(0..5) as f64))
                 .collect();
-            let Ok(cleaned) = clean(&pts) else { continue };
-            let v: Vec<Point> = cleaned.iter().map(|c| c.0).collect();
+            let Ok(cleaned) = clean::<usize>(&pts) else {
+                continue;
+            };
+            let v: Vec<Point> = cleaned.iter().map(|&i| pts[i]).collect();
             let sweep = find_self_intersection(&v).is_some();
             assert_eq!(sweep, brute_self_intersects(&v), "{v:?}");
             if sweep { invalid += 1 } else { valid += 1 }
