@@ -33,9 +33,12 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 #![forbid(unsafe_code)]
+#![cfg_attr(docsrs, feature(doc_cfg))]
 
 pub mod crossings;
+#[cfg(feature = "cli")]
 pub mod experiments;
+#[cfg(feature = "protocol")]
 #[doc(hidden)]
 pub mod fuzzing;
 pub mod generate;
@@ -43,8 +46,10 @@ pub mod intersect;
 pub mod kernel;
 pub mod lp;
 pub mod polygon;
+#[cfg(feature = "protocol")]
 pub mod protocol;
 pub mod render;
+#[cfg(feature = "cli")]
 pub mod serve;
 pub mod store;
 

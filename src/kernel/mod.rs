@@ -34,7 +34,8 @@ use std::str::FromStr;
 
 /// A point (or vector) in the plane. Every finite `f64` coordinate is valid;
 /// constructors that validate input reject NaN and infinities.
-#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Point {
     pub x: f64,
     pub y: f64,

@@ -43,7 +43,8 @@ impl Strategy {
 }
 
 /// Estimated costs, in nanoseconds, that drive the planner.
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct CostModel {
     /// Walking a linked polygon into an array, per vertex.
     pub convert_ns_per_vertex: f64,
@@ -142,7 +143,8 @@ fn median(v: &mut [f64]) -> f64 {
 }
 
 /// What the planner did, for the demo table and the tests.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct PlannerStats {
     /// Queries answered `false` by the bounding boxes alone.
     pub box_rejects: u64,

@@ -7,13 +7,15 @@ use crate::kernel::{Exact, Kernel, Point};
 use crate::polygon::{ConvexPolygon, EditError, LinkedPolygon, PolygonError, VertexId};
 use rand::SeedableRng;
 use rand::rngs::SmallRng;
+#[cfg(feature = "parallel")]
 use rayon::prelude::*;
 use slab::Slab;
 use std::fmt;
 
 /// A handle to a polygon in a [`Scene`]. Carries a generation: after the polygon is
 /// removed, every use is [`SceneError::StalePolygon`], even if its slot is reused.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct PolygonId {
     key: u32,
     generation: u64,
@@ -538,8 +540,9 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Answers many queries: planned in order, conversions built in parallel, then the
-    /// pairs answered in parallel. Results are in input order and do not depend on the
-    /// number of threads.
+    /// pairs answered in parallel (on rayon's pool with the `parallel` feature, in order
+    /// on the calling thread without it). Results are in input order and do not depend
+    /// on the number of threads, nor on the feature.
     pub fn intersects_batch(&mut self, pairs: &[(PolygonId, PolygonId)]) -> Vec<Result<bool, SceneError>> {
         let mut pending = Vec::new();
         let routes: Vec<Result<Route, SceneError>> = pairs
@@ -552,22 +555,37 @@ impl<K: Kernel> Scene<K> {
         self.convert_all(pending);
         let base: u64 = rand::Rng::random(&mut self.rng);
         let this = &*self;
-        routes
+        let answer = |ws: &mut QueryWorkspace, (i, route): (usize, &Result<Route, SceneError>)| {
+            let route = route.clone()?;
+            let mut rng = SmallRng::seed_from_u64(base ^ (i as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15));
+            Ok(this.answer(route, ws, &mut rng))
+        };
+        #[cfg(feature = "parallel")]
+        let answers = routes
             .par_iter()
             .enumerate()
-            .map_init(QueryWorkspace::default, |ws, (i, route)| {
-                let route = route.clone()?;
-                let mut rng = SmallRng::seed_from_u64(base ^ (i as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15));
-                Ok(this.answer(route, ws, &mut rng))
-            })
-            .collect()
+            .map_init(QueryWorkspace::default, answer)
+            .collect();
+        #[cfg(not(feature = "parallel"))]
+        let answers = {
+            let mut ws = QueryWorkspace::default();
+            routes
+                .iter()
+                .enumerate()
+                .map(|item| answer(&mut ws, item))
+                .collect()
+        };
+        answers
     }
 
     fn convert_all(&mut self, mut keys: Vec<usize>) {
         keys.sort_unstable();
         keys.dedup();
-        let snapshots: Vec<(usize, ConvexPolygon)> = keys
-            .par_iter()
+        #[cfg(feature = "parallel")]
+        let keys_iter = keys.par_iter();
+        #[cfg(not(feature = "parallel"))]
+        let keys_iter = keys.iter();
+        let snapshots: Vec<(usize, ConvexPolygon)> = keys_iter
             .map(|&k| (k, self.entries[k].polygon.to_convex()))
             .collect();
         for (k, s) in snapshots {
