@@ -126,6 +126,147 @@ fn handles_go_stale_and_failed_operations_change_nothing() {
     scene.debug_validate().unwrap();
 }
 
+/// The newcomer's case: a vertex handle of one polygon given to another (of the same
+/// scene or another), and polygon handles of another scene or of a clone. Every method
+/// taking a handle refuses with the foreign-handle error and changes nothing.
+#[test]
+fn foreign_handles_are_refused_by_every_method() {
+    let square = [[0., 0.], [4., 0.], [4., 4.], [0., 4.]];
+    let mut scene = Scene::new();
+    let s1 = scene.insert_points(square).unwrap();
+    let s2 = scene.insert_points(square).unwrap();
+    let s3 = scene.insert_points([[10., 10.], [11., 10.], [11., 11.]]).unwrap();
+    let mut other = Scene::new();
+    let o1 = other.insert_points(square).unwrap();
+    let copy = scene.clone();
+    let c1 = copy.ids().next().unwrap();
+    assert_eq!(
+        copy.polygon(c1).unwrap().to_convex(),
+        scene.polygon(s1).unwrap().to_convex()
+    );
+
+    let snapshot = |scene: &Scene| -> Vec<_> {
+        scene
+            .ids()
+            .map(|id| (scene.polygon(id).unwrap().to_convex(), scene.version(id).unwrap()))
+            .collect()
+    };
+    let before = snapshot(&scene);
+    for foreign in [o1, c1] {
+        let e = Err(SceneError::ForeignPolygon);
+        assert_eq!(scene.polygon(foreign).map(|_| ()), e);
+        assert_eq!(scene.bounding_box(foreign).map(|_| ()), e);
+        assert_eq!(scene.version(foreign).map(|_| ()), e);
+        assert_eq!(scene.has_snapshot(foreign).map(|_| ()), e);
+        let v = scene.polygon(s1).unwrap().first();
+        assert_eq!(
+            scene.insert_vertex(foreign, v, Point::new(2., -1.)).map(|_| ()),
+            e
+        );
+        assert_eq!(scene.remove_vertex(foreign, v).map(|_| ()), e);
+        assert_eq!(scene.move_vertex(foreign, v, Point::new(-1., -1.)).map(|_| ()), e);
+        assert_eq!(scene.translate(foreign, 1.0, 0.0), e);
+        assert_eq!(scene.intersects(s1, foreign).map(|_| ()), e);
+        assert_eq!(scene.intersects(foreign, s1).map(|_| ()), e);
+        assert_eq!(scene.intersecting(foreign).map(|_| ()), e);
+        assert_eq!(
+            scene.intersects_batch(&[(s1, s2), (s1, foreign)]),
+            vec![Ok(true), Err(SceneError::ForeignPolygon)]
+        );
+        assert_eq!(scene.remove(foreign).map(|_| ()), e);
+    }
+    // Vertex handles of another polygon: of this scene (s2, s3: the same slots and
+    // generations as s1's own handles), of another scene, of the clone.
+    let vertex_of = |scene: &Scene, id| scene.polygon(id).unwrap().first();
+    for v in [
+        vertex_of(&scene, s2),
+        vertex_of(&scene, s3),
+        vertex_of(&other, o1),
+        vertex_of(&copy, c1),
+    ] {
+        let e = Err(SceneError::Edit(EditError::ForeignHandle));
+        assert_eq!(scene.insert_vertex(s1, v, Point::new(2., -1.)).map(|_| ()), e);
+        assert_eq!(scene.remove_vertex(s1, v).map(|_| ()), e);
+        assert_eq!(scene.move_vertex(s1, v, Point::new(-1., -1.)).map(|_| ()), e);
+        assert!(!scene.polygon(s1).unwrap().has_vertex(v));
+    }
+    assert_eq!(snapshot(&scene), before, "refused calls change nothing");
+    // The clone refuses the original's handles too; its own work.
+    assert_eq!(copy.polygon(s1).map(|_| ()), Err(SceneError::ForeignPolygon));
+    // A polygon's own vertex handles keep working through the scene and after removal.
+    let mut poly = LinkedPolygon::from_points(square).unwrap();
+    let mine = poly.first();
+    poly.move_vertex(mine, Point::new(-1., -1.)).unwrap();
+    let id = scene.insert(poly);
+    assert_eq!(
+        scene.move_vertex(id, mine, Point::new(0., 0.)),
+        Ok(Point::new(-1., -1.))
+    );
+    let back = scene.remove(id).unwrap();
+    assert_eq!(back.point(mine), Ok(Point::new(0., 0.)));
+    scene.debug_validate().unwrap();
+}
+
+/// Cycles of the hostile-use test; `POLYSECT_HOSTILE_CYCLES` raises it (the issue's
+/// report used 5 million).
+fn hostile_cycles() -> usize {
+    std::env::var("POLYSECT_HOSTILE_CYCLES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(1_000_000)
+}
+
+/// Memory stays O(live polygons + vertices) whatever the call pattern: insert /
+/// `intersects` / remove cycles, edits alone and translations alone never reach a
+/// broad-phase query, and used to grow its list of changed boxes by one entry each.
+#[test]
+fn memory_is_bounded_under_calls_that_never_query_the_broad_phase() {
+    let cycles = hostile_cycles();
+    let mut scene = Scene::new();
+    let a = scene
+        .insert_points([[0., 0.], [4., 0.], [4., 4.], [0., 4.]])
+        .unwrap();
+    let triangle = LinkedPolygon::from_points([[1., 1.], [5., 1.], [1., 5.]]).unwrap();
+    let mut baseline = 0;
+    for i in 0..cycles {
+        let b = scene.insert(triangle.clone());
+        assert!(scene.intersects(a, b).unwrap());
+        scene.remove(b).unwrap();
+        if i == 1_000 {
+            baseline = scene.heap_bytes();
+        }
+    }
+    let after_cycles = scene.heap_bytes();
+    assert!(
+        after_cycles <= baseline,
+        "{cycles} insert/intersects/remove cycles: {baseline} -> {after_cycles} bytes"
+    );
+    // Edits alone: a vertex pushed out and back (the box grows and stays loose), and
+    // translations (every one moves the box).
+    let corner = scene
+        .polygon(a)
+        .unwrap()
+        .next(scene.polygon(a).unwrap().first())
+        .unwrap();
+    for i in 0..cycles / 2 {
+        let to = if i % 2 == 0 {
+            Point::new(5., -1.)
+        } else {
+            Point::new(4., 0.)
+        };
+        scene.move_vertex(a, corner, to).unwrap();
+        let d = if i % 2 == 0 { 0.5 } else { -0.5 };
+        scene.translate(a, d, d).unwrap();
+    }
+    let after_edits = scene.heap_bytes();
+    assert!(
+        after_edits <= baseline,
+        "{cycles} edits: {baseline} -> {after_edits} bytes"
+    );
+    assert_eq!(scene.candidate_pairs(), vec![]);
+    scene.debug_validate().unwrap();
+}
+
 #[test]
 fn an_edit_after_a_snapshot_never_yields_a_stale_answer() {
     for strategy in Strategy::ALL {
@@ -257,41 +398,44 @@ fn broad_phase_and_scene_queries_equal_brute_force() {
 #[test]
 fn parallel_batches_equal_sequential_queries_for_any_thread_count() {
     let mut rng = SmallRng::seed_from_u64(0xba7c);
-    let build = |rng: &mut SmallRng| scattered_scene(rng, 40, 11);
-    let ids: Vec<_> = build(&mut SmallRng::seed_from_u64(1)).ids().collect();
-    let mut pairs: Vec<_> = (0..400)
-        .map(|_| {
-            (
-                ids[rng.random_range(0..ids.len())],
-                ids[rng.random_range(0..ids.len())],
-            )
-        })
+    // Every scene built the same way, with one removed polygon; pairs name polygons by
+    // their rank in `ids()` (handles belong to one scene), the last index the removed one.
+    let build = || {
+        let mut scene = scattered_scene(&mut SmallRng::seed_from_u64(1), 40, 11);
+        let stale = scene.insert_points([[0., 0.], [1., 0.], [0., 1.]]).unwrap();
+        scene.remove(stale).unwrap();
+        let mut ids: Vec<_> = scene.ids().collect();
+        ids.push(stale);
+        (scene, ids)
+    };
+    let count = build().1.len() - 1;
+    let mut pairs: Vec<(usize, usize)> = (0..400)
+        .map(|_| (rng.random_range(0..count), rng.random_range(0..count)))
         .collect();
-    let mut sequential_scene = build(&mut SmallRng::seed_from_u64(1));
-    let stale = sequential_scene
-        .insert_points([[0., 0.], [1., 0.], [0., 1.]])
-        .unwrap();
-    sequential_scene.remove(stale).unwrap();
-    pairs.push((stale, ids[0]));
-    let sequential: Vec<_> = pairs
+    pairs.push((count, 0));
+    let handles = |ids: &[polysect::store::PolygonId]| -> Vec<_> {
+        pairs.iter().map(|&(a, b)| (ids[a], ids[b])).collect()
+    };
+    let (mut sequential_scene, ids) = build();
+    let sequential: Vec<_> = handles(&ids)
         .iter()
         .map(|&(a, b)| sequential_scene.intersects(a, b))
         .collect();
+    assert_eq!(sequential.last(), Some(&Err(SceneError::StalePolygon)));
+    let mut plan = None;
     for threads in [1, 2, 3] {
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
             .build()
             .unwrap();
-        let mut scene = build(&mut SmallRng::seed_from_u64(1));
-        let s = scene.insert_points([[0., 0.], [1., 0.], [0., 1.]]).unwrap();
-        scene.remove(s).unwrap();
+        let (mut scene, ids) = build();
+        let pairs = handles(&ids);
         let batch = pool.install(|| scene.intersects_batch(&pairs));
         assert_eq!(batch, sequential, "{threads} threads");
-        assert_eq!(
-            scene.stats(),
-            sequential_scene.stats(),
-            "{threads} threads: same plan"
-        );
+        // The batch is planned as a whole (it may convert where sequential queries
+        // would not), but the plan never depends on the thread count.
+        let stats = scene.stats();
+        assert_eq!(*plan.get_or_insert(stats), stats, "{threads} threads: same plan");
     }
 }
 

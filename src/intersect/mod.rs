@@ -15,6 +15,7 @@
 //! | [`ChazelleDobkin`] | arrays | O(log n + log m) | pivot, pencil of tangents, the two L chains halved by middle-edge slopes in a projective frame |
 //! | [`Clm`] | linked | expected O(√n + √m) | Chazelle–Liu–Magen: samples, a 2D LP, chains ([`crate::lp`]) |
 //! | [`Convert`] | linked | O(n + m) + array test | walk the lists into arrays, then an array algorithm |
+//! | [`LinearLinked`] | linked | O(n + m) | `Linear`'s rotating pointers along the links, no conversion; the store's route for small polygons |
 //!
 //! Each algorithm is a unit struct implementing [`ArrayIntersection`] and is listed
 //! once in [`Algorithm`], which the CLI, tests and benches iterate over. Tests on
@@ -28,6 +29,7 @@ mod chazelle_dobkin;
 mod clm;
 mod dobkin;
 mod linear;
+mod linear_linked;
 mod linked;
 
 pub use barba::Barba;
@@ -35,6 +37,7 @@ pub use chazelle_dobkin::ChazelleDobkin;
 pub use clm::{Clm, ClmWithFactor, ClmWorkspace};
 pub use dobkin::Dobkin;
 pub use linear::{Linear, brute_force};
+pub use linear_linked::LinearLinked;
 pub(crate) use linked::fresh_rng;
 pub use linked::{Convert, ConvertWorkspace, LinkedIntersection};
 

@@ -72,9 +72,10 @@ impl std::error::Error for PolygonError {}
 /// edit changes nothing.
 #[derive(Clone, Debug, PartialEq)]
 pub enum EditError {
-    /// The handle names a vertex that has been removed (or belongs to no vertex of
-    /// this polygon).
+    /// The handle names a vertex of this polygon that has been removed.
     StaleHandle,
+    /// The handle belongs to another polygon (or to another copy of this one).
+    ForeignHandle,
     /// The new point is NaN or infinite.
     NonFinite { point: Point },
     /// The polygon would stop being strictly convex: the new point is not in the
@@ -91,6 +92,10 @@ impl fmt::Display for EditError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             EditError::StaleHandle => write!(f, "the vertex handle is stale (the vertex was removed)"),
+            EditError::ForeignHandle => write!(
+                f,
+                "the vertex handle belongs to another polygon, not to the one being queried or edited"
+            ),
             EditError::NonFinite { point } => {
                 write!(f, "point ({}, {}) has a non-finite coordinate", point.x, point.y)
             }

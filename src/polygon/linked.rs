@@ -9,10 +9,14 @@
 //! sampling stays exactly uniform after any sequence of removals and the storage
 //! never holds more than the live vertices (plus `Vec` slack).
 //!
-//! Users hold [`VertexId`]s: a key into a `slab` of slots (each slot records the
-//! node's current position) plus a generation. Slab keys are reused after removal;
-//! the generation (a per-polygon counter, 64 bits, never reused) makes a stale handle
-//! an error instead of an alias of some later vertex.
+//! Users hold [`VertexId`]s: the polygon's identity, a key into a `slab` of slots (each
+//! slot records the node's current position) and a generation. The identity is drawn
+//! from one process-wide counter when the polygon is built or cloned, so a handle from
+//! another polygon is refused ([`EditError::ForeignHandle`]) instead of naming
+//! whichever vertex sits in the same slot here. Slab keys are reused after removal; the
+//! generation (a per-polygon counter, 64 bits, never reused) makes a stale handle an
+//! error ([`EditError::StaleHandle`]) instead of an alias of some later vertex. Checking
+//! a handle is one comparison more than the slab lookup; no edit touches the counter.
 //!
 //! Algorithms inside the crate walk positions directly (`*_at` methods); positions
 //! are valid until the next edit, which the borrow checker enforces for anyone
@@ -30,13 +34,41 @@ use super::{ConvexPolygon, EditError, PolygonError};
 use crate::kernel::{Exact, Kernel, Orientation, Point};
 use rand::Rng;
 use slab::Slab;
+use std::sync::atomic::{AtomicU64, Ordering};
 
-/// A stable handle to a vertex of a [`LinkedPolygon`]. Stays valid until that vertex
-/// is removed; afterwards every use is an [`EditError::StaleHandle`].
+/// A stable handle to a vertex of one [`LinkedPolygon`]. Stays valid until that vertex
+/// is removed; afterwards every use is an [`EditError::StaleHandle`]. Given to any other
+/// polygon (including a clone of its own), every use is an [`EditError::ForeignHandle`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct VertexId {
-    slot: u32,
+    owner: u64,
     generation: u64,
+    slot: u32,
+}
+
+/// A process-wide unique identity, for the owner of handles (a polygon, a scene).
+/// Cloning draws a fresh one: a clone is a new owner, and handles of the original are
+/// foreign to it. One relaxed atomic increment per owner built (64 bits: never wraps in
+/// practice; `AtomicU64` exists on every target the library builds for, wasm32 included).
+#[derive(Debug, PartialEq, Eq)]
+pub(crate) struct Identity(u64);
+
+impl Identity {
+    pub(crate) fn fresh() -> Self {
+        static NEXT: AtomicU64 = AtomicU64::new(1);
+        Identity(NEXT.fetch_add(1, Ordering::Relaxed))
+    }
+
+    #[inline]
+    pub(crate) fn get(&self) -> u64 {
+        self.0
+    }
+}
+
+impl Clone for Identity {
+    fn clone(&self) -> Self {
+        Identity::fresh()
+    }
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -56,6 +88,11 @@ struct Slot {
 /// A convex polygon as a doubly linked list of vertices, counter-clockwise, with O(1)
 /// validated edits and O(1) uniform vertex sampling. See the module docs for the layout.
 ///
+/// Vertex handles ([`VertexId`]) belong to the polygon that issued them: another
+/// polygon refuses them with [`EditError::ForeignHandle`]. A clone is another polygon
+/// (same vertices, fresh handles: take them from the clone with [`first`](Self::first),
+/// [`iter`](Self::iter) or [`next`](Self::next)).
+///
 /// ```
 /// use polysect::{LinkedPolygon, Point, EditError};
 /// let mut p = LinkedPolygon::from_points([[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]])?;
@@ -69,13 +106,21 @@ struct Slot {
 /// p.remove(v)?;
 /// assert_eq!(p.remove(v), Err(EditError::StaleHandle));
 /// assert_eq!(p.next(a)?, b);
+/// // A handle of another polygon is refused, never applied to this one.
+/// let other = LinkedPolygon::from_points([[10.0, 10.0], [11.0, 10.0], [11.0, 11.0]])?;
+/// assert_eq!(p.remove(other.first()), Err(EditError::ForeignHandle));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Clone, Debug)]
 pub struct LinkedPolygon {
+    owner: Identity,
     nodes: Vec<Node>,
     slots: Slab<Slot>,
     next_generation: u64,
+    /// Inserts and removals since the arena was built in boundary order (its length for
+    /// a shuffled build): each relinks O(1) nodes out of storage order. See
+    /// [`arena_disorder`](Self::arena_disorder).
+    relinks: usize,
 }
 
 /// Scratch memory for [`LinkedPolygon::sample_positions`], reused across queries so a
@@ -127,7 +172,7 @@ impl LinkedPolygon {
     /// Links the vertices of `polygon`, stored in boundary order. O(n).
     pub fn from_convex(polygon: &ConvexPolygon) -> Self {
         let order: Vec<u32> = (0..polygon.len() as u32).collect();
-        Self::with_storage_order(polygon, &order)
+        Self::with_storage_order(polygon, &order, 0)
     }
 
     /// Links the vertices of `polygon`, stored in a uniformly random order of the
@@ -138,11 +183,11 @@ impl LinkedPolygon {
         for i in (1..order.len()).rev() {
             order.swap(i, rng.random_range(0..=i));
         }
-        Self::with_storage_order(polygon, &order)
+        Self::with_storage_order(polygon, &order, polygon.len())
     }
 
     /// Boundary vertex `i` is stored at position `order[i]`.
-    fn with_storage_order(polygon: &ConvexPolygon, order: &[u32]) -> Self {
+    fn with_storage_order(polygon: &ConvexPolygon, order: &[u32], relinks: usize) -> Self {
         let n = polygon.len();
         let mut nodes = vec![
             Node {
@@ -168,9 +213,11 @@ impl LinkedPolygon {
             };
         }
         LinkedPolygon {
+            owner: Identity::fresh(),
             nodes,
             slots,
             next_generation: n as u64,
+            relinks,
         }
     }
 
@@ -186,15 +233,33 @@ impl LinkedPolygon {
         self.id_at(0)
     }
 
+    #[inline]
     fn pos(&self, id: VertexId) -> Result<usize, EditError> {
+        if id.owner != self.owner.get() {
+            return Err(EditError::ForeignHandle);
+        }
         match self.slots.get(id.slot as usize) {
             Some(s) if s.generation == id.generation => Ok(s.pos as usize),
             _ => Err(EditError::StaleHandle),
         }
     }
 
-    /// True while `id` names a live vertex of this polygon.
-    pub fn contains(&self, id: VertexId) -> bool {
+    /// True while `id` names a live vertex of this polygon (false for a removed vertex
+    /// and for a handle of another polygon). This asks about a handle, not whether a
+    /// point lies in the polygon.
+    ///
+    /// ```
+    /// use polysect::LinkedPolygon;
+    /// let mut p = LinkedPolygon::from_points([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+    /// let q = p.clone();
+    /// let v = p.first();
+    /// assert!(p.has_vertex(v));
+    /// assert!(!q.has_vertex(v)); // a clone is another polygon
+    /// p.remove(v)?;
+    /// assert!(!p.has_vertex(v));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn has_vertex(&self, id: VertexId) -> bool {
         self.pos(id).is_ok()
     }
 
@@ -260,6 +325,7 @@ impl LinkedPolygon {
         let pos = self.nodes.len() as u32;
         let generation = self.bump_generation();
         let slot = self.slots.insert(Slot { pos, generation }) as u32;
+        let owner = self.owner.get();
         self.nodes.push(Node {
             point,
             next: b as u32,
@@ -268,7 +334,12 @@ impl LinkedPolygon {
         });
         self.nodes[a].next = pos;
         self.nodes[b].prev = pos;
-        Ok(VertexId { slot, generation })
+        self.relinks = self.relinks.saturating_add(1);
+        Ok(VertexId {
+            owner,
+            generation,
+            slot,
+        })
     }
 
     /// Removes the vertex, returning its point. O(1).
@@ -297,6 +368,7 @@ impl LinkedPolygon {
             self.nodes[moved.next as usize].prev = r as u32;
             self.slots[moved.slot as usize].pos = r as u32;
         }
+        self.relinks = self.relinks.saturating_add(1);
         Ok(point)
     }
 
@@ -362,40 +434,55 @@ impl LinkedPolygon {
             }
             exact &= two_sum_error(p.x, dx, q.x) == 0.0 && two_sum_error(p.y, dy, q.y) == 0.0;
         }
-        if !exact {
-            self.check_translated(moved)?;
+        if exact {
+            self.translate_unchecked(dx, dy);
+            return Ok(());
         }
-        for node in &mut self.nodes {
-            node.point = moved(node.point);
-        }
-        Ok(())
+        self.translate_finite(dx, dy, None).map(|_| ())
     }
 
-    /// Checks exactly that the polygon with every vertex mapped by `f` is strictly convex,
-    /// counter-clockwise and winds once, walking the boundary from position 0.
-    fn check_translated(&self, f: impl Fn(Point) -> Point) -> Result<(), EditError> {
-        use super::convex::upper;
-        let start = 0;
-        let (mut a, mut b) = (f(self.point_at(self.prev_at(start))), f(self.point_at(start)));
-        let mut pos = start;
-        let mut windings = 0;
-        for _ in 0..self.len() {
-            let next = self.next_at(pos);
-            let c = f(self.point_at(next));
-            if Exact.orient(a, b, c) != Orientation::Ccw {
-                return Err(EditError::RoundingBreaksConvexity { point: b });
+    /// [`translate`](Self::translate) when the caller knows that no translated coordinate
+    /// overflows (`dx`, `dy` finite, and, say, the translated bounding box finite).
+    /// With `boundary`, the polygon's vertices counter-clockwise from position 0 (its
+    /// array snapshot), the rounded boundary is checked on that contiguous array instead
+    /// of along the links: one sequential read instead of a walk. O(n).
+    ///
+    /// Returns the translated polygon's rounding margin ([`turn_margin`], the least over its
+    /// turns): any later translation whose
+    /// rounding moves no coordinate by `margin` or more keeps it strictly convex.
+    pub(crate) fn translate_finite(
+        &mut self,
+        dx: f64,
+        dy: f64,
+        boundary: Option<&[Point]>,
+    ) -> Result<f64, EditError> {
+        let moved = |p: Point| Point::new(p.x + dx, p.y + dy);
+        let margin = match boundary {
+            Some(ring) => {
+                debug_assert!(ring.len() == self.len() && ring[0] == self.point_at(0));
+                check_rounded_ring(ring[ring.len() - 1], ring.iter().copied(), moved)?
             }
-            if !upper(a, b) && upper(b, c) {
-                windings += 1;
+            None => {
+                let mut pos = 0;
+                let walk = (0..self.len()).map(|_| {
+                    let here = self.point_at(pos);
+                    pos = self.next_at(pos);
+                    here
+                });
+                check_rounded_ring(self.point_at(self.prev_at(0)), walk, moved)?
             }
-            (a, b, pos) = (b, c, next);
+        };
+        self.translate_unchecked(dx, dy);
+        Ok(margin)
+    }
+
+    /// Translates every vertex without checking anything: for callers that have proved
+    /// the rounded polygon strictly convex (a margin from [`translate_finite`]) and no
+    /// coordinate overflowing. O(n), one sequential pass.
+    pub(crate) fn translate_unchecked(&mut self, dx: f64, dy: f64) {
+        for node in &mut self.nodes {
+            node.point = Point::new(node.point.x + dx, node.point.y + dy);
         }
-        if windings != 1 {
-            return Err(EditError::RoundingBreaksConvexity {
-                point: f(self.point_at(start)),
-            });
-        }
-        Ok(())
     }
 
     /// Whether `v` may sit between the vertices at positions a and b = next(a) (or
@@ -414,6 +501,30 @@ impl LinkedPolygon {
         let g = self.next_generation;
         self.next_generation += 1;
         g
+    }
+
+    /// An estimate in [0, 1] of how far the arena's storage order is from boundary order:
+    /// 0 when built in order and only moved since, 1 when shuffled. Each insert or
+    /// removal breaks at most three links out of storage order, so the estimate is
+    /// `min(1, 3 · relinks / len)`. Walks along the links slow down with it (cache
+    /// misses instead of sequential reads), which the store's cost model prices. O(1).
+    pub(crate) fn arena_disorder(&self) -> f64 {
+        (3.0 * self.relinks as f64 / self.len() as f64).min(1.0)
+    }
+
+    /// True when position i's successor is position i + 1 (and the last position's is 0):
+    /// walks may then read positions in order instead of following the links. O(1) for
+    /// an arena built in order and only moved or translated since, else O(n) at worst
+    /// (it stops at the first link out of order).
+    pub(crate) fn in_boundary_order(&self) -> bool {
+        if self.relinks == 0 {
+            return true;
+        }
+        let n = self.nodes.len();
+        self.nodes
+            .iter()
+            .enumerate()
+            .all(|(i, node)| node.next as usize == if i + 1 == n { 0 } else { i + 1 })
     }
 
     /// Vertices the arena can hold without reallocating (nodes and handle slots, the
@@ -481,9 +592,20 @@ impl LinkedPolygon {
         }
     }
 
-    /// The polygon as a sorted array, starting at [`first`](Self::first). O(n).
+    /// The polygon as a sorted array, starting at [`first`](Self::first). O(n): a copy
+    /// in storage order when the arena is in boundary order (built in order and never
+    /// relinked since: no dependent loads), else one walk along the links.
     pub fn to_convex(&self) -> ConvexPolygon {
-        ConvexPolygon::from_ccw_unchecked(self.iter().map(|(_, p)| p).collect())
+        if self.in_boundary_order() {
+            return ConvexPolygon::from_ccw_unchecked(self.nodes.iter().map(|node| node.point).collect());
+        }
+        let mut pos = 0;
+        let walk = (0..self.len()).map(|_| {
+            let node = &self.nodes[pos];
+            pos = node.next as usize;
+            node.point
+        });
+        ConvexPolygon::from_ccw_unchecked(walk.collect())
     }
 
     /// The point stored at position `pos` (positions are `0..len`, valid until the next edit).
@@ -509,8 +631,9 @@ impl LinkedPolygon {
     pub fn id_at(&self, pos: usize) -> VertexId {
         let slot = self.nodes[pos].slot;
         VertexId {
-            slot,
+            owner: self.owner.get(),
             generation: self.slots[slot as usize].generation,
+            slot,
         }
     }
 
@@ -552,6 +675,9 @@ impl LinkedPolygon {
         if pos != 0 {
             return Err("the boundary walk does not close".into());
         }
+        if self.relinks == 0 && (0..n).any(|i| self.next_at(i) != (i + 1) % n) {
+            return Err("no relinks recorded, but the arena is not in boundary order".into());
+        }
         self.to_convex().debug_validate()
     }
 }
@@ -561,6 +687,76 @@ impl LinkedPolygon {
 fn two_sum_error(a: f64, b: f64, s: f64) -> f64 {
     let bb = s - a;
     (a - (s - bb)) + (b - bb)
+}
+
+/// Checks exactly that the boundary `ring` (counter-clockwise, the vertex before its
+/// first is `last`) with every vertex mapped by `f` is strictly convex,
+/// counter-clockwise and winds once; the error names the first failing mapped vertex
+/// from the ring's start, or its first vertex when the boundary would wind more than
+/// once. On success returns the mapped boundary's rounding margin: the least
+/// [`turn_margin`] of its turns.
+fn check_rounded_ring(
+    last: Point,
+    mut ring: impl Iterator<Item = Point>,
+    f: impl Fn(Point) -> Point,
+) -> Result<f64, EditError> {
+    use super::convex::upper;
+    let Some(first) = ring.next() else {
+        return Ok(0.0);
+    };
+    let (mut a, mut b) = (f(last), f(first));
+    let mut windings = 0;
+    let mut margin = f64::INFINITY;
+    for c in ring.map(&f).chain(std::iter::once(f(first))) {
+        if Exact.orient(a, b, c) != Orientation::Ccw {
+            return Err(EditError::RoundingBreaksConvexity { point: b });
+        }
+        if !upper(a, b) && upper(b, c) {
+            windings += 1;
+        }
+        margin = margin.min(turn_margin(a, b, c));
+        (a, b) = (b, c);
+    }
+    if windings != 1 {
+        return Err(EditError::RoundingBreaksConvexity { point: f(first) });
+    }
+    Ok(margin)
+}
+
+/// A lower bound on `L / (2·S + 8)` for the turn a → b → c: L a lower bound on the exact
+/// determinant D = (b − a) × (c − b), S an upper bound on ‖b − a‖₁ + ‖c − b‖₁; zero when
+/// the floating-point evaluation cannot certify D > 0.
+///
+/// # Why it is a rounding margin
+/// Move every vertex by at most δ ≤ 1 in each coordinate: each edge vector moves by at
+/// most 2δ per coordinate, so D changes by at most 2δ·(‖u‖₁ + ‖v‖₁) + 8δ² ≤ δ·(2S + 8).
+/// If δ is below this bound for every turn, every turn stays strictly left all along the
+/// straight-line motion, so the total turning, a multiple of 2π that varies
+/// continuously, stays 2π: the moved polygon is strictly convex and winds once. A
+/// rounded translation moves every vertex by at most half an ulp of its new coordinates
+/// from the exact translate, which preserves D. After such a move the bound for the
+/// moved polygon is at least (m − δ) / (1 + 2δ) for the old bound m, which the caller
+/// uses to skip checks of the next translations.
+///
+/// # Precision
+/// D is evaluated in floating point as u_x·v_y − u_y·v_x on rounded differences; its
+/// error is below 3.01ε·(|u_x·v_y| + |u_y·v_x|) (Shewchuk's bound for orient2d); we
+/// subtract 8ε times that sum, and widen S by a factor 1 + 8ε, then shrink the ratio by
+/// 1 − 8ε, so every rounding is covered with room to spare. Where the products could
+/// leave the normal range (overflow, or underflow that voids relative bounds) the margin
+/// is zero: no check is ever skipped on its strength.
+pub(crate) fn turn_margin(a: Point, b: Point, c: Point) -> f64 {
+    const EPS: f64 = f64::EPSILON / 2.0;
+    let (ux, uy, vx, vy) = (b.x - a.x, b.y - a.y, c.x - b.x, c.y - b.y);
+    let (l, r) = (ux * vy, uy * vx);
+    let size = l.abs() + r.abs();
+    if size.is_nan() || size < 1e-270 {
+        return 0.0;
+    }
+    let lower = (l - r) - 8.0 * EPS * (l.abs() + r.abs());
+    let s = (ux.abs() + uy.abs() + vx.abs() + vy.abs()) * (1.0 + 8.0 * EPS);
+    let m = lower / (2.0 * s + 8.0) * (1.0 - 8.0 * EPS);
+    if m.is_finite() && m > 0.0 { m } else { 0.0 }
 }
 
 /// Serialised as its vertex list, counter-clockwise from [`LinkedPolygon::first`];
@@ -626,7 +822,47 @@ mod tests {
         );
         assert_eq!(p.point(w), Ok(Point::new(2., -0.5)));
         let other = square();
-        assert!(other.contains(other.first()));
+        assert!(other.has_vertex(other.first()));
+    }
+
+    #[test]
+    fn a_handle_of_another_polygon_is_refused_by_every_method() {
+        let mut a = square();
+        let b = LinkedPolygon::from_points([[10., 10.], [11., 10.], [11., 11.]]).unwrap();
+        // The same slot and generation exist in `a`: only the owner tells them apart.
+        let vb = b.next(b.first()).unwrap();
+        let twin = a.next(a.first()).unwrap();
+        assert_eq!((vb.slot, vb.generation), (twin.slot, twin.generation));
+        let copy = a.clone();
+        let from_copy = copy.first();
+        let before: Vec<_> = a.iter().map(|(_, p)| p).collect();
+        for foreign in [vb, from_copy] {
+            assert!(!a.has_vertex(foreign));
+            assert_eq!(a.point(foreign), Err(EditError::ForeignHandle));
+            assert_eq!(a.next(foreign), Err(EditError::ForeignHandle));
+            assert_eq!(a.prev(foreign), Err(EditError::ForeignHandle));
+            assert_eq!(a.position(foreign), Err(EditError::ForeignHandle));
+            assert!(matches!(a.iter_from(foreign), Err(EditError::ForeignHandle)));
+            assert_eq!(
+                a.insert_after(foreign, Point::new(2., -1.)),
+                Err(EditError::ForeignHandle)
+            );
+            assert_eq!(a.remove(foreign), Err(EditError::ForeignHandle));
+            assert_eq!(
+                a.move_vertex(foreign, Point::new(5., -1.)),
+                Err(EditError::ForeignHandle)
+            );
+        }
+        assert_eq!(a.iter().map(|(_, p)| p).collect::<Vec<_>>(), before);
+        // The original's handles are foreign to the clone too, and each polygon still
+        // accepts its own.
+        assert_eq!(copy.point(a.first()), Err(EditError::ForeignHandle));
+        assert!(copy.has_vertex(from_copy) && a.has_vertex(twin) && b.has_vertex(vb));
+        // A removed vertex of this polygon stays stale, not foreign.
+        let v = a.insert_after(a.first(), Point::new(2., -1.)).unwrap();
+        a.remove(v).unwrap();
+        assert_eq!(a.point(v), Err(EditError::StaleHandle));
+        a.debug_validate().unwrap();
     }
 
     #[test]

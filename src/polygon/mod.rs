@@ -23,6 +23,7 @@ mod simple;
 pub use convex::ConvexPolygon;
 pub use error::{EditError, PolygonError};
 pub use hull::convex_hull;
+pub(crate) use linked::Identity;
 pub use linked::{LinkedPolygon, SampleWorkspace, VertexId};
 pub use simple::{SimplePolygon, SimplePolygonError};
 

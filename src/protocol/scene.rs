@@ -305,7 +305,7 @@ impl<K: Kernel> SceneSession<K> {
                 ));
             }
             for (&id, &v) in &named.vertices {
-                if !poly.contains(v) || id >= named.next_id {
+                if !poly.has_vertex(v) || id >= named.next_id {
                     return Err(format!("{name:?}: id {id} is stale or beyond {}", named.next_id));
                 }
             }

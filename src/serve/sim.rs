@@ -639,6 +639,7 @@ fn stats_delta(a: PlannerStats, b: PlannerStats) -> PlannerStats {
         box_rejects: a.box_rejects - b.box_rejects,
         array_tests: a.array_tests - b.array_tests,
         sampled_tests: a.sampled_tests - b.sampled_tests,
+        linear_tests: a.linear_tests - b.linear_tests,
         conversions: a.conversions - b.conversions,
         throwaway_conversions: a.throwaway_conversions - b.throwaway_conversions,
         invalidations: a.invalidations - b.invalidations,

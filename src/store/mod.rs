@@ -10,28 +10,32 @@
 //! more than they are edited.
 //!
 //! # The planner
-//! `intersects(a, b)`:
+//! `intersects(a, b)` is a batch of one; `intersects_batch`, `intersecting` and
+//! `intersecting_pairs` plan all their pairs together:
 //! 1. Bounding boxes first (exact comparisons): disjoint boxes answer `false`.
-//! 2. Both snapshots valid: an O(log n) array test on the snapshots.
-//! 3. Otherwise, each polygon without a snapshot is converted now if the sampled
-//!    queries it has taken part in since its last edit have already cost as much as
-//!    converting it would (ski rental: pay rent until it sums to the purchase price, then
-//!    buy; never more than twice the cost of the best choice made knowing the future).
-//!    If both now have snapshots, step 2; else the sublinear sampled test
-//!    (Chazelle–Liu–Magen) on the linked polygons, charging each unconverted polygon the
-//!    estimated cost of that query as rent. An edit drops the snapshot and clears the rent.
+//! 2. Every polygon without a snapshot is credited, for each planned query it is in,
+//!    with what its conversion would save that query: the whole saving (the query's
+//!    cost without snapshots, less the array test) when the other polygon has a
+//!    snapshot, half of it when neither has one.
+//! 3. A polygon is converted when the queries being planned alone pay for its
+//!    conversion, or (ski rental) when the rent it has paid since its last edit plus
+//!    their saving reaches the price, unless the queries expected before its next edit
+//!    would not pay for it. Polygons whose partners were just chosen are offered the
+//!    other half of the saving once more.
+//! 4. Pairs with two snapshots get an O(log n) array test; the others the sublinear
+//!    sampled test (Chazelle–Liu–Magen) on the linked polygons, and each unconverted
+//!    polygon pays its share of the saving as rent. An edit drops the snapshot and clears
+//!    the rent; a translation keeps both.
+//!
+//! Charging each polygon what *its* conversion saves is what makes a triangle moved
+//! before every query against a large polygon holding its snapshot convert at once
+//! (a few hundred nanoseconds) instead of paying a sampled query on the large polygon
+//! every time. Planning is O(1) per pair (per-polygon marks), so a batch is planned in
+//! linear time.
 //!
 //! The estimates come from a [`CostModel`]: conversion costs `c_convert · n`, a sampled
 //! query `c_sampled · √n` for the larger polygon; a measured default, or
-//! [`Scene::calibrate`] on the user's machine. A polygon of n vertices is therefore
-//! converted after about `(c_convert / c_sampled) · √n` sampled queries without an edit
-//! (about 95 at n = 2^18 with the default model): small polygons almost at once, large
-//! ones only when they are queried far more often than edited. The model's `crossover`
-//! (the size below which one conversion plus an array test beats one sampled query) is
-//! measured and reported; the rule does not need it separately. We first also converted
-//! every polygon below the crossover at once; on the demo's workloads that made the
-//! planner 1.4× slower than always sampling, because small polygons were edited again
-//! before their snapshots paid off (docs/store.md).
+//! [`Scene::calibrate`] on the user's machine.
 
 //! # Bounding boxes under edits
 //! Growing a box is O(1) per edit. A removal or an inward move of a vertex on the box
@@ -40,9 +44,10 @@
 //! tight again whenever the polygon is walked anyway (at conversion).
 //!
 //! # Broad phase
-//! An R-tree (`rstar`) over the bounding boxes, updated lazily: edits mark polygons
-//! dirty, and the next scene query re-inserts the dirty boxes (or bulk-loads the tree
-//! when most of them are dirty).
+//! Sort and sweep over the bounding boxes (`broad.rs`), updated lazily: edits mark
+//! polygons dirty, and the next scene query re-reads the dirty boxes and repairs the
+//! order by insertion sort (or sorts again when most moved far); the last sweep's pairs
+//! are reused while nothing changes.
 //!
 //! # Parallel batches
 //! [`Scene::intersects_batch`] and [`Scene::intersecting_pairs`] plan sequentially,
@@ -54,9 +59,10 @@ mod broad;
 #[cfg(feature = "geo-types")]
 mod interop;
 mod planner;
+mod route;
 mod scene;
 pub mod workload;
 
 pub use broad::BoundingBox;
-pub use planner::{CostModel, PlannerStats, Strategy};
+pub use planner::{Arena, CostModel, PlannerStats, Strategy};
 pub use scene::{PolygonId, Scene, SceneError};

@@ -1,22 +1,25 @@
 //! [`Scene`]: the store of editable polygons and its query planner.
 
 use super::broad::{BoundingBox, BroadPhase};
-use super::planner::{CostModel, PlannerStats, Strategy, array_test};
-use crate::intersect::{Clm, ClmWorkspace, LinkedIntersection};
+use super::planner::{Account, Arena, CostModel, PlannerStats, Strategy};
+use super::route::{QueryWorkspace, Route, array_test, linear_test, sampled_test};
 use crate::kernel::{Exact, Kernel, Point};
-use crate::polygon::{ConvexPolygon, EditError, LinkedPolygon, PolygonError, VertexId};
-use rand::SeedableRng;
+use crate::polygon::{ConvexPolygon, EditError, Identity, LinkedPolygon, PolygonError, VertexId};
 use rand::rngs::SmallRng;
+use rand::{RngCore, SeedableRng};
 #[cfg(feature = "parallel")]
 use rayon::prelude::*;
 use slab::Slab;
 use std::fmt;
 
-/// A handle to a polygon in a [`Scene`]. Carries a generation: after the polygon is
-/// removed, every use is [`SceneError::StalePolygon`], even if its slot is reused.
+/// A handle to a polygon in one [`Scene`]. Carries a generation: after the polygon is
+/// removed, every use is [`SceneError::StalePolygon`], even if its slot is reused. It also
+/// carries the scene's identity: given to any other scene (a clone included), every use
+/// is [`SceneError::ForeignPolygon`]. Handles of one scene order by slot.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct PolygonId {
+    scene: u64,
     key: u32,
     generation: u64,
 }
@@ -26,6 +29,8 @@ pub struct PolygonId {
 pub enum SceneError {
     /// The polygon handle is stale (the polygon was removed).
     StalePolygon,
+    /// The polygon handle belongs to another scene (or to another copy of this one).
+    ForeignPolygon,
     /// A vertex edit was refused.
     Edit(EditError),
     /// A polygon to insert is invalid.
@@ -36,6 +41,7 @@ impl fmt::Display for SceneError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             SceneError::StalePolygon => write!(f, "the polygon handle is stale (the polygon was removed)"),
+            SceneError::ForeignPolygon => write!(f, "the polygon handle belongs to another scene"),
             SceneError::Edit(e) => write!(f, "{e}"),
             SceneError::Polygon(e) => write!(f, "{e}"),
         }
@@ -68,63 +74,66 @@ struct Entry {
     version: u64,
     /// The array form, present only while the polygon is unchanged since it was built.
     snapshot: Option<ConvexPolygon>,
-    /// Estimated cost of the sampled queries this polygon took part in since its last
-    /// edit (the planner's ski-rental account), in nanoseconds.
-    rent_ns: f64,
-    /// The estimated cost of the last sampled query it took part in.
-    last_rent_ns: f64,
-    /// Queries (past the bounding boxes) since the last edit.
-    queries_since_edit: u32,
-    /// Moving average of the number of queries between two edits (infinite until the
-    /// first edit: no history, plain ski rental).
-    queries_per_edit: f64,
+    /// The planner's ski-rental account.
+    account: Account,
+    /// A translation whose rounding moves no coordinate by this much or more keeps the
+    /// polygon strictly convex (0: unknown); see `Scene::translate`.
+    rounding_margin: f64,
+    /// Scratch of the plan being made: chosen for conversion, and what a snapshot would
+    /// save the planned queries (and how many) that involve this polygon.
+    plan: PlanMark,
+}
+
+/// A planned batch: a route per pair (in input order), the polygons to convert first,
+/// and the estimated costs of the conversions and of the answers, in nanoseconds.
+struct Plan {
+    routes: Vec<Result<Route, SceneError>>,
+    chosen: Vec<usize>,
+    convert_ns: f64,
+    answer_ns: f64,
+}
+
+/// Conversions, or answers, run on other threads too only when there are several and
+/// their estimated cost reaches this: handing work to other threads costs microseconds,
+/// and far more when the machine is busy (the caller waits for a worker to wake up).
+const PARALLEL_MIN_NS: f64 = 1e6;
+
+/// Per-polygon marks of one plan, so that planning a batch is O(1) per pair; every
+/// field is back at its default when a plan ends.
+#[derive(Clone, Copy, Debug, Default)]
+struct PlanMark {
+    convert: bool,
+    touched: bool,
+    known_ns: f64,
+    known: u32,
 }
 
 impl Entry {
     fn edited(&mut self, stats: &mut PlannerStats) {
         self.version += 1;
-        self.rent_ns = 0.0;
-        let q = self.queries_since_edit as f64;
-        self.queries_per_edit = if self.queries_per_edit.is_finite() {
-            0.5 * self.queries_per_edit + 0.5 * q
-        } else {
-            q
-        };
-        self.queries_since_edit = 0;
+        self.account.edited();
+        self.rounding_margin = 0.0;
         if self.snapshot.take().is_some() {
             stats.invalidations += 1;
         }
     }
-}
 
-/// Per-query scratch memory, reused so that queries allocate nothing in the steady state.
-#[derive(Clone, Debug, Default)]
-pub(crate) struct QueryWorkspace {
-    clm: ClmWorkspace,
-}
-
-/// The sampled (sublinear) test on two linked polygons: Chazelle–Liu–Magen.
-pub(crate) fn sampled_test<K: Kernel>(
-    kernel: K,
-    p: &LinkedPolygon,
-    q: &LinkedPolygon,
-    ws: &mut QueryWorkspace,
-    rng: &mut SmallRng,
-) -> bool {
-    Clm.intersects_with_workspace(kernel, p, q, rng, &mut ws.clm)
-}
-
-/// How one planned query will be answered.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Route {
-    Known(bool),
-    Arrays(usize, usize),
-    Sampled(usize, usize),
-    Throwaway(usize, usize),
+    /// Has a snapshot, or will have one before the plan is answered.
+    fn will_have_snapshot(&self) -> bool {
+        self.snapshot.is_some() || self.plan.convert
+    }
 }
 
 /// A scene of editable convex polygons with planned intersection queries; see the
 /// [module docs](super) for the planner's rule.
+///
+/// # Handles
+/// Every method taking a [`PolygonId`] refuses a handle of a removed polygon
+/// ([`SceneError::StalePolygon`]) and a handle of another scene
+/// ([`SceneError::ForeignPolygon`]); every method taking a [`VertexId`] refuses a vertex
+/// handle of another polygon (`SceneError::Edit(EditError::ForeignHandle)`), also one of
+/// a polygon of this scene. A refused call changes nothing. A clone of a scene is another
+/// scene: take its handles from [`ids`](Self::ids).
 ///
 /// ```
 /// use polysect::store::Scene;
@@ -142,6 +151,8 @@ enum Route {
 /// ```
 #[derive(Clone, Debug)]
 pub struct Scene<K: Kernel = Exact> {
+    /// Fresh for every scene and every clone: handles name polygons of this scene only.
+    identity: Identity,
     kernel: K,
     entries: Slab<Entry>,
     next_generation: u64,
@@ -170,6 +181,7 @@ impl<K: Kernel> Scene<K> {
     /// An empty scene deciding predicates with `kernel`.
     pub fn with_kernel(kernel: K) -> Self {
         Scene {
+            identity: Identity::fresh(),
             kernel,
             entries: Slab::new(),
             next_generation: 0,
@@ -233,7 +245,9 @@ impl<K: Kernel> Scene<K> {
 
     /// The handles of all polygons, in slot order.
     pub fn ids(&self) -> impl Iterator<Item = PolygonId> + '_ {
-        self.entries.iter().map(|(k, e)| PolygonId {
+        let scene = self.identity.get();
+        self.entries.iter().map(move |(k, e)| PolygonId {
+            scene,
             key: k as u32,
             generation: e.generation,
         })
@@ -242,6 +256,25 @@ impl<K: Kernel> Scene<K> {
     /// Number of polygons that currently hold an array snapshot.
     pub fn snapshot_count(&self) -> usize {
         self.entries.iter().filter(|(_, e)| e.snapshot.is_some()).count()
+    }
+
+    /// Heap memory held by the scene's structures, in bytes: the polygons' arenas, the
+    /// snapshots, the slots and the broad phase (per-query scratch memory, bounded by
+    /// the largest polygon queried, is not counted). It is O(slots + vertices) whatever
+    /// the sequence of calls: no structure grows with the number of edits or queries.
+    /// Slots are the largest number of polygons the scene has held at once.
+    pub fn heap_bytes(&self) -> usize {
+        let polygons: usize = self
+            .entries
+            .iter()
+            .map(|(_, e)| {
+                e.polygon.arena_bytes()
+                    + e.snapshot
+                        .as_ref()
+                        .map_or(0, |s| std::mem::size_of_val(s.vertices()))
+            })
+            .sum();
+        polygons + self.entries.capacity() * std::mem::size_of::<Entry>() + self.broad.heap_bytes()
     }
 
     /// Adds a polygon.
@@ -256,13 +289,13 @@ impl<K: Kernel> Scene<K> {
             bbox_tight: true,
             version: 0,
             snapshot: None,
-            rent_ns: 0.0,
-            last_rent_ns: 0.0,
-            queries_since_edit: 0,
-            queries_per_edit: f64::INFINITY,
+            account: Account::default(),
+            rounding_margin: 0.0,
+            plan: PlanMark::default(),
         });
         self.broad.mark(key);
         PolygonId {
+            scene: self.identity.get(),
             key: key as u32,
             generation,
         }
@@ -277,14 +310,21 @@ impl<K: Kernel> Scene<K> {
         Ok(self.insert(LinkedPolygon::from_points(points)?))
     }
 
-    /// Removes a polygon, returning it.
+    /// Removes a polygon, returning it (its vertex handles stay valid on it).
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`.
     pub fn remove(&mut self, id: PolygonId) -> Result<LinkedPolygon, SceneError> {
         let key = self.key(id)?;
         self.broad.mark(key);
         Ok(self.entries.remove(key).polygon)
     }
 
+    #[inline]
     fn key(&self, id: PolygonId) -> Result<usize, SceneError> {
+        if id.scene != self.identity.get() {
+            return Err(SceneError::ForeignPolygon);
+        }
         match self.entries.get(id.key as usize) {
             Some(e) if e.generation == id.generation => Ok(id.key as usize),
             _ => Err(SceneError::StalePolygon),
@@ -293,12 +333,16 @@ impl<K: Kernel> Scene<K> {
 
     fn id_of(&self, key: usize) -> PolygonId {
         PolygonId {
+            scene: self.identity.get(),
             key: key as u32,
             generation: self.entries[key].generation,
         }
     }
 
     /// The polygon (read-only; edit through the scene so caches stay correct).
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon` (as every method taking a `PolygonId`).
     pub fn polygon(&self, id: PolygonId) -> Result<&LinkedPolygon, SceneError> {
         self.key(id).map(|k| &self.entries[k].polygon)
     }
@@ -320,6 +364,11 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Inserts a vertex after `after` (see [`LinkedPolygon::insert_after`]). O(1).
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`, or the [`EditError`] of the polygon's own edit
+    /// (`StaleHandle`, `ForeignHandle` when `after` is not a vertex handle of polygon
+    /// `id`, `NonFinite`, `WouldBreakConvexity`).
     pub fn insert_vertex(
         &mut self,
         id: PolygonId,
@@ -335,6 +384,10 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Removes a vertex (see [`LinkedPolygon::remove`]). O(1).
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`, or the polygon's [`EditError`] (`StaleHandle`,
+    /// `ForeignHandle`, `TooFewVertices`).
     pub fn remove_vertex(&mut self, id: PolygonId, v: VertexId) -> Result<Point, SceneError> {
         let key = self.key(id)?;
         let e = &mut self.entries[key];
@@ -347,6 +400,10 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Moves a vertex (see [`LinkedPolygon::move_vertex`]). O(1).
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`, or the polygon's [`EditError`] (`StaleHandle`,
+    /// `ForeignHandle`, `NonFinite`, `WouldBreakConvexity`).
     pub fn move_vertex(&mut self, id: PolygonId, v: VertexId, p: Point) -> Result<Point, SceneError> {
         let key = self.key(id)?;
         let e = &mut self.entries[key];
@@ -360,14 +417,16 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Translates the polygon by `(dx, dy)`: every vertex becomes `(x + dx, y + dy)`, each
-    /// coordinate rounded to nearest (IEEE addition). O(n) to translate and validate, then
-    /// O(1) for the bounding box (shifted; rounding is monotone, so the shifted box still
-    /// contains, or equals, the translated polygon's box) and no reconversion: a valid
-    /// array snapshot is translated in place with the same roundings and stays valid.
-    /// Vertex handles stay valid. See docs/store.md for what is exact here.
+    /// coordinate rounded to nearest (IEEE addition). O(n): one pass over the vertices,
+    /// one over the snapshot if there is one (translated in place with the same
+    /// roundings: it stays valid, no reconversion), O(1) for the bounding box (shifted;
+    /// rounding is monotone, so the shifted box still contains, or equals, the translated
+    /// polygon's box). The rounded polygon is checked exactly for strict convexity, except
+    /// when a margin kept from the last check proves that this rounding cannot break it
+    /// (docs/store.md, "Translation"). Vertex handles stay valid.
     ///
     /// # Errors
-    /// `StalePolygon`; [`EditError::NonFinite`] when `dx` or `dy` is not finite or a
+    /// `StalePolygon`, `ForeignPolygon`; [`EditError::NonFinite`] when `dx` or `dy` is not finite or a
     /// coordinate would overflow; [`EditError::RoundingBreaksConvexity`] when rounding
     /// would leave the polygon not strictly convex. Nothing changes on error.
     ///
@@ -384,21 +443,40 @@ impl<K: Kernel> Scene<K> {
     pub fn translate(&mut self, id: PolygonId, dx: f64, dy: f64) -> Result<(), SceneError> {
         let key = self.key(id)?;
         let e = &mut self.entries[key];
-        e.polygon.translate(dx, dy)?;
-        e.version += 1;
-        if let Some(s) = &mut e.snapshot {
-            s.translate_unchecked(dx, dy);
-        }
         let shifted = BoundingBox {
             min: Point::new(e.bbox.min.x + dx, e.bbox.min.y + dy),
             max: Point::new(e.bbox.max.x + dx, e.bbox.max.y + dy),
         };
         if shifted.min.is_finite() && shifted.max.is_finite() {
+            // The box contains every vertex and rounding is monotone: no translated
+            // coordinate overflows, and each moves from the exact translate by at most
+            // half an ulp of the largest, `delta`. Below the margin left by the last
+            // check, the result is strictly convex without looking at a vertex;
+            // otherwise check the rounded boundary (on the snapshot when there is one:
+            // a sequential read), which also gives the new margin.
+            let largest = [shifted.min.x, shifted.min.y, shifted.max.x, shifted.max.y]
+                .into_iter()
+                .fold(0.0f64, |m, v| m.max(v.abs()));
+            let delta = largest * (f64::EPSILON * 0.5) * (1.0 + f64::EPSILON) + f64::from_bits(1);
+            if largest <= 2f64.powi(52) && delta < e.rounding_margin {
+                e.polygon.translate_unchecked(dx, dy);
+                e.rounding_margin =
+                    (e.rounding_margin - delta) / (1.0 + 2.0 * delta) * (1.0 - 4.0 * f64::EPSILON);
+            } else {
+                let boundary = e.snapshot.as_ref().map(|s| s.vertices());
+                e.rounding_margin = e.polygon.translate_finite(dx, dy, boundary)?;
+            }
             e.bbox = shifted;
         } else {
+            e.polygon.translate(dx, dy)?;
+            e.rounding_margin = 0.0;
             // A loose box reaching past the polygon overflowed: take the true box.
             e.bbox = BoundingBox::of(e.polygon.iter().map(|(_, p)| p)).expect("a polygon has vertices");
             e.bbox_tight = true;
+        }
+        e.version += 1;
+        if let Some(s) = &mut e.snapshot {
+            s.translate_unchecked(dx, dy);
         }
         self.broad.mark(key);
         Ok(())
@@ -432,29 +510,75 @@ impl<K: Kernel> Scene<K> {
         self.stats.conversions += 1;
     }
 
-    /// Ski rental, refined by the polygon's history: convert once the rent paid since the
-    /// last edit covers the conversion, unless the queries expected before the next edit
-    /// (the average between edits so far, less those already seen; at least as many as
-    /// already seen once past the average) would not pay for it.
-    fn should_convert(&self, key: usize) -> bool {
-        let e = &self.entries[key];
-        let cost = self.costs.convert_cost(e.polygon.len());
-        if e.rent_ns < cost {
-            return false;
+    /// Plans queries between live keys (`Err` entries are passed through): bounding
+    /// boxes, then the strategy; returns the routes and the keys to convert before
+    /// answering. O(1) per pair and per polygon involved (per-polygon marks), so a batch
+    /// is planned in linear time.
+    ///
+    /// The planner knows every query of the batch before deciding: a polygon without a
+    /// snapshot is charged, per query, what its conversion would save that query (all of
+    /// it when the other polygon has or will have a snapshot, half when both lack one),
+    /// and is converted when [`Account::should_convert`] says so for the batch's total.
+    /// Polygons whose partners were chosen are then offered the other half once more.
+    fn plan(&mut self, pairs: impl Iterator<Item = Result<(usize, usize), SceneError>>) -> Plan {
+        let mut routes: Vec<Result<Route, SceneError>> = Vec::with_capacity(pairs.size_hint().0);
+        let mut touched = Vec::new();
+        for pair in pairs {
+            let route = pair.map(|(a, b)| self.plan_boxes(a, b, &mut touched));
+            routes.push(route);
         }
-        let seen = e.queries_since_edit as f64;
-        let expected_more = if e.queries_per_edit > seen {
-            e.queries_per_edit - seen
-        } else {
-            seen
-        };
-        expected_more * e.last_rent_ns >= cost
+        let mut chosen = Vec::new();
+        match self.strategy {
+            Strategy::Sampled | Strategy::Convert => {}
+            Strategy::Cached => chosen.extend(touched.iter().copied()),
+            Strategy::Planner => {
+                self.choose(&touched, &mut chosen);
+                if !chosen.is_empty() {
+                    // A partner chosen now turns the half savings into whole ones.
+                    for k in &chosen {
+                        self.entries[*k].plan.convert = true;
+                    }
+                    for route in routes.iter().flatten() {
+                        if let Route::Sampled(a, b) = *route {
+                            for (k, other) in [(a, b), (b, a)] {
+                                let (ek, eo) = (&self.entries[k], &self.entries[other]);
+                                if !ek.will_have_snapshot() && eo.plan.convert && eo.snapshot.is_none() {
+                                    let half = 0.5 * self.saving(a, b);
+                                    self.entries[k].plan.known_ns += half;
+                                }
+                            }
+                        }
+                    }
+                    self.choose(&touched, &mut chosen);
+                }
+            }
+        }
+        let (mut convert_ns, mut answer_ns) = (0.0, 0.0);
+        for k in &chosen {
+            self.entries[*k].plan.convert = true;
+            convert_ns += self.costs.convert_cost(Arena::of(&self.entries[*k].polygon));
+        }
+        for route in routes.iter_mut().flatten() {
+            if let Route::Sampled(a, b) = *route {
+                let (r, cost) = self.finish_route(a, b);
+                *route = r;
+                answer_ns += cost;
+            }
+        }
+        for k in touched {
+            self.entries[k].plan = PlanMark::default();
+        }
+        Plan {
+            routes,
+            chosen,
+            convert_ns,
+            answer_ns,
+        }
     }
 
-    /// Plans one query between live keys: bounding boxes, then the strategy. Keys chosen
-    /// for conversion are appended to `pending` (the caller converts them before
-    /// answering); later plans treat them as converted.
-    fn plan(&mut self, a: usize, b: usize, pending: &mut Vec<usize>) -> Route {
+    /// The box test; a live pair is left as `Sampled` for now, its polygons marked and
+    /// credited with the saving a snapshot would bring.
+    fn plan_boxes(&mut self, a: usize, b: usize, touched: &mut Vec<usize>) -> Route {
         if a == b {
             return Route::Known(true);
         }
@@ -462,132 +586,188 @@ impl<K: Kernel> Scene<K> {
             self.stats.box_rejects += 1;
             return Route::Known(false);
         }
-        for k in [a, b] {
-            self.entries[k].queries_since_edit = self.entries[k].queries_since_edit.saturating_add(1);
-        }
-        let has = |s: &Self, k: usize, pending: &Vec<usize>| {
-            s.entries[k].snapshot.is_some() || pending.contains(&k)
-        };
-        match self.strategy {
-            Strategy::Sampled => {}
-            Strategy::Convert => {
-                if !(has(self, a, pending) && has(self, b, pending)) {
-                    self.stats.throwaway_conversions += 2;
-                    return Route::Throwaway(a, b);
+        let saving = self.saving(a, b);
+        for (k, other) in [(a, b), (b, a)] {
+            let has_other = self.entries[other].snapshot.is_some();
+            let e = &mut self.entries[k];
+            e.account.queried();
+            if e.snapshot.is_none() {
+                if !e.plan.touched {
+                    e.plan.touched = true;
+                    touched.push(k);
                 }
-            }
-            Strategy::Cached => {
-                for k in [a, b] {
-                    if !has(self, k, pending) {
-                        pending.push(k);
-                    }
-                }
-            }
-            Strategy::Planner => {
-                for k in [a, b] {
-                    if !has(self, k, pending) && self.should_convert(k) {
-                        pending.push(k);
-                    }
-                }
+                e.plan.known_ns += if has_other { saving } else { 0.5 * saving };
+                e.plan.known += 1;
             }
         }
-        if has(self, a, pending) && has(self, b, pending) {
-            self.stats.array_tests += 1;
-            return Route::Arrays(a, b);
-        }
-        let rent = self
-            .costs
-            .sampled_cost(self.entries[a].polygon.len().max(self.entries[b].polygon.len()));
-        for k in [a, b] {
-            if !has(self, k, pending) {
-                self.entries[k].rent_ns += rent;
-                self.entries[k].last_rent_ns = rent;
-            }
-        }
-        self.stats.sampled_tests += 1;
         Route::Sampled(a, b)
     }
 
-    fn answer(&self, route: Route, ws: &mut QueryWorkspace, rng: &mut SmallRng) -> bool {
+    /// Appends to `chosen` the touched polygons, not yet chosen, that the planner
+    /// converts.
+    fn choose(&self, touched: &[usize], chosen: &mut Vec<usize>) {
+        for &k in touched {
+            let e = &self.entries[k];
+            let cost = self.costs.convert_cost(Arena::of(&e.polygon));
+            if !e.plan.convert && e.account.should_convert(cost, e.plan.known_ns, e.plan.known) {
+                chosen.push(k);
+            }
+        }
+    }
+
+    /// What snapshots of both polygons would save one query between them.
+    fn saving(&self, a: usize, b: usize) -> f64 {
+        self.costs.saving(
+            Arena::of(&self.entries[a].polygon),
+            Arena::of(&self.entries[b].polygon),
+        )
+    }
+
+    /// The route of a live pair once conversions are chosen, and its estimated cost;
+    /// unconverted polygons pay their rent.
+    ///
+    /// Warm starts across frames (a certificate kept from the last test of this pair,
+    /// checked before any other route) would be decided here, first, as one more route.
+    fn finish_route(&mut self, a: usize, b: usize) -> (Route, f64) {
+        let (pa, pb) = (
+            Arena::of(&self.entries[a].polygon),
+            Arena::of(&self.entries[b].polygon),
+        );
+        let (na, nb) = (pa.vertices, pb.vertices);
+        let (ha, hb) = (
+            self.entries[a].will_have_snapshot(),
+            self.entries[b].will_have_snapshot(),
+        );
+        let linear_arrays = self.costs.array_is_linear(na, nb);
+        if ha && hb {
+            self.stats.array_tests += 1;
+            return (Route::Arrays(a, b, linear_arrays), self.costs.array_cost(na, nb));
+        }
+        if self.strategy == Strategy::Convert {
+            self.stats.throwaway_conversions += 2;
+            let cost =
+                self.costs.convert_cost(pa) + self.costs.convert_cost(pb) + self.costs.array_cost(na, nb);
+            return (Route::Throwaway(a, b, linear_arrays), cost);
+        }
+        let saving = self.costs.saving(pa, pb);
+        for (k, has_other) in [(a, hb), (b, ha)] {
+            if !self.entries[k].will_have_snapshot() {
+                self.entries[k]
+                    .account
+                    .pay(if has_other { saving } else { 0.5 * saving });
+            }
+        }
+        if self.strategy == Strategy::Planner && self.costs.prefers_linear(pa, pb) {
+            self.stats.linear_tests += 1;
+            return (Route::Linear(a, b), self.costs.linear_cost(pa, pb));
+        }
+        self.stats.sampled_tests += 1;
+        (Route::Sampled(a, b), self.costs.sampled_cost(pa, pb))
+    }
+
+    /// Answers one planned route; `seed` seeds the sampled test's generator (per pair, so
+    /// answers and times never depend on the order or the thread).
+    fn answer(&self, route: Route, ws: &mut QueryWorkspace, seed: u64) -> bool {
         let e = |k: usize| &self.entries[k];
+        let snapshot = |k: usize| e(k).snapshot.as_ref().expect("planned snapshot");
         match route {
             Route::Known(v) => v,
-            Route::Arrays(a, b) => array_test(
-                self.kernel,
-                e(a).snapshot.as_ref().expect("planned snapshot"),
-                e(b).snapshot.as_ref().expect("planned snapshot"),
-            ),
-            Route::Sampled(a, b) => sampled_test(self.kernel, &e(a).polygon, &e(b).polygon, ws, rng),
-            Route::Throwaway(a, b) => {
-                array_test(self.kernel, &e(a).polygon.to_convex(), &e(b).polygon.to_convex())
+            Route::Arrays(a, b, linear) => array_test(self.kernel, snapshot(a), snapshot(b), linear),
+            Route::Linear(a, b) => linear_test(self.kernel, &e(a).polygon, &e(b).polygon),
+            Route::Sampled(a, b) => {
+                let mut rng = SmallRng::seed_from_u64(seed);
+                sampled_test(self.kernel, &e(a).polygon, &e(b).polygon, ws, &mut rng)
             }
+            Route::Throwaway(a, b, linear) => array_test(
+                self.kernel,
+                &e(a).polygon.to_convex(),
+                &e(b).polygon.to_convex(),
+                linear,
+            ),
         }
     }
 
     /// Whether polygons `a` and `b` intersect (closed sets: touching counts).
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon` for either handle.
     pub fn intersects(&mut self, a: PolygonId, b: PolygonId) -> Result<bool, SceneError> {
         let (ka, kb) = (self.key(a)?, self.key(b)?);
-        let mut pending = Vec::new();
-        let route = self.plan(ka, kb, &mut pending);
-        for k in pending {
+        let mut plan = self.plan(std::iter::once(Ok((ka, kb))));
+        for k in plan.chosen {
             self.convert(k);
         }
+        let route = plan.routes.pop().expect("one route")?;
         let mut ws = std::mem::take(&mut self.workspace);
-        let mut rng = std::mem::replace(&mut self.rng, SmallRng::seed_from_u64(0));
-        let answer = self.answer(route, &mut ws, &mut rng);
-        (self.workspace, self.rng) = (ws, rng);
+        let seed = self.rng.next_u64();
+        let answer = self.answer(route, &mut ws, seed);
+        self.workspace = ws;
         Ok(answer)
     }
 
-    /// Answers many queries: planned in order, conversions built in parallel, then the
-    /// pairs answered in parallel (on rayon's pool with the `parallel` feature, in order
-    /// on the calling thread without it). Results are in input order and do not depend
-    /// on the number of threads, nor on the feature.
+    /// Answers many queries: planned together (the planner sees the whole batch before
+    /// choosing conversions), then conversions built and pairs answered, each in
+    /// parallel (with the `parallel` feature) when there are several and their estimated
+    /// cost (at least 1 ms) pays for handing work to other threads. Results are in input order and do not depend on the number of threads.
+    /// A pair with a stale or foreign handle gets that error in its place; the other
+    /// pairs are answered.
     pub fn intersects_batch(&mut self, pairs: &[(PolygonId, PolygonId)]) -> Vec<Result<bool, SceneError>> {
-        let mut pending = Vec::new();
-        let routes: Vec<Result<Route, SceneError>> = pairs
-            .iter()
-            .map(|&(a, b)| {
-                let (ka, kb) = (self.key(a)?, self.key(b)?);
-                Ok(self.plan(ka, kb, &mut pending))
-            })
-            .collect();
-        self.convert_all(pending);
-        let base: u64 = rand::Rng::random(&mut self.rng);
+        let keys = pairs.iter().map(|&(a, b)| Ok((self.key(a)?, self.key(b)?)));
+        let keys: Vec<Result<(usize, usize), SceneError>> = keys.collect();
+        let plan = self.plan(keys.into_iter());
+        self.run_plan(plan)
+    }
+
+    /// Converts the chosen polygons and answers the routes; the sampled test of route `i`
+    /// is seeded from one draw of the scene's generator and `i`, so answers do not
+    /// depend on the number of threads.
+    #[cfg_attr(not(feature = "parallel"), allow(unused_variables))]
+    fn run_plan(&mut self, plan: Plan) -> Vec<Result<bool, SceneError>> {
+        let base: u64 = self.rng.next_u64();
+        // Without the `parallel` feature everything runs on the calling thread.
+        #[cfg(feature = "parallel")]
+        let threads = rayon::current_num_threads() > 1;
+        #[cfg(not(feature = "parallel"))]
+        let threads = false;
+        let parallel_convert = threads && plan.chosen.len() > 1 && plan.convert_ns >= PARALLEL_MIN_NS;
+        let parallel = threads && plan.routes.len() > 64 && plan.answer_ns >= PARALLEL_MIN_NS;
+        self.convert_all(plan.chosen, parallel_convert);
+        let mut ws = std::mem::take(&mut self.workspace);
         let this = &*self;
         let answer = |ws: &mut QueryWorkspace, (i, route): (usize, &Result<Route, SceneError>)| {
             let route = route.clone()?;
-            let mut rng = SmallRng::seed_from_u64(base ^ (i as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15));
-            Ok(this.answer(route, ws, &mut rng))
+            Ok(this.answer(route, ws, base ^ (i as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15)))
         };
-        #[cfg(feature = "parallel")]
-        let answers = routes
-            .par_iter()
-            .enumerate()
-            .map_init(QueryWorkspace::default, answer)
-            .collect();
-        #[cfg(not(feature = "parallel"))]
-        let answers = {
-            let mut ws = QueryWorkspace::default();
-            routes
+        let answers = match () {
+            #[cfg(feature = "parallel")]
+            () if parallel => plan
+                .routes
+                .par_iter()
+                .enumerate()
+                .with_min_len(64)
+                .map_init(QueryWorkspace::default, answer)
+                .collect(),
+            () => plan
+                .routes
                 .iter()
                 .enumerate()
-                .map(|item| answer(&mut ws, item))
-                .collect()
+                .map(|r| answer(&mut ws, r))
+                .collect(),
         };
+        self.workspace = ws;
         answers
     }
 
-    fn convert_all(&mut self, mut keys: Vec<usize>) {
+    #[cfg_attr(not(feature = "parallel"), allow(unused_variables))]
+    fn convert_all(&mut self, mut keys: Vec<usize>, parallel: bool) {
         keys.sort_unstable();
         keys.dedup();
-        #[cfg(feature = "parallel")]
-        let keys_iter = keys.par_iter();
-        #[cfg(not(feature = "parallel"))]
-        let keys_iter = keys.iter();
-        let snapshots: Vec<(usize, ConvexPolygon)> = keys_iter
-            .map(|&k| (k, self.entries[k].polygon.to_convex()))
-            .collect();
+        let convert = |&k: &usize| (k, self.entries[k].polygon.to_convex());
+        let snapshots: Vec<(usize, ConvexPolygon)> = match () {
+            #[cfg(feature = "parallel")]
+            () if parallel => keys.par_iter().with_min_len(16).map(convert).collect(),
+            () => keys.iter().map(convert).collect(),
+        };
         for (k, s) in snapshots {
             self.install_snapshot(k, s);
         }
@@ -599,6 +779,9 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// All polygons other than `a` that intersect it, in slot order.
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`.
     pub fn intersecting(&mut self, a: PolygonId) -> Result<Vec<PolygonId>, SceneError> {
         let ka = self.key(a)?;
         self.flush_broad_phase();
@@ -608,31 +791,27 @@ impl<K: Kernel> Scene<K> {
             .filter(|&k| k != ka)
             .collect();
         candidates.sort_unstable();
-        let pairs: Vec<(PolygonId, PolygonId)> = candidates.iter().map(|&k| (a, self.id_of(k))).collect();
-        let answers = self.intersects_batch(&pairs);
-        Ok(pairs
+        let plan = self.plan(candidates.iter().map(|&k| Ok((ka, k))));
+        let answers = self.run_plan(plan);
+        Ok(candidates
             .into_iter()
             .zip(answers)
             .filter(|(_, hit)| matches!(hit, Ok(true)))
-            .map(|((_, b), _)| b)
+            .map(|(k, _)| self.id_of(k))
             .collect())
     }
 
     /// All intersecting pairs `(a, b)` with `a` before `b` in slot order, sorted.
     pub fn intersecting_pairs(&mut self) -> Vec<(PolygonId, PolygonId)> {
         self.flush_broad_phase();
-        let candidates: Vec<(PolygonId, PolygonId)> = self
-            .broad
-            .overlapping_pairs()
-            .into_iter()
-            .map(|(a, b)| (self.id_of(a), self.id_of(b)))
-            .collect();
-        let answers = self.intersects_batch(&candidates);
+        let candidates = self.broad.overlapping_pairs();
+        let plan = self.plan(candidates.iter().map(|&pair| Ok(pair)));
+        let answers = self.run_plan(plan);
         candidates
             .into_iter()
             .zip(answers)
             .filter(|(_, hit)| matches!(hit, Ok(true)))
-            .map(|(pair, _)| pair)
+            .map(|((a, b), _)| (self.id_of(a), self.id_of(b)))
             .collect()
     }
 
@@ -678,5 +857,83 @@ impl<K: Kernel> Scene<K> {
             }
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::generate::regular_polygon;
+    use rand::Rng;
+
+    /// The scene skips the convexity check of a translation when the margin kept from
+    /// the last check proves rounding harmless. Against a copy translated with the full
+    /// check every time, on polygons whose vertices are a few ulps apart (where rounding
+    /// does break convexity) and on ordinary ones: the same acceptances, the same
+    /// refusals, the same coordinates, and skips actually taken.
+    #[test]
+    fn skipped_translation_checks_agree_with_full_checks() {
+        let mut rng = SmallRng::seed_from_u64(0x7a11);
+        let shapes: Vec<Vec<Point>> = vec![
+            // A triangle a few ulps wide near 2^20.
+            vec![
+                Point::new(1048576.0, 1048576.0),
+                Point::new(1048576.0 + 4.0 * 2.3283064365386963e-10, 1048576.0),
+                Point::new(1048576.0, 1048576.0 + 3.0 * 2.3283064365386963e-10),
+            ],
+            // Nearly flat turns: the hull of a fine regular polygon far from the origin.
+            crate::polygon::convex_hull(
+                &regular_polygon(4096, 1e-3)
+                    .vertices()
+                    .iter()
+                    .map(|p| Point::new(p.x + 1e8, p.y - 3e7))
+                    .collect::<Vec<_>>(),
+            )
+            .unwrap()
+            .into_vertices(),
+            regular_polygon(16, 1.0).into_vertices(),
+            regular_polygon(256, 5.0).into_vertices(),
+        ];
+        let mut skipped = 0;
+        let mut refused = 0;
+        for (s, shape) in shapes.iter().enumerate() {
+            let mut scene = Scene::new();
+            let id = scene.insert_points(shape.iter().copied()).unwrap();
+            let mut copy = scene.polygon(id).unwrap().clone();
+            // Half the runs with a snapshot (checked on the array), half without.
+            if s % 2 == 0 {
+                scene.set_strategy(Strategy::Cached);
+                let other = scene.insert_points(shape.iter().copied()).unwrap();
+                scene.intersects(id, other).unwrap();
+                assert!(scene.has_snapshot(id).unwrap());
+            }
+            for step in 0..3000 {
+                let scale = [1e-12, 1e-6, 1.0, 1e3, 1e7][rng.random_range(0..5)];
+                let (dx, dy) = (rng.random_range(-scale..scale), rng.random_range(-scale..scale));
+                let key = scene.key(id).unwrap();
+                let margin_before = scene.entries[key].rounding_margin;
+                let got = scene.translate(id, dx, dy);
+                let want = copy.translate(dx, dy);
+                assert_eq!(
+                    got,
+                    want.clone().map_err(SceneError::Edit),
+                    "shape {s} step {step}"
+                );
+                if want.is_err() {
+                    refused += 1;
+                } else if margin_before > 0.0 && scene.entries[key].rounding_margin < margin_before {
+                    skipped += 1;
+                }
+                let ours: Vec<Point> = scene.polygon(id).unwrap().iter().map(|(_, p)| p).collect();
+                let theirs: Vec<Point> = copy.iter().map(|(_, p)| p).collect();
+                assert_eq!(ours, theirs, "shape {s} step {step}");
+                if step % 500 == 0 {
+                    scene.debug_validate().unwrap();
+                }
+            }
+            scene.debug_validate().unwrap();
+        }
+        assert!(skipped > 1000, "{skipped} checks skipped");
+        assert!(refused > 10, "{refused} translations refused");
     }
 }

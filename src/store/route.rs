@@ -1,0 +1,68 @@
+//! How one planned query is answered: the routes the planner chooses between, and the
+//! tests behind them. This file knows polygons and intersection algorithms, never the
+//! scene; both the cost model (which times these tests) and the scene use it.
+
+use crate::intersect::{
+    ArrayIntersection, Barba, Clm, ClmWorkspace, Linear, LinearLinked, LinkedIntersection,
+};
+use crate::kernel::Kernel;
+use crate::polygon::{ConvexPolygon, LinkedPolygon};
+use rand::rngs::SmallRng;
+
+/// Per-query scratch memory, reused so that queries allocate nothing in the steady state.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct QueryWorkspace {
+    clm: ClmWorkspace,
+}
+
+/// The sampled (sublinear) test on two linked polygons: Chazelle–Liu–Magen.
+pub(crate) fn sampled_test<K: Kernel>(
+    kernel: K,
+    p: &LinkedPolygon,
+    q: &LinkedPolygon,
+    ws: &mut QueryWorkspace,
+    rng: &mut SmallRng,
+) -> bool {
+    Clm.intersects_with_workspace(kernel, p, q, rng, &mut ws.clm)
+}
+
+/// The linear test walking both linked polygons (no conversion, no allocation).
+pub(crate) fn linear_test<K: Kernel>(kernel: K, p: &LinkedPolygon, q: &LinkedPolygon) -> bool {
+    LinearLinked.intersects_with(kernel, p, q)
+}
+
+/// Barba–Langerman on two snapshots, O(log n).
+pub(crate) fn barba_test<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> bool {
+    Barba.intersects_with(kernel, p, q)
+}
+
+/// The linear test on two snapshots: cheaper than Barba–Langerman on small polygons.
+pub(crate) fn linear_array_test<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> bool {
+    Linear.intersects_with(kernel, p, q)
+}
+
+/// The array test on two snapshots: linear when `linear` (small polygons), else
+/// Barba–Langerman.
+pub(crate) fn array_test<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon, linear: bool) -> bool {
+    if linear {
+        linear_array_test(kernel, p, q)
+    } else {
+        barba_test(kernel, p, q)
+    }
+}
+
+/// How one planned query will be answered; keys are the scene's slots.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Route {
+    /// Decided without a test (bounding boxes, or a polygon against itself).
+    Known(bool),
+    /// Both snapshots are valid: an array test (linear when `true`).
+    Arrays(usize, usize, bool),
+    /// The linear test walking the linked polygons.
+    Linear(usize, usize),
+    /// The sampled test on the linked polygons.
+    Sampled(usize, usize),
+    /// Both polygons converted for this query only, then an array test (linear when
+    /// `true`).
+    Throwaway(usize, usize, bool),
+}
