@@ -284,6 +284,9 @@ impl CostModel {
     /// entry by entry, so a burst of other work on the machine spoils at most one pass;
     /// then each table is smoothed (median of three neighbours) and made non-decreasing
     /// in the size. Takes about ten seconds.
+    ///
+    /// # Panics
+    /// On `wasm32-unknown-unknown`, which has no clock (`std::time::Instant`).
     pub fn calibrate<K: Kernel>(kernel: K) -> CostModel {
         let mut rng = SmallRng::seed_from_u64(0xca1b);
         let mut tables = [[f64::INFINITY; COST_SIZES]; 7];
