@@ -70,7 +70,8 @@ pub trait LinkedIntersection {
 
     /// A one-off query: a fresh workspace and a generator seeded from the operating
     /// system, so which vertices a randomized test samples cannot be known in advance
-    /// (the expected bounds hold for every input chosen without seeing the draw). The
+    /// (the expected bounds hold for every input chosen without seeing the draw; without
+    /// the `os-rng` feature, seeded from a counter instead: docs/design.md). The
     /// answer never depends on the draw under [`Exact`]; use
     /// [`intersects_seeded`](Self::intersects_seeded) to reproduce a run exactly.
     fn intersects_with<K: Kernel>(&self, kernel: K, p: &LinkedPolygon, q: &LinkedPolygon) -> bool {

@@ -195,7 +195,8 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Reseeds the RNG of the sampled test, which is otherwise seeded from the operating
-    /// system (docs/design.md, "Randomness"): the same seed and the same operations give
+    /// system (without the `os-rng` feature, from a counter; docs/design.md,
+    /// "Randomness"): the same seed and the same operations give
     /// the same draws. Answers do not depend on it under the exact kernel; running times
     /// and the fast kernel's rare wrong answers do.
     pub fn seed(&mut self, seed: u64) {
