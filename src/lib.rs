@@ -13,6 +13,12 @@
 //! a [`Kernel`]: [`Exact`] (the default) decides every predicate exactly for every
 //! finite `f64` input; [`Fast`] uses plain floating point.
 //!
+//! Features: the default set builds the `polysect` command-line tool (`cli`) and
+//! `geo-types` conversions. With `default-features = false` the library above needs
+//! only 7 crates and builds for `wasm32-unknown-unknown`; add `os-rng` (unseeded
+//! queries seeded from the OS), `serde`, `geo-types`, `parallel` (rayon) or `protocol`
+//! (the JSON-lines protocols) as needed. See docs/design.md, "Features".
+//!
 //! ```
 //! use polysect::intersect::{ArrayIntersection, Barba, Clm, LinkedIntersection};
 //! use polysect::{ConvexPolygon, Fast, LinkedPolygon, Point};
