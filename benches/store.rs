@@ -181,6 +181,9 @@ fn planner_ratios(c: &mut Criterion) {
                 planner
             })
         });
+        if rounds.is_empty() {
+            continue; // filtered out on the command line
+        }
         let stat = |i: usize| {
             let mut v: Vec<Duration> = rounds.iter().map(|r| r[i]).collect();
             v.sort();
@@ -287,10 +290,11 @@ fn edit_targets(p: &LinkedPolygon) -> Vec<(VertexId, Point, Point, Point)> {
 
 fn edits(c: &mut Criterion) {
     let base = LinkedPolygon::from_convex(&regular_polygon(64, 1.0));
-    let targets = edit_targets(&base);
     let mut group = c.benchmark_group("edits");
     group.bench_function("linked/insert+remove", |b| {
+        // A clone is a polygon of its own: its handles, not `base`'s.
         let mut p = base.clone();
+        let targets = edit_targets(&p);
         let mut i = 0;
         b.iter(|| {
             let (v, _, ins, _) = targets[i % targets.len()];
@@ -300,7 +304,9 @@ fn edits(c: &mut Criterion) {
         })
     });
     group.bench_function("linked/move+back", |b| {
+        // A clone is a polygon of its own: its handles, not `base`'s.
         let mut p = base.clone();
+        let targets = edit_targets(&p);
         let mut i = 0;
         b.iter(|| {
             let (v, at, _, out) = targets[i % targets.len()];

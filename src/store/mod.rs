@@ -22,10 +22,13 @@
 //!    their saving reaches the price, unless the queries expected before its next edit
 //!    would not pay for it. Polygons whose partners were just chosen are offered the
 //!    other half of the saving once more.
-//! 4. Pairs with two snapshots get an O(log n) array test; the others the sublinear
-//!    sampled test (Chazelle–Liu–Magen) on the linked polygons, and each unconverted
-//!    polygon pays its share of the saving as rent. An edit drops the snapshot and clears
-//!    the rent; a translation keeps both.
+//! 4. Pairs with two snapshots get an array test (the linear one for small pairs,
+//!    Barba–Langerman's O(log n) above). The others get the cheaper of two tests on
+//!    the linked polygons by the cost tables: the linear walk
+//!    ([`LinearLinked`](crate::intersect::LinearLinked)) for small polygons, the
+//!    sublinear sampled test (Chazelle–Liu–Magen) for large ones; each unconverted
+//!    polygon pays its share of the saving as rent. An edit drops the snapshot and
+//!    clears the rent; a translation keeps both.
 //!
 //! Charging each polygon what *its* conversion saves is what makes a triangle moved
 //! before every query against a large polygon holding its snapshot convert at once
@@ -33,9 +36,10 @@
 //! every time. Planning is O(1) per pair (per-polygon marks), so a batch is planned in
 //! linear time.
 //!
-//! The estimates come from a [`CostModel`]: conversion costs `c_convert · n`, a sampled
-//! query `c_sampled · √n` for the larger polygon; a measured default, or
-//! [`Scene::calibrate`] on the user's machine.
+//! The estimates come from a [`CostModel`]: one table per route (conversion, sampled
+//! test, linear walk, array test) over sizes 2^2..2^18, walks priced between
+//! boundary-order and shuffled arenas by each polygon's inserts and removals since it
+//! was built; a measured default, or [`Scene::calibrate`] on the user's machine.
 
 //! # Bounding boxes under edits
 //! Growing a box is O(1) per edit. A removal or an inward move of a vertex on the box
