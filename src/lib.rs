@@ -13,6 +13,12 @@
 //! a [`Kernel`]: [`Exact`] (the default) decides every predicate exactly for every
 //! finite `f64` input; [`Fast`] uses plain floating point.
 //!
+//! Features: the default set builds the `polysect` command-line tool (`cli`) and
+//! `geo-types` conversions. With `default-features = false` the library above needs
+//! only 7 crates and builds for `wasm32-unknown-unknown`; add `os-rng` (unseeded
+//! queries seeded from the OS), `serde`, `geo-types`, `parallel` (rayon) or `protocol`
+//! (the JSON-lines protocols) as needed. See docs/design.md, "Features".
+//!
 //! ```
 //! use polysect::intersect::{ArrayIntersection, Barba, Clm, LinkedIntersection};
 //! use polysect::{ConvexPolygon, Fast, LinkedPolygon, Point};
@@ -33,12 +39,16 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 #![forbid(unsafe_code)]
+#![cfg_attr(docsrs, feature(doc_cfg))]
 
+#[cfg(all(feature = "serde", feature = "protocol"))]
 pub mod certificate_json;
 pub mod crossings;
 // The measurements behind `polysect bench`: the tool's, not an API to build on.
 #[doc(hidden)]
+#[cfg(feature = "cli")]
 pub mod experiments;
+#[cfg(feature = "protocol")]
 #[doc(hidden)]
 pub mod fuzzing;
 pub mod generate;
@@ -46,8 +56,11 @@ pub mod intersect;
 pub mod kernel;
 pub mod lp;
 pub mod polygon;
+#[cfg(feature = "protocol")]
 pub mod protocol;
+#[cfg(feature = "protocol")]
 pub mod render;
+#[cfg(feature = "cli")]
 pub mod serve;
 pub mod store;
 

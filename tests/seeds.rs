@@ -1,8 +1,12 @@
 //! The randomness decision (docs/design.md, "Randomness"): sampled queries draw from a
 //! generator seeded by the operating system unless the caller gives a seed; a seed
-//! reproduces the draws; the exact answer never depends on them.
+//! reproduces the draws; the exact answer never depends on them. Without the `os-rng`
+//! feature unseeded generators are seeded 0, 1, 2, ... in turn: successive runs still
+//! draw different samples. The CLI tests need the `cli` feature.
 
+#[cfg(feature = "cli")]
 mod common;
+#[cfg(feature = "cli")]
 use common::run;
 use polysect::Precision;
 use polysect::generate::{self, Family, Relation};
@@ -36,6 +40,7 @@ fn one_off_queries_draw_fresh_samples_and_seeds_reproduce_them() {
     assert!(by_seed.len() > 1, "different seeds drew the same sample");
 }
 
+#[cfg(feature = "cli")]
 #[test]
 fn check_with_a_seed_is_reproducible_under_either_kernel() {
     let (code, input, _) = run(

@@ -223,6 +223,7 @@ pub struct ListWork {
 /// The lists as the crossings report runs them: `pair` is called on every candidate (each edge
 /// of the other polygon listed when an edge is inserted, P's edge first), with no
 /// y-range check. For `polysect bench crossings`.
+#[cfg(feature = "cli")]
 pub(crate) fn every_candidate(
     p: &SimplePolygon,
     q: &SimplePolygon,

@@ -16,8 +16,21 @@ use rand::rngs::SmallRng;
 /// A generator for one query or one session, seeded from the thread-local generator
 /// (itself seeded from the operating system): the sample is unknown to whoever chose
 /// the input (docs/design.md, "Randomness").
+#[cfg(feature = "os-rng")]
 pub(crate) fn fresh_rng() -> SmallRng {
     SmallRng::from_rng(&mut rand::rng())
+}
+
+/// Without the `os-rng` feature (e.g. on `wasm32-unknown-unknown`) there is no entropy
+/// source: the n-th unseeded generator of the process is seeded with n (0, 1, 2, ...).
+/// Successive queries and scenes still draw different samples, but the sequence is the
+/// same in every run, so whoever knows it can build slow inputs (docs/design.md,
+/// "Randomness"); pass a seed drawn from a real entropy source where that matters.
+#[cfg(not(feature = "os-rng"))]
+pub(crate) fn fresh_rng() -> SmallRng {
+    use std::sync::atomic::{AtomicU64, Ordering};
+    static NEXT: AtomicU64 = AtomicU64::new(0);
+    SmallRng::seed_from_u64(NEXT.fetch_add(1, Ordering::Relaxed))
 }
 
 /// An intersection test on two convex polygons stored as linked lists in arenas.
@@ -58,7 +71,8 @@ pub trait LinkedIntersection {
 
     /// A one-off query: a fresh workspace and a generator seeded from the operating
     /// system, so which vertices a randomized test samples cannot be known in advance
-    /// (the expected bounds hold for every input chosen without seeing the draw). The
+    /// (the expected bounds hold for every input chosen without seeing the draw; without
+    /// the `os-rng` feature, seeded from a counter instead: docs/design.md). The
     /// answer never depends on the draw under [`Exact`]; use
     /// [`intersects_seeded`](Self::intersects_seeded) to reproduce a run exactly.
     fn intersects_with<K: Kernel>(&self, kernel: K, p: &LinkedPolygon, q: &LinkedPolygon) -> bool {

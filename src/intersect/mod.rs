@@ -230,7 +230,8 @@ impl Algorithm {
 
     /// Runs the algorithm on two array polygons with the kernel named by `precision`,
     /// returning the answer and the number of pruning iterations. The linked-polygon
-    /// tests draw from a generator seeded from the operating system.
+    /// tests draw from a generator seeded from the operating system (without the
+    /// `os-rng` feature, from a counter; docs/design.md, "Randomness").
     pub fn run(self, precision: Precision, p: &ConvexPolygon, q: &ConvexPolygon) -> (bool, u64) {
         self.run_rng(precision, p, q, &mut fresh_rng())
     }

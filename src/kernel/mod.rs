@@ -22,6 +22,7 @@
 //! real answer (collinear, parallel, perpendicular), never an error.
 
 pub mod exact;
+#[cfg(feature = "serde")]
 mod point_serde;
 mod segment;
 

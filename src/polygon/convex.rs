@@ -14,8 +14,9 @@ use crate::kernel::{Exact, Kernel, Orientation, Point, Sign};
 /// # Complexity
 /// Construction is O(n) for n input vertices (error reporting for a vertex list in
 /// convex position but out of order costs O(n log n)).
-#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(try_from = "Vec<Point>", into = "Vec<Point>")]
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(try_from = "Vec<Point>", into = "Vec<Point>"))]
 pub struct ConvexPolygon {
     vertices: Vec<Point>,
 }

@@ -761,12 +761,14 @@ pub(crate) fn turn_margin(a: Point, b: Point, c: Point) -> f64 {
 
 /// Serialised as its vertex list, counter-clockwise from [`LinkedPolygon::first`];
 /// deserialised through the same validation as [`LinkedPolygon::from_points`].
+#[cfg(feature = "serde")]
 impl serde::Serialize for LinkedPolygon {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         self.to_convex().serialize(s)
     }
 }
 
+#[cfg(feature = "serde")]
 impl<'de> serde::Deserialize<'de> for LinkedPolygon {
     fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         ConvexPolygon::deserialize(d).map(|p| LinkedPolygon::from_convex(&p))
@@ -893,6 +895,7 @@ mod tests {
         p.debug_validate().unwrap();
     }
 
+    #[cfg(feature = "serde")]
     #[test]
     fn serde_round_trip_validates() {
         let p = square();

@@ -104,7 +104,8 @@ impl std::error::Error for SimplePolygonError {}
 /// Every decision is taken with the [`Exact`] kernel on the input coordinates, so a
 /// polygon is accepted or refused independently of rounding. The vertices are
 /// stored unchanged (no coordinate is computed).
-#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct SimplePolygon {
     vertices: Vec<Point>,
 }

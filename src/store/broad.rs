@@ -25,7 +25,8 @@
 use crate::kernel::Point;
 
 /// A closed axis-aligned box. `overlaps` and `grow` use comparisons only (exact).
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BoundingBox {
     pub min: Point,
     pub max: Point,

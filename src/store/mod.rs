@@ -60,6 +60,7 @@
 //! in input order (pairs sorted by id), independent of the thread count.
 
 mod broad;
+#[cfg(feature = "geo-types")]
 mod interop;
 mod planner;
 mod route;

@@ -56,7 +56,8 @@ pub const COST_SIZES: usize = 17;
 /// along the links (conversion, the linear test) are measured on arenas in boundary
 /// order and on shuffled arenas, and a polygon is priced between the two by its
 /// arena's disorder (inserts and removals since it was built in order).
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct CostModel {
     /// Converting one linked polygon of that size to an array, shuffled arena.
     pub convert_ns: [f64; COST_SIZES],
@@ -283,6 +284,9 @@ impl CostModel {
     /// entry by entry, so a burst of other work on the machine spoils at most one pass;
     /// then each table is smoothed (median of three neighbours) and made non-decreasing
     /// in the size. Takes about ten seconds.
+    ///
+    /// # Panics
+    /// On `wasm32-unknown-unknown`, which has no clock (`std::time::Instant`).
     pub fn calibrate<K: Kernel>(kernel: K) -> CostModel {
         let mut rng = SmallRng::seed_from_u64(0xca1b);
         let mut tables = [[f64::INFINITY; COST_SIZES]; 7];
@@ -520,7 +524,8 @@ impl Account {
 }
 
 /// What the planner did, for the demo table and the tests.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct PlannerStats {
     /// Queries answered `false` by the bounding boxes alone.
     pub box_rejects: u64,

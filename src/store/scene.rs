@@ -11,6 +11,7 @@ use crate::kernel::{Exact, Kernel, Point};
 use crate::polygon::{ConvexPolygon, EditError, Identity, LinkedPolygon, PolygonError, VertexId};
 use rand::rngs::SmallRng;
 use rand::{RngCore, SeedableRng};
+#[cfg(feature = "parallel")]
 use rayon::prelude::*;
 use slab::Slab;
 use std::fmt;
@@ -25,7 +26,8 @@ use std::fmt;
 /// runs. Scene identities count up within a process, so a handle read back in another
 /// process is not meaningful there (it may name that process's scene with the same
 /// identity). Displays as `#k (generation g)`, the form error messages use.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize, serde::Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct PolygonId {
     scene: u64,
     key: u32,
@@ -239,7 +241,8 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Reseeds the RNG of the sampled test, which is otherwise seeded from the operating
-    /// system (docs/design.md, "Randomness"): the same seed and the same operations give
+    /// system (without the `os-rng` feature, from a counter; docs/design.md,
+    /// "Randomness"): the same seed and the same operations give
     /// the same draws. Answers do not depend on it under the exact kernel; running times
     /// and the fast kernel's rare wrong answers do.
     pub fn seed(&mut self, seed: u64) {
@@ -848,8 +851,8 @@ impl<K: Kernel> Scene<K> {
 
     /// Answers many queries: planned together (the planner sees the whole batch before
     /// choosing conversions), then conversions built and pairs answered, each in
-    /// parallel when there are several and their estimated cost (at least 1 ms) pays for
-    /// handing work to other threads. Results are in input order and do not depend on the number of threads.
+    /// parallel (with the `parallel` feature) when there are several and their estimated
+    /// cost (at least 1 ms) pays for handing work to other threads. Results are in input order and do not depend on the number of threads.
     /// A pair with a stale or foreign handle gets that error in its place; the other
     /// pairs are answered.
     pub fn intersects_batch(&mut self, pairs: &[(PolygonId, PolygonId)]) -> Vec<Result<bool, SceneError>> {
@@ -885,13 +888,18 @@ impl<K: Kernel> Scene<K> {
     /// Converts the chosen polygons and answers the routes; the sampled test of route `i`
     /// is seeded from one draw of the scene's generator and `i`, so answers do not
     /// depend on the number of threads.
+    #[cfg_attr(not(feature = "parallel"), allow(unused_variables))]
     fn run_plan_with<T: Send>(
         &mut self,
         plan: Plan,
         answer: impl Fn(&Self, Route, (usize, usize), &mut QueryWorkspace, u64) -> T + Sync,
     ) -> Vec<Result<T, SceneError>> {
         let base: u64 = self.rng.next_u64();
+        // Without the `parallel` feature everything runs on the calling thread.
+        #[cfg(feature = "parallel")]
         let threads = rayon::current_num_threads() > 1;
+        #[cfg(not(feature = "parallel"))]
+        let threads = false;
         let parallel_convert = threads && plan.chosen.len() > 1 && plan.convert_ns >= PARALLEL_MIN_NS;
         let parallel = threads && plan.routes.len() > 64 && plan.answer_ns >= PARALLEL_MIN_NS;
         self.convert_all(plan.chosen, parallel_convert);
@@ -903,32 +911,35 @@ impl<K: Kernel> Scene<K> {
             let seed = base ^ (i as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15);
             Ok(answer(this, route, keys[i], ws, seed))
         };
-        let answers = if parallel {
-            plan.routes
+        let answers = match () {
+            #[cfg(feature = "parallel")]
+            () if parallel => plan
+                .routes
                 .par_iter()
                 .enumerate()
                 .with_min_len(64)
                 .map_init(QueryWorkspace::default, answer)
-                .collect()
-        } else {
-            plan.routes
+                .collect(),
+            () => plan
+                .routes
                 .iter()
                 .enumerate()
                 .map(|r| answer(&mut ws, r))
-                .collect()
+                .collect(),
         };
         self.workspace = ws;
         answers
     }
 
+    #[cfg_attr(not(feature = "parallel"), allow(unused_variables))]
     fn convert_all(&mut self, mut keys: Vec<usize>, parallel: bool) {
         keys.sort_unstable();
         keys.dedup();
         let convert = |&k: &usize| (k, self.entries[k].polygon.to_convex());
-        let snapshots: Vec<(usize, ConvexPolygon)> = if parallel {
-            keys.par_iter().with_min_len(16).map(convert).collect()
-        } else {
-            keys.iter().map(convert).collect()
+        let snapshots: Vec<(usize, ConvexPolygon)> = match () {
+            #[cfg(feature = "parallel")]
+            () if parallel => keys.par_iter().with_min_len(16).map(convert).collect(),
+            () => keys.iter().map(convert).collect(),
         };
         for (k, s) in snapshots {
             self.install_snapshot(k, s);

@@ -96,6 +96,9 @@ pub fn scattered_scene<K: Kernel>(
 /// Runs the workload on `scene`. With `verify`, every answer is compared with
 /// [`Linear`] on the exact kernel (outside the timed part). `tick` is called after every
 /// operation (for progress bars).
+///
+/// # Panics
+/// On `wasm32-unknown-unknown`, which has no clock (`std::time::Instant`).
 pub fn run<K: Kernel>(
     scene: &mut Scene<K>,
     spec: &WorkloadSpec,

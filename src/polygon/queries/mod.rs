@@ -54,14 +54,7 @@ mod area;
 mod contains;
 mod extreme;
 
-use rand::SeedableRng;
-use rand::rngs::SmallRng;
-
-/// A generator for one query, seeded from the thread-local generator (itself seeded
-/// from the operating system).
-pub(crate) fn fresh_rng() -> SmallRng {
-    SmallRng::from_rng(&mut rand::rng())
-}
+pub(crate) use crate::intersect::fresh_rng;
 
 /// The number of vertices a sampled query draws from a polygon of `n` vertices: ⌈√n⌉.
 pub(crate) fn sample_count(n: usize) -> usize {
