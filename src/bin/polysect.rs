@@ -2,7 +2,7 @@
 
 use clap::{Parser, Subcommand, ValueEnum};
 use polysect::crossings::CrossingAlgorithm;
-use polysect::experiments::{self, Config, Experiment};
+use polysect::experiments::{self, Config, Experiment, ThesisConfig};
 use polysect::generate::{self, Family, Relation};
 use polysect::intersect::Algorithm;
 use polysect::protocol::{self, scene::SceneOptions, scene::SceneSession};
@@ -107,6 +107,12 @@ enum Command {
         /// Fewer sizes and shorter loops (under a minute).
         #[arg(long)]
         quick: bool,
+        /// How pairs are placed and timed: `ours` (steered pairs, median of timed loops;
+        /// runs the named experiments) or `thesis` (the thesis's chapter 4 as written:
+        /// random translations sorted by outcome, 100 pairs × 1000 repetitions, mean and
+        /// median, n = 2^4 … 2^22; runs experiments 1–5 together and takes no names).
+        #[arg(long, value_enum, default_value_t = ProtocolArg::Ours)]
+        protocol: ProtocolArg,
         /// Output directory.
         #[arg(long, default_value = "bench-out")]
         out: PathBuf,
@@ -224,6 +230,12 @@ enum RelationArg {
     Disjoint,
 }
 
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum ProtocolArg {
+    Ours,
+    Thesis,
+}
+
 #[derive(Clone, Copy, ValueEnum)]
 enum OrderArg {
     Ccw,
@@ -284,10 +296,14 @@ fn main() -> ExitCode {
         Some(Command::Bench {
             experiments,
             quick,
+            protocol,
             out,
             seed,
             no_progress,
-        }) => bench(&experiments, quick, out, seed, !no_progress),
+        }) => match protocol {
+            ProtocolArg::Ours => bench(&experiments, quick, out, seed, !no_progress),
+            ProtocolArg::Thesis => bench_thesis(&experiments, quick, out, seed, !no_progress),
+        },
         Some(Command::List) => list(),
         Some(Command::Demo {
             polygons,
@@ -547,6 +563,45 @@ fn calibrate() -> io::Result<()> {
          queries since the last edit cost as much as converting them ({:.1} ns/vertex vs {:.1} ns·√n per query).",
         costs.crossover, costs.convert_ns_per_vertex, costs.sampled_ns_per_sqrt_n
     )
+}
+
+/// `bench --protocol thesis`: the thesis's chapter 4 protocol (see
+/// `polysect::experiments::thesis`).
+fn bench_thesis(
+    experiments: &[Experiment],
+    quick: bool,
+    out: PathBuf,
+    seed: Option<u64>,
+    progress: bool,
+) -> io::Result<()> {
+    if !experiments.is_empty() {
+        return Err(io::Error::new(
+            io::ErrorKind::InvalidInput,
+            "--protocol thesis runs the thesis's experiments 1-5 together and takes no experiment names",
+        ));
+    }
+    let mut config = if quick {
+        ThesisConfig::quick(out)
+    } else {
+        ThesisConfig::full(out)
+    };
+    if let Some(seed) = seed {
+        config.seed = seed;
+    }
+    config.progress = progress;
+    let start = Instant::now();
+    let report = experiments::thesis::run(&config)
+        .map_err(|e| io::Error::new(e.kind(), format!("cannot write to {}: {e}", config.out.display())))?;
+    let mut out = io::stdout().lock();
+    writeln!(out, "{}", report.summary)?;
+    writeln!(
+        out,
+        "wrote {} files to {} in {:.1} s",
+        report.files.len(),
+        config.out.display(),
+        start.elapsed().as_secs_f64()
+    )?;
+    out.flush()
 }
 
 fn bench(

@@ -57,7 +57,7 @@
 use super::Probe;
 use super::linked::LinkedIntersection;
 use crate::kernel::{Kernel, Orientation, Point};
-use crate::lp::{ArenaPoints, LpWorkspace, Separation, separating_line};
+use crate::lp::{ArenaPoints, Bitangent, LpWorkspace, Separation, separating_line};
 use crate::polygon::{LinkedPolygon, SampleWorkspace};
 use rand::Rng;
 
@@ -154,7 +154,7 @@ impl LinkedIntersection for ClmWithFactor {
         probe: &mut P,
     ) -> bool {
         let work_before = ws.lp.work + ws.walked;
-        let answer = clm(k, self.0, p, q, rng, ws);
+        let answer = clm(k, self.0, p, q, rng, ws, probe);
         for _ in work_before..ws.lp.work + ws.walked {
             probe.iteration();
         }
@@ -189,18 +189,38 @@ fn sample_size(c: f64, n: usize) -> usize {
     if r.is_finite() && r >= 3.0 { r as usize } else { 3 }
 }
 
-fn clm<K: Kernel, R: Rng + ?Sized>(
+/// [`separating_line`], reporting the call to `probe` (constraints and work).
+fn counted_lp<K: Kernel, R: Rng + ?Sized, P: Probe>(
+    k: K,
+    a: &ArenaPoints<'_>,
+    b: &ArenaPoints<'_>,
+    rng: &mut R,
+    lp: &mut LpWorkspace,
+    probe: &mut P,
+) -> Option<Bitangent> {
+    let before = lp.work;
+    let result = separating_line(k, a, b, rng, lp);
+    probe.lp_call(a.positions.len() + b.positions.len(), lp.work - before);
+    match result {
+        Ok(Separation::Separated(t)) => Some(t),
+        _ => None,
+    }
+}
+
+fn clm<K: Kernel, R: Rng + ?Sized, P: Probe>(
     k: K,
     c: f64,
     p: &LinkedPolygon,
     q: &LinkedPolygon,
     rng: &mut R,
     ws: &mut ClmWorkspace,
+    probe: &mut P,
 ) -> bool {
     ws.rp.clear();
     ws.rq.clear();
     sample(p, sample_size(c, p.len()), rng, &mut ws.sample, &mut ws.rp);
     sample(q, sample_size(c, q.len()), rng, &mut ws.sample, &mut ws.rq);
+    probe.samples(ws.rp.len(), ws.rq.len());
     let rp = ArenaPoints {
         polygon: p,
         positions: &ws.rp,
@@ -209,11 +229,10 @@ fn clm<K: Kernel, R: Rng + ?Sized>(
         polygon: q,
         positions: &ws.rq,
     };
-    let t = match separating_line(k, &rp, &rq, rng, &mut ws.lp) {
-        Ok(Separation::Separated(t)) => t,
+    let Some(t) = counted_lp(k, &rp, &rq, rng, &mut ws.lp, probe) else {
         // Samples are never empty (polygons have ≥ 3 vertices), so only a real
         // intersection of the sample hulls gets here.
-        _ => return true,
+        return true;
     };
     if ws.rp.len() == p.len() && ws.rq.len() == q.len() {
         return false; // the LP saw both polygons whole
@@ -229,6 +248,8 @@ fn clm<K: Kernel, R: Rng + ?Sized>(
         &mut ws.cq,
     );
     ws.walked += (ws.cp.len() + ws.cq.len()) as u64;
+    probe.chain_walk(ws.cp.len());
+    probe.chain_walk(ws.cq.len());
     let ClmWorkspace {
         rp,
         rq,
@@ -252,10 +273,7 @@ fn clm<K: Kernel, R: Rng + ?Sized>(
             polygon: y,
             positions: cy,
         };
-        match separating_line(k, &sample, &far, rng, lp) {
-            Ok(Separation::Separated(t)) => Some(t),
-            _ => None,
-        }
+        counted_lp(k, &sample, &far, rng, lp, probe)
     });
     let [Some(lp_line), Some(lq_line)] = lines else {
         return true;
@@ -285,12 +303,19 @@ fn clm<K: Kernel, R: Rng + ?Sized>(
         chain2,
     );
     *walked += (chain.len() + chain2.len()) as u64;
+    if p_open {
+        probe.chain_walk(chain.len());
+    }
+    if q_open {
+        probe.chain_walk(chain2.len());
+    }
     let meets = |near: &[u32],
                  x: &LinkedPolygon,
                  far: &[u32],
                  y: &LinkedPolygon,
                  rng: &mut R,
-                 lp: &mut LpWorkspace| {
+                 lp: &mut LpWorkspace,
+                 probe: &mut P| {
         let near = ArenaPoints {
             polygon: x,
             positions: near,
@@ -299,12 +324,9 @@ fn clm<K: Kernel, R: Rng + ?Sized>(
             polygon: y,
             positions: far,
         };
-        !matches!(
-            separating_line(k, &near, &far, rng, lp),
-            Ok(Separation::Separated(_))
-        )
+        counted_lp(k, &near, &far, rng, lp, probe).is_none()
     };
-    (p_open && meets(chain, p, cq, q, rng, lp)) || (q_open && meets(chain2, q, cp, p, rng, lp))
+    (p_open && meets(chain, p, cq, q, rng, lp, probe)) || (q_open && meets(chain2, q, cp, p, rng, lp, probe))
 }
 
 /// One chain walk (see [`far_chains`]): from the tangent vertex at position `t` of

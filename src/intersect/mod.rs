@@ -27,6 +27,7 @@
 mod barba;
 mod chazelle_dobkin;
 mod clm;
+mod counts;
 mod dobkin;
 mod linear;
 mod linear_linked;
@@ -35,6 +36,7 @@ mod linked;
 pub use barba::Barba;
 pub use chazelle_dobkin::ChazelleDobkin;
 pub use clm::{Clm, ClmWithFactor, ClmWorkspace};
+pub use counts::{Counts, LpCall};
 pub use dobkin::Dobkin;
 pub use linear::{Linear, brute_force};
 pub use linear_linked::LinearLinked;
@@ -52,6 +54,19 @@ use std::str::FromStr;
 pub trait Probe {
     #[inline]
     fn iteration(&mut self) {}
+
+    /// [`Clm`] drew samples of `p` and `q` vertices (once per query).
+    #[inline]
+    fn samples(&mut self, _p: usize, _q: usize) {}
+
+    /// [`Clm`] ran one LP on `constraints` points (both sets), which examined `work`
+    /// of them (violation tests, one-dimensional steps, certification).
+    #[inline]
+    fn lp_call(&mut self, _constraints: usize, _work: u64) {}
+
+    /// [`Clm`] walked one chain of `vertices` vertices (a step per vertex collected).
+    #[inline]
+    fn chain_walk(&mut self, _vertices: usize) {}
 }
 
 impl Probe for () {}
