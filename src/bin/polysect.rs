@@ -96,6 +96,13 @@ enum Command {
         order: OrderArg,
         #[arg(long, default_value_t = 1)]
         seed: u64,
+        /// Semi-axis a (along x before rotation) of the ellipse families' polygons, fixed
+        /// instead of drawn from (0.05, 1] (thesis Figure 4.1: a = 1, b = 0.1).
+        #[arg(long, value_parser = parse_axis, requires = "b")]
+        a: Option<f64>,
+        /// Semi-axis b (along y before rotation); given together with --a.
+        #[arg(long, value_parser = parse_axis, requires = "a")]
+        b: Option<f64>,
     },
     /// Measure the experiments (thesis ch. 4, the speed–accuracy trade) and write CSV
     /// files and SVG plots.
@@ -223,6 +230,17 @@ fn parse_family(s: &str) -> Result<Family, String> {
     s.parse()
 }
 
+/// An ellipse semi-axis: a number in [0.001, 1000] (narrower would let rounding make
+/// every generated point collinear).
+fn parse_axis(s: &str) -> Result<f64, String> {
+    let v: f64 = s.parse().map_err(|_| format!("'{s}' is not a number"))?;
+    if (1e-3..=1e3).contains(&v) {
+        Ok(v)
+    } else {
+        Err(format!("{s} is outside [0.001, 1000]"))
+    }
+}
+
 #[derive(Clone, Copy, ValueEnum)]
 enum RelationArg {
     Any,
@@ -292,7 +310,9 @@ fn main() -> ExitCode {
             relation,
             order,
             seed,
-        }) => gen_pairs(family, n, count, relation, order, seed),
+            a,
+            b,
+        }) => gen_pairs(family, n, count, relation, order, seed, a.zip(b)),
         Some(Command::Bench {
             experiments,
             quick,
@@ -428,7 +448,14 @@ fn gen_pairs(
     relation: RelationArg,
     order: OrderArg,
     seed: u64,
+    axes: Option<(f64, f64)>,
 ) -> io::Result<()> {
+    if axes.is_some() && !matches!(family, Family::Ellipse | Family::Rotated | Family::NonUniform) {
+        return Err(io::Error::new(
+            io::ErrorKind::InvalidInput,
+            format!("--a/--b apply to the ellipse families (ellipse, rotated, non-uniform), not to {family}"),
+        ));
+    }
     let mut rng = SmallRng::seed_from_u64(seed);
     let relation = match relation {
         RelationArg::Any => Relation::Any,
@@ -437,7 +464,7 @@ fn gen_pairs(
     };
     let mut out = BufWriter::new(io::stdout().lock());
     for i in 0..count {
-        let (p, q) = generate::pair(family, n, relation, &mut rng);
+        let (p, q) = generate::pair_with_axes(family, n, relation, axes, &mut rng);
         let expected = Algorithm::Linear.intersects(Precision::Exact, &p, &q);
         let mut write_order = |poly: &ConvexPolygon| {
             let mut v = poly.vertices().to_vec();

@@ -41,6 +41,7 @@ mod query;
 mod scaling;
 mod sqrt;
 pub mod thesis;
+mod thesis_figures;
 mod trade;
 
 pub use query::{Kernels, PreparedPair};

@@ -38,7 +38,9 @@
 //! measured) and the figures `thesis_fig4_2a_*.svg` (time), `thesis_fig4_2b_*.svg`
 //! (time / log2 n), `thesis_fig4_3_*.svg` (iterations), `thesis_fig4_6.svg` (CLM time /
 //! √n), `thesis_fig4_7.svg` (all algorithms) and `thesis_fig4_8.svg` (CLM against
-//! Convert), all of means like the thesis's figures.
+//! Convert), all of means like the thesis's figures; and the input figures 4.1, 4.4
+//! and 4.5 (`thesis_fig4_1.svg`, `thesis_fig4_4a.svg`, `thesis_fig4_4b.svg`,
+//! `thesis_fig4_5.svg`).
 
 use super::measure::median;
 use super::plot::{self, Chart, Series};
@@ -306,6 +308,7 @@ pub fn run(config: &ThesisConfig) -> io::Result<Report> {
     let points = summarize(config, &cells);
     csv(&points).write(&config.out, "thesis.csv", &mut report)?;
     figures(config, &points, &mut report)?;
+    super::thesis_figures::write_all(&config.out, config.seed, &mut report)?;
     report.summary = summary(&points);
     Ok(report)
 }
