@@ -39,7 +39,8 @@
 //! The worst case (an absurdly unlucky sample) is O(n + m) walks and quadratic LP time.
 //! A [`Probe`] receives one iteration per unit of work: each point an LP examines
 //! (bounding scan, incremental loop, one-dimensional steps, certification) and each
-//! chain vertex walked.
+//! chain vertex walked; and, apart, the sample sizes, each LP call (constraints, points
+//! examined) and each chain walk (vertices), which [`Counts`](super::Counts) records.
 //!
 //! # Degeneracies
 //! Closed sets throughout: the LP reports touching hulls as intersecting and only
