@@ -9,7 +9,7 @@ use super::plot::Series;
 use super::scaling::{Point, csv, draw, measure_grid, pairs, relation_name, series, short_ns, sizes};
 use super::{Config, Csv, Report};
 use crate::generate::{Family, Relation};
-use crate::intersect::{Algorithm, Counts};
+use crate::intersect::{Algorithm, Counts, CountsSummary};
 use crate::kernel::Precision;
 use std::io;
 
@@ -89,12 +89,7 @@ fn counts(config: &Config, sizes: &[usize], report: &mut Report) -> io::Result<(
                 .iter_mut()
                 .map(|pp| pp.counts(Algorithm::Clm, Precision::Exact).1)
                 .collect();
-            let k = all.len().max(1) as f64;
-            let lps: usize = all.iter().map(Counts::lp_calls).sum();
-            let walks: usize = all.iter().map(|c| c.walks.len()).sum();
-            let ratio = |num: f64, den: usize| if den == 0 { f64::NAN } else { num / den as f64 };
-            let lp_work = ratio(all.iter().map(|c| c.lp_work() as f64).sum(), lps);
-            let walk = ratio(all.iter().map(|c| c.chain_steps() as f64).sum(), walks);
+            let c = CountsSummary::of(&all);
             let opt = |x: f64, d: usize| {
                 if x.is_finite() {
                     format!("{x:.d$}")
@@ -106,27 +101,20 @@ fn counts(config: &Config, sizes: &[usize], report: &mut Report) -> io::Result<(
                 Family::Rotated.to_string(),
                 r.into(),
                 n.to_string(),
-                all.len().to_string(),
-                format!("{:.1}", all.iter().map(|c| c.samples() as f64).sum::<f64>() / k),
-                format!("{:.3}", lps as f64 / k),
-                format!(
-                    "{:.3}",
-                    all.iter().filter(|c| c.lp_calls() == 1).count() as f64 / k
-                ),
-                opt(ratio(all.iter().map(|c| c.lp_constraints() as f64).sum(), lps), 1),
-                opt(lp_work, 1),
-                format!("{:.3}", walks as f64 / k),
-                opt(walk, 2),
-                all.iter()
-                    .map(Counts::longest_walk)
-                    .max()
-                    .unwrap_or(0)
-                    .to_string(),
-                format!("{:.1}", all.iter().map(|c| c.iterations as f64).sum::<f64>() / k),
+                c.queries.to_string(),
+                format!("{:.1}", c.samples_mean),
+                format!("{:.3}", c.lp_calls_mean),
+                format!("{:.3}", c.one_lp_share),
+                opt(c.constraints_per_lp, 1),
+                opt(c.work_per_lp, 1),
+                format!("{:.3}", c.walks_mean),
+                opt(c.steps_per_walk, 2),
+                c.longest_walk.to_string(),
+                format!("{:.1}", c.iterations_mean),
             ]);
-            per_lp.push((n as f64, lp_work));
-            if walk.is_finite() {
-                per_walk.push((n as f64, walk));
+            per_lp.push((n as f64, c.work_per_lp));
+            if c.steps_per_walk.is_finite() {
+                per_walk.push((n as f64, c.steps_per_walk));
             }
         }
         lines.push(Series::new(format!("examined per LP, {r}"), per_lp));

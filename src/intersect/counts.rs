@@ -105,3 +105,53 @@ impl Probe for Counts {
         self.walks.push(vertices);
     }
 }
+
+/// Means of [`Counts`] over several queries: what the experiments' CSVs report.
+/// Per-LP and per-walk figures are ratios of totals (NaN without LP calls or walks).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct CountsSummary {
+    /// Queries summarised.
+    pub queries: usize,
+    pub iterations_mean: f64,
+    pub samples_mean: f64,
+    pub lp_calls_mean: f64,
+    /// Share of queries that ended after one LP call.
+    pub one_lp_share: f64,
+    pub constraints_per_lp: f64,
+    /// Points examined per LP call.
+    pub work_per_lp: f64,
+    pub walks_mean: f64,
+    pub steps_per_walk: f64,
+    pub longest_walk: usize,
+}
+
+impl CountsSummary {
+    /// Summarises `counts` (all zeros and NaN ratios when empty).
+    pub fn of<'a>(counts: impl IntoIterator<Item = &'a Counts>) -> CountsSummary {
+        let mut s = CountsSummary::default();
+        let (mut iterations, mut samples, mut lps, mut one_lp) = (0u64, 0usize, 0usize, 0usize);
+        let (mut constraints, mut work, mut walks, mut steps) = (0usize, 0u64, 0usize, 0usize);
+        for c in counts {
+            s.queries += 1;
+            iterations += c.iterations;
+            samples += c.samples();
+            lps += c.lp_calls();
+            one_lp += usize::from(c.lp_calls() == 1);
+            constraints += c.lp_constraints();
+            work += c.lp_work();
+            walks += c.walks.len();
+            steps += c.chain_steps();
+            s.longest_walk = s.longest_walk.max(c.longest_walk());
+        }
+        let ratio = |num: f64, den: usize| if den == 0 { f64::NAN } else { num / den as f64 };
+        s.iterations_mean = ratio(iterations as f64, s.queries);
+        s.samples_mean = ratio(samples as f64, s.queries);
+        s.lp_calls_mean = ratio(lps as f64, s.queries);
+        s.one_lp_share = ratio(one_lp as f64, s.queries);
+        s.constraints_per_lp = ratio(constraints as f64, lps);
+        s.work_per_lp = ratio(work as f64, lps);
+        s.walks_mean = ratio(walks as f64, s.queries);
+        s.steps_per_walk = ratio(steps as f64, walks);
+        s
+    }
+}

@@ -36,7 +36,7 @@ mod linked;
 pub use barba::Barba;
 pub use chazelle_dobkin::ChazelleDobkin;
 pub use clm::{Clm, ClmWithFactor, ClmWorkspace};
-pub use counts::{Counts, LpCall};
+pub use counts::{Counts, CountsSummary, LpCall};
 pub use dobkin::Dobkin;
 pub use linear::{Linear, brute_force};
 pub use linear_linked::LinearLinked;
