@@ -196,6 +196,23 @@ fn every_experiment_writes_csv_and_svg() {
             }
         }
     }
+    // CLM's counts, apart: a row per (relation, n); every disjoint query runs five LPs
+    // and four walks (samples of 4 and 8 vertices are never the whole polygon here).
+    let (header, rows) = read_csv(&dir.join("clm_counts.csv"));
+    assert_eq!(rows.len(), 2 * 2, "{rows:?}");
+    let relations = column(&header, &rows, "relation");
+    let calls = column(&header, &rows, "lp_calls_mean");
+    let walks = column(&header, &rows, "walks_mean");
+    for ((r, c), w) in relations.iter().zip(&calls).zip(&walks) {
+        let (c, w): (f64, f64) = (c.parse().unwrap(), w.parse().unwrap());
+        assert!((1.0..=5.0).contains(&c), "{r}: {c} LP calls");
+        if *r == "disjoint" {
+            assert_eq!((c, w), (5.0, 4.0), "disjoint queries run five LPs and four walks");
+        }
+    }
+    for v in column(&header, &rows, "constraints_per_lp") {
+        assert!(v.parse::<f64>().unwrap() >= 6.0, "{v}");
+    }
     check_crossings_csv(&dir.join("crossings.csv"), &[5, 40]);
     let _ = fs::remove_dir_all(&dir);
 }

@@ -2,7 +2,7 @@
 
 use clap::{Parser, Subcommand, ValueEnum};
 use polysect::crossings::{CrossingAlgorithm, CrossingOptions, Touching};
-use polysect::experiments::{self, Config, Experiment};
+use polysect::experiments::{self, Config, Experiment, ThesisConfig};
 use polysect::generate::simple::{GenerateError, PointDistribution, SimpleMethod, random_simple_polygon};
 use polysect::generate::{self, Family, Relation};
 use polysect::intersect::Algorithm;
@@ -153,6 +153,13 @@ enum Command {
         /// Seed (any unsigned 64-bit integer): the same seed writes the same pairs.
         #[arg(long, default_value_t = 1)]
         seed: u64,
+        /// Semi-axis a (along x before rotation) of the ellipse families' polygons, fixed
+        /// instead of drawn from (0.05, 1] (thesis Figure 4.1: a = 1, b = 0.1).
+        #[arg(long, value_parser = parse_axis, requires = "b")]
+        a: Option<f64>,
+        /// Semi-axis b (along y before rotation); given together with --a.
+        #[arg(long, value_parser = parse_axis, requires = "a")]
+        b: Option<f64>,
     },
     /// Measure the experiments (thesis ch. 4, the speed–accuracy trade) and write CSV
     /// files and SVG plots.
@@ -164,6 +171,12 @@ enum Command {
         /// Fewer sizes and shorter loops (under a minute).
         #[arg(long)]
         quick: bool,
+        /// How pairs are placed and timed: `ours` (steered pairs, median of timed loops;
+        /// runs the named experiments) or `thesis` (the thesis's chapter 4 as written:
+        /// random translations sorted by outcome, 100 pairs × 1000 repetitions, mean and
+        /// median, n = 2^4 … 2^22; runs experiments 1–5 together and takes no names).
+        #[arg(long, value_enum, default_value_t = ProtocolArg::Ours)]
+        protocol: ProtocolArg,
         /// Output directory (created if missing).
         #[arg(long, default_value = "bench-out")]
         out: PathBuf,
@@ -304,11 +317,28 @@ fn parse_family(s: &str) -> Result<Family, String> {
     s.parse()
 }
 
+/// An ellipse semi-axis: a number in [0.001, 1000] (narrower would let rounding make
+/// every generated point collinear).
+fn parse_axis(s: &str) -> Result<f64, String> {
+    let v: f64 = s.parse().map_err(|_| format!("'{s}' is not a number"))?;
+    if (1e-3..=1e3).contains(&v) {
+        Ok(v)
+    } else {
+        Err(format!("{s} is outside [0.001, 1000]"))
+    }
+}
+
 #[derive(Clone, Copy, ValueEnum)]
 enum RelationArg {
     Any,
     Intersecting,
     Disjoint,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum ProtocolArg {
+    Ours,
+    Thesis,
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -395,15 +425,22 @@ fn main() -> ExitCode {
             relation,
             order,
             seed,
+            a,
+            b,
             ..
-        }) => gen_pairs(family, n as usize, count, relation, order, seed).map_err(Failure::Io),
+        }) => gen_pairs(family, n as usize, count, relation, order, seed, a.zip(b)).map_err(Failure::Io),
         Some(Command::Bench {
             experiments,
             quick,
+            protocol,
             out,
             seed,
             no_progress,
-        }) => bench(&experiments, quick, out, seed, !no_progress).map_err(Failure::Io),
+        }) => match protocol {
+            ProtocolArg::Ours => bench(&experiments, quick, out, seed, !no_progress),
+            ProtocolArg::Thesis => bench_thesis(&experiments, quick, out, seed, !no_progress),
+        }
+        .map_err(Failure::Io),
         Some(Command::List) => list().map_err(Failure::Io),
         Some(Command::Demo {
             polygons,
@@ -586,7 +623,14 @@ fn gen_pairs(
     relation: RelationArg,
     order: OrderArg,
     seed: u64,
+    axes: Option<(f64, f64)>,
 ) -> io::Result<()> {
+    if axes.is_some() && !matches!(family, Family::Ellipse | Family::Rotated | Family::NonUniform) {
+        return Err(io::Error::new(
+            io::ErrorKind::InvalidInput,
+            format!("--a/--b apply to the ellipse families (ellipse, rotated, non-uniform), not to {family}"),
+        ));
+    }
     let mut rng = SmallRng::seed_from_u64(seed);
     let relation = match relation {
         RelationArg::Any => Relation::Any,
@@ -595,8 +639,11 @@ fn gen_pairs(
     };
     let mut out = BufWriter::new(io::stdout().lock());
     for i in 0..count {
-        let (p, q) = generate::try_pair(family, n, relation, &mut rng)
-            .map_err(|e| io::Error::new(io::ErrorKind::InvalidInput, e))?;
+        let (p, q) = match axes {
+            None => generate::try_pair(family, n, relation, &mut rng)
+                .map_err(|e| io::Error::new(io::ErrorKind::InvalidInput, e))?,
+            Some(_) => generate::pair_with_axes(family, n, relation, axes, &mut rng),
+        };
         let expected = Algorithm::Linear.intersects(Precision::Exact, &p, &q);
         let mut write_order = |poly: &ConvexPolygon| {
             let mut v = poly.vertices().to_vec();
@@ -811,6 +858,45 @@ fn calibrate() -> io::Result<()> {
          queries since the last edit cost as much as converting them ({:.1} ns/vertex vs {:.1} ns·√n per query).",
         costs.crossover, costs.convert_ns_per_vertex, costs.sampled_ns_per_sqrt_n
     )
+}
+
+/// `bench --protocol thesis`: the thesis's chapter 4 protocol (see
+/// `polysect::experiments::thesis`).
+fn bench_thesis(
+    experiments: &[Experiment],
+    quick: bool,
+    out: PathBuf,
+    seed: Option<u64>,
+    progress: bool,
+) -> io::Result<()> {
+    if !experiments.is_empty() {
+        return Err(io::Error::new(
+            io::ErrorKind::InvalidInput,
+            "--protocol thesis runs the thesis's experiments 1-5 together and takes no experiment names",
+        ));
+    }
+    let mut config = if quick {
+        ThesisConfig::quick(out)
+    } else {
+        ThesisConfig::full(out)
+    };
+    if let Some(seed) = seed {
+        config.seed = seed;
+    }
+    config.progress = progress;
+    let start = Instant::now();
+    let report = experiments::thesis::run(&config)
+        .map_err(|e| io::Error::new(e.kind(), format!("cannot write to {}: {e}", config.out.display())))?;
+    let mut out = io::stdout().lock();
+    writeln!(out, "{}", report.summary)?;
+    writeln!(
+        out,
+        "wrote {} files to {} in {:.1} s",
+        report.files.len(),
+        config.out.display(),
+        start.elapsed().as_secs_f64()
+    )?;
+    out.flush()
 }
 
 fn bench(

@@ -42,9 +42,12 @@ pub mod plot;
 mod query;
 mod scaling;
 mod sqrt;
+pub mod thesis;
+mod thesis_figures;
 mod trade;
 
 pub use query::{Kernels, PreparedPair};
+pub use thesis::ThesisConfig;
 pub use trade::needle_pair;
 
 use indicatif::{ProgressBar, ProgressStyle};
@@ -231,7 +234,12 @@ pub fn run(experiments: &[Experiment], config: &Config) -> io::Result<Report> {
 
 /// A progress bar of `len` steps labelled `name` (hidden when progress is off).
 pub(crate) fn progress(config: &Config, name: &str, len: usize) -> ProgressBar {
-    if !config.progress {
+    progress_bar(config.progress, name, len)
+}
+
+/// A progress bar of `len` steps labelled `name`, hidden unless `show`.
+pub(crate) fn progress_bar(show: bool, name: &str, len: usize) -> ProgressBar {
+    if !show {
         return ProgressBar::hidden();
     }
     let bar = ProgressBar::new(len as u64);

@@ -3,7 +3,7 @@
 
 use crate::intersect::{
     Algorithm, ArrayIntersection, Barba, ChazelleDobkin, Clm, ClmWithFactor, ClmWorkspace, Convert,
-    ConvertWorkspace, Dobkin, Iterations, Linear, LinkedIntersection, Probe,
+    ConvertWorkspace, Counts, Dobkin, Iterations, Linear, LinkedIntersection, Probe,
 };
 use crate::kernel::{Exact, Fast, Kernel, Precision};
 use crate::polygon::{ConvexPolygon, LinkedPolygon};
@@ -68,6 +68,17 @@ impl PreparedPair {
             Precision::Exact => self.query_probed(alg, Exact, &mut it),
         };
         (answer, it.0)
+    }
+
+    /// Runs `alg` once under `precision`, returning the answer and its [`Counts`]
+    /// (iterations; for CLM also samples, LP calls and chain walks).
+    pub fn counts(&mut self, alg: Algorithm, precision: Precision) -> (bool, Counts) {
+        let mut counts = Counts::default();
+        let answer = match precision {
+            Precision::Fast => self.query_probed(alg, Fast, &mut counts),
+            Precision::Exact => self.query_probed(alg, Exact, &mut counts),
+        };
+        (answer, counts)
     }
 
     /// Runs CLM with sample factor `c` once under the exact kernel.

@@ -214,10 +214,44 @@ pub fn try_ellipse_polygon<R: Rng + ?Sized>(
     density: &Density,
     rotate: bool,
 ) -> Result<ConvexPolygon, GenerateError> {
+    try_ellipse_polygon_axes(rng, n, density, rotate, None)
+}
+
+/// [`ellipse_polygon`] with the semi-axes `(a, b)` given instead of drawn (the thesis's
+/// Figure 4.1 squashes the unit circle with a = 1, b = 0.1); `None` draws them.
+/// Axes should be finite and positive (the CLI checks them).
+///
+/// # Panics
+/// When `n` exceeds [`MAX_VERTICES`]; [`try_ellipse_polygon_axes`] returns an error.
+#[track_caller]
+pub fn ellipse_polygon_axes<R: Rng + ?Sized>(
+    rng: &mut R,
+    n: usize,
+    density: &Density,
+    rotate: bool,
+    axes: Option<(f64, f64)>,
+) -> ConvexPolygon {
+    try_ellipse_polygon_axes(rng, n, density, rotate, axes).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// [`ellipse_polygon_axes`], refusing more than [`MAX_VERTICES`] vertices.
+///
+/// # Errors
+/// [`GenerateError::InvalidParameters`] when `n` exceeds [`MAX_VERTICES`].
+pub fn try_ellipse_polygon_axes<R: Rng + ?Sized>(
+    rng: &mut R,
+    n: usize,
+    density: &Density,
+    rotate: bool,
+    axes: Option<(f64, f64)>,
+) -> Result<ConvexPolygon, GenerateError> {
     check_size(n)?;
     let n = n.max(3);
     loop {
-        let (a, b) = (rng.random_range(0.05..=1.0), rng.random_range(0.05..=1.0));
+        let (a, b) = match axes {
+            Some(ab) => ab,
+            None => (rng.random_range(0.05..=1.0), rng.random_range(0.05..=1.0)),
+        };
         let phi: f64 = if rotate { rng.random_range(0.0..TAU) } else { 0.0 };
         let (c, s) = (phi.cos(), phi.sin());
         let (tx, ty) = (rng.random_range(-1.0..=1.0), rng.random_range(-1.0..=1.0));
@@ -320,7 +354,9 @@ pub fn try_pair<R: Rng + ?Sized>(
 ) -> Result<(ConvexPolygon, ConvexPolygon), GenerateError> {
     check_size(n)?;
     Ok(match family {
-        Family::Ellipse | Family::Rotated | Family::NonUniform => ellipse_pair(family, n, relation, rng),
+        Family::Ellipse | Family::Rotated | Family::NonUniform => {
+            ellipse_pair(family, n, relation, None, rng)
+        }
         Family::SharedVertex | Family::VertexOnEdge | Family::SharedEdge | Family::OverlappingEdges => {
             touching_pair(family, n, relation, rng)
         }
@@ -329,17 +365,39 @@ pub fn try_pair<R: Rng + ?Sized>(
     })
 }
 
-fn ellipse_polygon_of(family: Family, n: usize, rng: &mut (impl Rng + ?Sized)) -> ConvexPolygon {
+/// [`pair`] for the ellipse families with both polygons' semi-axes fixed to `axes`
+/// (`None`: drawn as usual); other families ignore `axes`.
+pub fn pair_with_axes<R: Rng + ?Sized>(
+    family: Family,
+    n: usize,
+    relation: Relation,
+    axes: Option<(f64, f64)>,
+    rng: &mut R,
+) -> (ConvexPolygon, ConvexPolygon) {
     match family {
-        Family::Ellipse => ellipse_polygon(rng, n, &Density::Uniform, false),
+        Family::Ellipse | Family::Rotated | Family::NonUniform => {
+            ellipse_pair(family, n, relation, axes, rng)
+        }
+        _ => pair(family, n, relation, rng),
+    }
+}
+
+fn ellipse_polygon_of(
+    family: Family,
+    n: usize,
+    axes: Option<(f64, f64)>,
+    rng: &mut (impl Rng + ?Sized),
+) -> ConvexPolygon {
+    match family {
+        Family::Ellipse => ellipse_polygon_axes(rng, n, &Density::Uniform, false, axes),
         Family::Rotated => {
-            let p = ellipse_polygon(rng, n, &Density::Uniform, true);
+            let p = ellipse_polygon_axes(rng, n, &Density::Uniform, true, axes);
             let start = rng.random_range(0..p.len());
             p.rotated(start)
         }
         _ => {
             let d = Density::random(rng);
-            let p = ellipse_polygon(rng, n, &d, true);
+            let p = ellipse_polygon_axes(rng, n, &d, true, axes);
             let start = rng.random_range(0..p.len());
             p.rotated(start)
         }
@@ -350,10 +408,11 @@ fn ellipse_pair<R: Rng + ?Sized>(
     family: Family,
     n: usize,
     relation: Relation,
+    axes: Option<(f64, f64)>,
     rng: &mut R,
 ) -> (ConvexPolygon, ConvexPolygon) {
-    let p = ellipse_polygon_of(family, n, rng);
-    let q = ellipse_polygon_of(family, n, rng);
+    let p = ellipse_polygon_of(family, n, axes, rng);
+    let q = ellipse_polygon_of(family, n, axes, rng);
     match relation {
         Relation::Any => (p, q),
         Relation::Intersecting => {

@@ -58,7 +58,8 @@
 //! The worst case (an absurdly unlucky sample) is O(n + m) walks and quadratic LP time.
 //! A [`Probe`] receives one iteration per unit of work: each point an LP examines
 //! (bounding scan, incremental loop, one-dimensional steps, certification) and each
-//! chain vertex walked.
+//! chain vertex walked; and, apart, the sample sizes, each LP call (constraints, points
+//! examined) and each chain walk (vertices), which [`Counts`](super::Counts) records.
 //!
 //! # Degeneracies
 //! Closed sets throughout: the LP reports touching hulls as intersecting and only
@@ -80,7 +81,7 @@ use super::certificate::{
 use super::linked::LinkedIntersection;
 use super::{Certificate, Derivation, Probe, Which};
 use crate::kernel::{Kernel, Orientation, Point};
-use crate::lp::{ArenaPoints, Bitangent, LpWorkspace, Separation, WitnessPoint, separating_line};
+use crate::lp::{ArenaPoints, Bitangent, LpError, LpWorkspace, Separation, WitnessPoint, separating_line};
 use crate::polygon::{LinkedPolygon, SampleWorkspace};
 use rand::Rng;
 
@@ -223,7 +224,7 @@ impl LinkedIntersection for ClmWithFactor {
         probe: &mut P,
     ) -> bool {
         let work_before = ws.lp.work + ws.walked;
-        let answer = clm::<K, R, false>(k, self.0, p, q, rng, ws);
+        let answer = clm::<K, R, P, false>(k, self.0, p, q, rng, ws, probe);
         for _ in work_before..ws.lp.work + ws.walked {
             probe.iteration();
         }
@@ -241,7 +242,7 @@ impl LinkedIntersection for ClmWithFactor {
         probe: &mut P,
     ) -> Derivation {
         let work_before = ws.lp.work + ws.walked;
-        let answer = clm::<K, R, true>(k, self.0, p, q, rng, ws);
+        let answer = clm::<K, R, P, true>(k, self.0, p, q, rng, ws, probe);
         for _ in work_before..ws.lp.work + ws.walked {
             probe.iteration();
         }
@@ -350,14 +351,30 @@ fn sample_size(c: f64, n: usize) -> usize {
     if r.is_finite() && r >= 3.0 { r as usize } else { 3 }
 }
 
+/// [`separating_line`], reporting the call to `probe` (constraints and work).
+fn counted_lp<K: Kernel, R: Rng + ?Sized, P: Probe>(
+    k: K,
+    a: &ArenaPoints<'_>,
+    b: &ArenaPoints<'_>,
+    rng: &mut R,
+    lp: &mut LpWorkspace,
+    probe: &mut P,
+) -> Result<Separation, LpError> {
+    let before = lp.work;
+    let result = separating_line(k, a, b, rng, lp);
+    probe.lp_call(a.positions.len() + b.positions.len(), lp.work - before);
+    result
+}
+
 /// The test; with `CERT` it also records in `ws.trace` what its certificate needs.
-fn clm<K: Kernel, R: Rng + ?Sized, const CERT: bool>(
+fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     k: K,
     c: f64,
     p: &LinkedPolygon,
     q: &LinkedPolygon,
     rng: &mut R,
     ws: &mut ClmWorkspace,
+    probe: &mut P,
 ) -> bool {
     if CERT {
         ws.trace.meet = None;
@@ -368,6 +385,7 @@ fn clm<K: Kernel, R: Rng + ?Sized, const CERT: bool>(
     ws.rq.clear();
     sample(p, sample_size(c, p.len()), rng, &mut ws.sample, &mut ws.rp);
     sample(q, sample_size(c, q.len()), rng, &mut ws.sample, &mut ws.rq);
+    probe.samples(ws.rp.len(), ws.rq.len());
     let rp = ArenaPoints {
         polygon: p,
         positions: &ws.rp,
@@ -376,7 +394,7 @@ fn clm<K: Kernel, R: Rng + ?Sized, const CERT: bool>(
         polygon: q,
         positions: &ws.rq,
     };
-    let t = match separating_line(k, &rp, &rq, rng, &mut ws.lp) {
+    let t = match counted_lp(k, &rp, &rq, rng, &mut ws.lp, probe) {
         Ok(Separation::Separated(t)) => t,
         // Samples are never empty (polygons have ≥ 3 vertices), so only a real
         // intersection of the sample hulls gets here.
@@ -404,6 +422,8 @@ fn clm<K: Kernel, R: Rng + ?Sized, const CERT: bool>(
         &mut ws.cq,
     );
     ws.walked += (ws.cp.len() + ws.cq.len()) as u64;
+    probe.chain_walk(ws.cp.len());
+    probe.chain_walk(ws.cq.len());
     let ClmWorkspace {
         rp,
         rq,
@@ -428,7 +448,7 @@ fn clm<K: Kernel, R: Rng + ?Sized, const CERT: bool>(
             polygon: y,
             positions: cy,
         };
-        match separating_line(k, &sample, &far, rng, lp) {
+        match counted_lp(k, &sample, &far, rng, lp, probe) {
             Ok(Separation::Separated(t)) => Some(t),
             _ => None,
         }
@@ -472,6 +492,12 @@ fn clm<K: Kernel, R: Rng + ?Sized, const CERT: bool>(
         chain2,
     );
     *walked += (chain.len() + chain2.len()) as u64;
+    if p_open {
+        probe.chain_walk(chain.len());
+    }
+    if q_open {
+        probe.chain_walk(chain2.len());
+    }
     let mut meets = |near: &[u32],
                      x: &LinkedPolygon,
                      far: &[u32],
@@ -487,7 +513,7 @@ fn clm<K: Kernel, R: Rng + ?Sized, const CERT: bool>(
             polygon: y,
             positions: far,
         };
-        match separating_line(k, &near, &far, rng, lp) {
+        match counted_lp(k, &near, &far, rng, lp, probe) {
             Ok(Separation::Separated(t)) => {
                 if CERT {
                     trace.lines.push((t, sets.0, sets.1));

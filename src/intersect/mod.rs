@@ -37,6 +37,7 @@ mod barba;
 mod certificate;
 mod chazelle_dobkin;
 mod clm;
+mod counts;
 mod dobkin;
 mod fallback;
 mod linear;
@@ -47,6 +48,7 @@ pub use barba::Barba;
 pub use certificate::{Certificate, CertificateError, Derivation, Which, verify, verify_linked};
 pub use chazelle_dobkin::ChazelleDobkin;
 pub use clm::{Clm, ClmWithFactor, ClmWorkspace};
+pub use counts::{Counts, CountsSummary, LpCall};
 pub use dobkin::Dobkin;
 pub use fallback::{exact_certificate, proven, proven_linked};
 pub use linear::{Linear, brute_force};
@@ -71,6 +73,19 @@ pub trait Probe {
     /// [`Derivation`]); tests count these.
     #[inline]
     fn fallback(&mut self, _kind: Fallback) {}
+
+    /// [`Clm`] drew samples of `p` and `q` vertices (once per query).
+    #[inline]
+    fn samples(&mut self, _p: usize, _q: usize) {}
+
+    /// [`Clm`] ran one LP on `constraints` points (both sets), which examined `work`
+    /// of them (violation tests, one-dimensional steps, certification).
+    #[inline]
+    fn lp_call(&mut self, _constraints: usize, _work: u64) {}
+
+    /// [`Clm`] walked one chain of `vertices` vertices (a step per vertex collected).
+    #[inline]
+    fn chain_walk(&mut self, _vertices: usize) {}
 }
 
 /// How a certified call completed an answer its algorithm did not certify.
