@@ -495,7 +495,10 @@ fn scene(c: &mut Criterion) {
             b.iter_custom(|iters| world.borrow_mut().run(iters, false))
         });
         group.finish();
-        eprintln!("{}", world.borrow().paired_report());
+        // A workload filtered out on the command line ran no frame: nothing to pair.
+        if !world.borrow().paired.is_empty() {
+            eprintln!("{}", world.borrow().paired_report());
+        }
     }
 }
 
