@@ -500,6 +500,40 @@ impl Centre for ConvexPolygon {
     }
 }
 
+/// The planner's linear-walk route, certified: with conversion priced out, small
+/// unconverted pairs are walked along their links, and every certificate (the walk's
+/// separating edge, or the completion's witness) verifies.
+#[test]
+fn certified_linear_walks_verify() {
+    use polysect::intersect::verify_linked;
+    let mut rng = SmallRng::seed_from_u64(0x11ea);
+    let mut scene = scattered_scene(&mut rng, 24, 5);
+    let mut costs = scene.costs();
+    costs.convert_ns = costs.convert_ns.map(|_| 1e12);
+    costs.convert_ordered_ns = costs.convert_ordered_ns.map(|_| 1e12);
+    scene.set_costs(costs);
+    let ids: Vec<_> = scene.ids().collect();
+    let (mut separated, mut meeting) = (0, 0);
+    for step in 0..600 {
+        let (a, b) = (
+            ids[rng.random_range(0..ids.len())],
+            ids[rng.random_range(0..ids.len())],
+        );
+        let want = truth(&scene, a, b);
+        let walks_before = scene.stats().linear_tests;
+        let c = scene.intersects_certified(a, b).unwrap();
+        let (p, q) = (scene.polygon(a).unwrap(), scene.polygon(b).unwrap());
+        assert_eq!(verify_linked(p, q, &c), Ok(()), "step {step}: {c:?}");
+        assert_eq!(c.intersects(), want, "step {step}");
+        if scene.stats().linear_tests > walks_before {
+            if want { meeting += 1 } else { separated += 1 }
+        }
+    }
+    let s = scene.stats();
+    assert!(s.linear_tests > 0 && s.conversions == 0, "{s:?}");
+    assert!(separated > 0 && meeting > 0, "{separated} {meeting}");
+}
+
 #[test]
 fn certified_scene_queries_verify_on_every_route() {
     use polysect::intersect::verify_linked;

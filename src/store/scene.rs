@@ -856,9 +856,7 @@ impl<K: Kernel> Scene<K> {
     /// A pair with a stale or foreign handle gets that error in its place; the other
     /// pairs are answered.
     pub fn intersects_batch(&mut self, pairs: &[(PolygonId, PolygonId)]) -> Vec<Result<bool, SceneError>> {
-        let keys = pairs.iter().map(|&(a, b)| Ok((self.key(a)?, self.key(b)?)));
-        let keys: Vec<Result<(usize, usize), SceneError>> = keys.collect();
-        let plan = self.plan(keys.into_iter());
+        let plan = self.plan_pairs(pairs);
         self.run_plan(plan)
     }
 
@@ -869,10 +867,15 @@ impl<K: Kernel> Scene<K> {
         &mut self,
         pairs: &[(PolygonId, PolygonId)],
     ) -> Vec<Result<Certificate, SceneError>> {
+        let plan = self.plan_pairs(pairs);
+        self.run_plan_certified(plan)
+    }
+
+    /// Plans a batch given by handles; a stale or foreign handle plans as its error.
+    fn plan_pairs(&mut self, pairs: &[(PolygonId, PolygonId)]) -> Plan {
         let keys = pairs.iter().map(|&(a, b)| Ok((self.key(a)?, self.key(b)?)));
         let keys: Vec<Result<(usize, usize), SceneError>> = keys.collect();
-        let plan = self.plan(keys.into_iter());
-        self.run_plan_certified(plan)
+        self.plan(keys.into_iter())
     }
 
     fn run_plan(&mut self, plan: Plan) -> Vec<Result<bool, SceneError>> {
