@@ -261,7 +261,10 @@ fn polygons(svg: &str) -> Vec<Vec<(f64, f64)>> {
 }
 
 fn render(args: &[&str], input: &str) -> (i32, String, String) {
-    let out = temp(&format!("render-{}.svg", args.len()));
+    // Tests run in parallel: every call writes a file of its own.
+    static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let out = temp(&format!("render-{call}.svg"));
     let mut all = vec!["render", "--out", out.to_str().unwrap()];
     all.extend_from_slice(args);
     let (code, _, err) = run(&all, input.as_bytes());
