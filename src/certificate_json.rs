@@ -30,6 +30,9 @@ use serde::{Deserialize, Deserializer, Serialize, Serializer};
 /// );
 /// # Ok::<(), polysect::PolygonError>(())
 /// ```
+///
+/// # Panics
+/// Never: a certificate holds only points and tags, which always serialise.
 pub fn certificate_json(certificate: &Certificate) -> String {
     serde_json::to_string(certificate).expect("a certificate serialises")
 }

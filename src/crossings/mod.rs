@@ -72,8 +72,11 @@ pub enum Touching {
 }
 
 impl Touching {
+    /// Both modes, in the order the CLI lists them.
+    /// Both modes, in the order the CLI lists them.
     pub const ALL: [Touching; 2] = [Touching::Include, Touching::Exclude];
 
+    /// The name used by the CLI's `--touching`.
     pub fn name(self) -> &'static str {
         match self {
             Touching::Include => "include",
@@ -101,6 +104,7 @@ impl FromStr for Touching {
 /// What a crossings query reports; `CrossingOptions::default()` is every contact.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct CrossingOptions {
+    /// Whether contacts that touch without crossing are reported.
     pub touching: Touching,
 }
 
@@ -157,6 +161,7 @@ impl CrossingAlgorithm {
     /// Every algorithm, in the order tables list them.
     pub const ALL: &'static [CrossingAlgorithm] = &[CrossingAlgorithm::Sweep, CrossingAlgorithm::Brute];
 
+    /// The name used by the CLI's `--algorithm` and by benches.
     pub fn name(self) -> &'static str {
         match self {
             CrossingAlgorithm::Sweep => Sweep::NAME,

@@ -27,15 +27,22 @@ use std::str::FromStr;
 /// An adversarial family of simple-polygon pairs; see the [module docs](self).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum HardFamily {
+    /// Two zigzag chains crossing about n times (`zigzag`).
     Zigzag,
+    /// The same chains stacked apart: overlapping x-ranges, no contact (`stacked-zigzag`).
     StackedZigzag,
+    /// Two combs of long needles crossing at tiny angles (`needles`).
     Needles,
+    /// Two skylines sharing vertical lines (`vertical`).
     Vertical,
+    /// Two crenellated stars with radial edges on shared rays (`fan`).
     Fan,
+    /// Two square waves with collinear overlaps (`collinear`).
     Collinear,
 }
 
 impl HardFamily {
+    /// Every family, in the order tables list them.
     pub const ALL: &'static [HardFamily] = &[
         HardFamily::Zigzag,
         HardFamily::StackedZigzag,
@@ -45,6 +52,7 @@ impl HardFamily {
         HardFamily::Collinear,
     ];
 
+    /// The family's name in the CLI and the module docs' table.
     pub fn name(self) -> &'static str {
         match self {
             HardFamily::Zigzag => "zigzag",

@@ -48,18 +48,28 @@ fn check_size(n: usize) -> Result<(), GenerateError> {
 /// A generator family; see the module table.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Family {
+    /// Random angles on an axis-aligned ellipse, starting at the leftmost vertex (`ellipse`).
     Ellipse,
+    /// A randomly rotated ellipse with a random start index (`rotated`).
     Rotated,
+    /// Angles from a random piecewise-linear density (`non-uniform`).
     NonUniform,
+    /// Integer polygons sharing exactly one vertex (`shared-vertex`).
     SharedVertex,
+    /// A vertex of one on an edge of the other (`vertex-on-edge`).
     VertexOnEdge,
+    /// Two polygons sharing a whole edge (`shared-edge`).
     SharedEdge,
+    /// Collinear edges that overlap in part (`overlapping-edges`).
     OverlappingEdges,
+    /// One regular polygon strictly inside another (`nested`).
     Nested,
+    /// A vertex one ulp beyond the other polygon's extreme x (`one-ulp-gap`).
     OneUlpGap,
 }
 
 impl Family {
+    /// Every family, in the order of the module table.
     pub const ALL: &'static [Family] = &[
         Family::Ellipse,
         Family::Rotated,
@@ -81,6 +91,7 @@ impl Family {
         Family::OneUlpGap,
     ];
 
+    /// The family's name in the CLI (`--family`) and in the benches' CSVs.
     pub fn name(self) -> &'static str {
         match self {
             Family::Ellipse => "ellipse",
@@ -131,11 +142,13 @@ pub enum Relation {
 /// A probability density on [0, 1) for the angles of ellipse vertices.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Density {
+    /// Every angle equally likely.
     Uniform,
     /// Piecewise linear through `weights[i]` at i / (len − 1) (thesis 4.2.4). Only the
     /// weights' ratios matter. A weight that is negative, NaN or infinite counts as
     /// zero; with fewer than two weights, or none positive, the density is uniform.
     PiecewiseLinear {
+        /// The density's values at equally spaced knots on [0, 1].
         weights: Vec<f64>,
     },
 }

@@ -49,13 +49,26 @@ pub const MAX_ATTEMPTS: usize = 200;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum PointDistribution {
     /// x and y uniform in [min, max) (the crossings experiments: min = 0, max = Δ).
-    Uniform { min: f64, max: f64 },
+    Uniform {
+        /// Lower bound of each coordinate.
+        min: f64,
+        /// Upper bound of each coordinate (excluded).
+        max: f64,
+    },
     /// x and y normal with the given mean and standard deviation (the crossings experiments: μ = 0),
     /// by the Box–Muller transform.
-    Normal { mean: f64, sigma: f64 },
+    Normal {
+        /// Mean of each coordinate.
+        mean: f64,
+        /// Standard deviation of each coordinate.
+        sigma: f64,
+    },
     /// x and y uniform integers in [0, size): many equal x, collinear triples,
     /// shared vertices and overlapping edges between two polygons.
-    Grid { size: u32 },
+    Grid {
+        /// Number of integer values per coordinate.
+        size: u32,
+    },
 }
 
 /// The largest radius r = √(−2 ln u₁) of a Box–Muller sample: u₁ = 1 − U with U a
@@ -182,12 +195,14 @@ pub enum SimpleMethod {
 }
 
 impl SimpleMethod {
+    /// Every method, in the order the CLI lists them.
     pub const ALL: &'static [SimpleMethod] = &[
         SimpleMethod::SpacePartition,
         SimpleMethod::Star,
         SimpleMethod::Angular,
     ];
 
+    /// The method's name in the CLI (`gen --simple --method`).
     pub fn name(self) -> &'static str {
         match self {
             SimpleMethod::SpacePartition => "space-partition",
@@ -222,7 +237,10 @@ pub enum GenerateError {
     /// overflow, a grid with too few points, a radius that is zero or not finite).
     InvalidParameters(String),
     /// [`MAX_ATTEMPTS`] point sets in a row gave degenerate constructions.
-    GaveUp { attempts: usize },
+    GaveUp {
+        /// How many point sets (or draws) were tried.
+        attempts: usize,
+    },
 }
 
 impl fmt::Display for GenerateError {
@@ -242,6 +260,11 @@ impl fmt::Display for GenerateError {
 impl std::error::Error for GenerateError {}
 
 /// `n` distinct random points (exact duplicates are redrawn).
+///
+/// # Errors
+/// [`GenerateError::InvalidParameters`] when `dist` or `n` cannot give `n` distinct
+/// finite points; [`GenerateError::GaveUp`] when redrawing duplicates takes more than
+/// `100·n + 1000` draws.
 pub fn random_points<R: Rng + ?Sized>(
     dist: PointDistribution,
     n: usize,

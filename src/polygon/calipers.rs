@@ -179,9 +179,13 @@ impl Width {
 /// largest `v · (b − a)`), `far` a vertex farthest from the edge's line.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Rectangle {
+    /// The polygon edge the rectangle's side lies on.
     pub edge: (Point, Point),
+    /// A vertex with the smallest projection on the edge's direction.
     pub low: Point,
+    /// A vertex with the largest projection on the edge's direction.
     pub high: Point,
+    /// A vertex farthest from the edge's line.
     pub far: Point,
 }
 
@@ -347,6 +351,9 @@ pub fn farthest_pair_linked(polygon: &LinkedPolygon) -> (Point, Point) {
 /// assert_eq!(w.value(), 1.0);
 /// # Ok::<(), polysect::PolygonError>(())
 /// ```
+///
+/// # Panics
+/// Never: a [`ConvexPolygon`] has at least three edges.
 pub fn width(polygon: &ConvexPolygon) -> Width {
     walk(Exact, polygon.vertices(), Want::Width)
         .width
@@ -363,6 +370,9 @@ pub fn width(polygon: &ConvexPolygon) -> Width {
 /// assert_eq!(min_area_rectangle(&diamond).area(), 2.0);
 /// # Ok::<(), polysect::PolygonError>(())
 /// ```
+///
+/// # Panics
+/// Never: a [`ConvexPolygon`] has at least three edges.
 pub fn min_area_rectangle(polygon: &ConvexPolygon) -> Rectangle {
     walk(Exact, polygon.vertices(), Want::Rectangle)
         .rectangle
@@ -426,6 +436,9 @@ pub fn farthest_pair_naive(points: &[Point]) -> Option<(Point, Point)> {
 }
 
 /// The width by trying every edge against every vertex: the O(n²) reference.
+///
+/// # Panics
+/// Never: a [`ConvexPolygon`] has at least three edges.
 pub fn width_naive(polygon: &ConvexPolygon) -> Width {
     let v = polygon.vertices();
     let n = v.len();
@@ -453,6 +466,9 @@ pub fn width_naive(polygon: &ConvexPolygon) -> Width {
 
 /// The least-area rectangle by trying every edge against every vertex: the O(n²)
 /// reference.
+///
+/// # Panics
+/// Never: a [`ConvexPolygon`] has at least three edges.
 pub fn min_area_rectangle_naive(polygon: &ConvexPolygon) -> Rectangle {
     let v = polygon.vertices();
     let n = v.len();

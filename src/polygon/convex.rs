@@ -88,6 +88,9 @@ impl ConvexPolygon {
 
     /// The polygon with every vertex mapped by `f`, validated again (an affine map
     /// with a positive determinant keeps convexity but rounding may not).
+    ///
+    /// # Errors
+    /// The [`PolygonError`] of the mapped vertices, as [`ConvexPolygon::new`] gives it.
     pub fn map(&self, f: impl Fn(Point) -> Point) -> Result<ConvexPolygon, PolygonError> {
         ConvexPolygon::new(self.vertices.iter().map(|&p| f(p)))
     }
@@ -116,6 +119,9 @@ impl ConvexPolygon {
 
     /// Checks the invariant exactly: at least three finite vertices, every turn
     /// strictly counter-clockwise, winding once. O(n).
+    ///
+    /// # Errors
+    /// A description of the first violation found.
     pub fn debug_validate(&self) -> Result<(), String> {
         let v = &self.vertices;
         if v.len() < 3 {

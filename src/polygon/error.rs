@@ -6,24 +6,47 @@ use std::fmt;
 #[derive(Clone, Debug, PartialEq)]
 pub enum PolygonError {
     /// A coordinate is NaN or infinite.
-    NonFinite { index: usize, point: Point },
+    NonFinite {
+        /// Position of the vertex in the input list.
+        index: usize,
+        /// The vertex as given.
+        point: Point,
+    },
     /// Fewer than three distinct vertices after removing repeats.
-    TooFewVertices { distinct: usize },
+    TooFewVertices {
+        /// How many distinct vertices the list has.
+        distinct: usize,
+    },
     /// All vertices lie on one line: the region has no area.
     AllCollinear,
     /// The boundary runs along a line and comes back on itself at this vertex
     /// (a zero-width spike).
-    DoublesBack { index: usize },
+    DoublesBack {
+        /// Position of the vertex in the input list.
+        index: usize,
+    },
     /// The boundary turns the other way at this vertex than at the others.
-    Reflex { index: usize },
+    Reflex {
+        /// Position of the vertex in the input list.
+        index: usize,
+    },
     /// The vertices are in convex position but not listed in boundary order, so
     /// the boundary crosses itself (a bowtie); the turn at this vertex is wrong.
-    OutOfOrder { index: usize },
+    OutOfOrder {
+        /// Position of the vertex in the input list.
+        index: usize,
+    },
     /// Every turn goes the same way but the boundary winds around more than once
     /// (a star polygon such as the pentagram).
-    WindsMoreThanOnce { times: usize },
+    WindsMoreThanOnce {
+        /// How many times the boundary winds around its interior.
+        times: usize,
+    },
     /// A polygon with interior rings (holes) given where a convex polygon is expected.
-    HasHoles { count: usize },
+    HasHoles {
+        /// Number of interior rings.
+        count: usize,
+    },
 }
 
 impl fmt::Display for PolygonError {
@@ -75,15 +98,24 @@ pub enum EditError {
     /// The handle belongs to another polygon (or to another copy of this one).
     ForeignHandle,
     /// The new point is NaN or infinite.
-    NonFinite { point: Point },
+    NonFinite {
+        /// The point as given.
+        point: Point,
+    },
     /// The polygon would stop being strictly convex: the new point is not in the
     /// region outside the edge and inside the lines through the neighbouring edges.
-    WouldBreakConvexity { point: Point },
+    WouldBreakConvexity {
+        /// The point that was refused.
+        point: Point,
+    },
     /// A removal would leave fewer than three vertices.
     TooFewVertices,
     /// A translation would round the vertices (this one first, in counter-clockwise
     /// order) so that the polygon is no longer strictly convex.
-    RoundingBreaksConvexity { point: Point },
+    RoundingBreaksConvexity {
+        /// The first vertex (counter-clockwise) whose rounded position breaks convexity.
+        point: Point,
+    },
 }
 
 /// Points print in their shortest round-trip form, with an exponent for huge and tiny

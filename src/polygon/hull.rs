@@ -28,6 +28,7 @@ pub enum HullAlgorithm {
 }
 
 impl HullAlgorithm {
+    /// Both algorithms, in the order the CLI lists them.
     pub const ALL: [HullAlgorithm; 2] = [HullAlgorithm::Graham, HullAlgorithm::Monotone];
 
     /// The name the CLI's `--algorithm` takes: `graham` or `monotone`.

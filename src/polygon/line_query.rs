@@ -66,7 +66,9 @@ pub enum ChordEnd {
 /// from `from` to `to` along `a → b` (equal ends: a single point).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Chord {
+    /// Where the chord starts along `a → b`.
     pub from: ChordEnd,
+    /// Where the chord ends along `a → b`.
     pub to: ChordEnd,
 }
 

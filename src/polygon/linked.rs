@@ -133,6 +133,7 @@ pub struct SampleWorkspace {
 }
 
 impl SampleWorkspace {
+    /// An empty workspace; it grows to the largest polygon sampled with it.
     pub fn new() -> Self {
         Self::default()
     }
@@ -161,6 +162,9 @@ impl SampleWorkspace {
 impl LinkedPolygon {
     /// Validates and cleans `points` exactly as [`ConvexPolygon::new`] does, and links
     /// them in boundary order.
+    ///
+    /// # Errors
+    /// The [`PolygonError`] that [`ConvexPolygon::new`] gives for the same points.
     pub fn from_points<I, P>(points: I) -> Result<Self, PolygonError>
     where
         I: IntoIterator<Item = P>,
@@ -264,16 +268,28 @@ impl LinkedPolygon {
     }
 
     /// The vertex's coordinates.
+    ///
+    /// # Errors
+    /// [`EditError::StaleHandle`] or [`EditError::ForeignHandle`] when `id` is not a
+    /// live vertex of this polygon.
     pub fn point(&self, id: VertexId) -> Result<Point, EditError> {
         self.pos(id).map(|p| self.nodes[p].point)
     }
 
     /// The counter-clockwise successor.
+    ///
+    /// # Errors
+    /// [`EditError::StaleHandle`] or [`EditError::ForeignHandle`] when `id` is not a
+    /// live vertex of this polygon.
     pub fn next(&self, id: VertexId) -> Result<VertexId, EditError> {
         self.pos(id).map(|p| self.id_at(self.next_at(p)))
     }
 
     /// The counter-clockwise predecessor.
+    ///
+    /// # Errors
+    /// [`EditError::StaleHandle`] or [`EditError::ForeignHandle`] when `id` is not a
+    /// live vertex of this polygon.
     pub fn prev(&self, id: VertexId) -> Result<VertexId, EditError> {
         self.pos(id).map(|p| self.id_at(self.prev_at(p)))
     }
@@ -303,6 +319,9 @@ impl LinkedPolygon {
     }
 
     /// The vertices counter-clockwise, starting at [`first`](Self::first).
+    ///
+    /// # Panics
+    /// Never: [`first`](Self::first) is always a live vertex.
     pub fn iter(&self) -> impl Iterator<Item = (VertexId, Point)> + '_ {
         self.iter_from(self.first()).expect("the first vertex is live")
     }
@@ -638,6 +657,10 @@ impl LinkedPolygon {
     }
 
     /// The current position of a vertex (valid until the next edit).
+    ///
+    /// # Errors
+    /// [`EditError::StaleHandle`] or [`EditError::ForeignHandle`] when `id` is not a
+    /// live vertex of this polygon.
     pub fn position(&self, id: VertexId) -> Result<usize, EditError> {
         self.pos(id)
     }
@@ -645,6 +668,9 @@ impl LinkedPolygon {
     /// Checks every invariant: links are mutual inverses forming one cycle through all
     /// nodes, slots and nodes point at each other, the arena holds only live vertices,
     /// and the boundary is strictly convex, counter-clockwise, winding once. O(n).
+    ///
+    /// # Errors
+    /// A description of the first violated invariant.
     pub fn debug_validate(&self) -> Result<(), String> {
         let n = self.nodes.len();
         if n < 3 {

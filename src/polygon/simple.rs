@@ -13,14 +13,25 @@ use std::fmt;
 #[derive(Clone, Debug, PartialEq)]
 pub enum SimplePolygonError {
     /// A coordinate is NaN or infinite.
-    NonFinite { index: usize, point: Point },
+    NonFinite {
+        /// Position of the vertex in the input list.
+        index: usize,
+        /// The vertex as given.
+        point: Point,
+    },
     /// Fewer than three vertices after removing consecutive repeats.
-    TooFewVertices { distinct: usize },
+    TooFewVertices {
+        /// How many vertices are left.
+        distinct: usize,
+    },
     /// All vertices lie on one line: the polygon has zero area.
     ZeroArea,
     /// The boundary runs along a line and comes back on itself at this vertex
     /// (a zero-width spike).
-    DoublesBack { index: usize },
+    DoublesBack {
+        /// Position of the vertex in the input list.
+        index: usize,
+    },
     /// Two non-adjacent edges meet: the boundary intersects itself.
     SelfIntersection {
         /// The first edge, as (start, end) input vertex indices.
@@ -212,6 +223,9 @@ impl SimplePolygon {
 
     /// True when the boundary runs counter-clockwise. Exact: for a simple polygon
     /// the turn at the lexicographically smallest vertex has the orientation's sign.
+    ///
+    /// # Panics
+    /// Never: a [`SimplePolygon`] has at least three vertices.
     pub fn is_ccw(&self) -> bool {
         let v = &self.vertices;
         let n = v.len();
@@ -231,12 +245,18 @@ impl SimplePolygon {
     }
 
     /// The polygon with every vertex mapped by `f`, validated again.
+    ///
+    /// # Errors
+    /// The [`SimplePolygonError`] of the mapped vertices.
     pub fn map(&self, f: impl Fn(Point) -> Point) -> Result<SimplePolygon, SimplePolygonError> {
         SimplePolygon::new(self.vertices.iter().map(|&p| f(p)))
     }
 
     /// Checks the invariant exactly (finite, at least 3 vertices, no straight or
     /// repeated vertex, no self-intersection) by validating a copy.
+    ///
+    /// # Errors
+    /// A description of the first violation found.
     pub fn debug_validate(&self) -> Result<(), String> {
         match SimplePolygon::new(self.vertices.iter().copied()) {
             Ok(p) if p.vertices == self.vertices => Ok(()),

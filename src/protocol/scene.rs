@@ -207,6 +207,10 @@ impl<K: Kernel> SceneSession<K> {
 
     /// Answers one line (a newline in it ends it) and returns the reply without its
     /// newline.
+    ///
+    /// # Panics
+    /// Never: the session reads a slice and writes a `Vec` (neither can fail), and
+    /// every reply it writes is UTF-8.
     pub fn answer_line(&mut self, line: &[u8]) -> String {
         let line = line.split(|&b| b == b'\n').next().unwrap_or_default();
         let input: &[u8] = if line.is_empty() { b"\n" } else { line };
@@ -252,6 +256,9 @@ impl<K: Kernel> SceneSession<K> {
     /// Checks the scene's invariants and that the names and ids match it exactly: every
     /// name has a live polygon, every live vertex exactly one id, every id is below the
     /// polygon's next id.
+    ///
+    /// # Errors
+    /// A description of the first mismatch found.
     pub fn debug_validate(&self) -> Result<(), String> {
         self.scene.debug_validate()?;
         if self.polygons.len() != self.scene.len() || self.names.len() != self.scene.len() {
