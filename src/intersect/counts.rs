@@ -36,8 +36,9 @@ pub struct Counts {
     /// Pruning iterations (for CLM: units of work, LP points examined plus chain
     /// vertices walked, the sum the [`Iterations`](super::Iterations) probe gets).
     pub iterations: u64,
-    /// CLM's sample sizes from P and Q (0 for the other algorithms).
+    /// CLM's sample size from P (0 for the other algorithms).
     pub samples_p: usize,
+    /// CLM's sample size from Q.
     pub samples_q: usize,
     /// CLM's LP calls, in the order they ran.
     pub lps: Vec<LpCall>,
@@ -112,16 +113,23 @@ impl Probe for Counts {
 pub struct CountsSummary {
     /// Queries summarised.
     pub queries: usize,
+    /// Mean of [`Counts::iterations`].
     pub iterations_mean: f64,
+    /// Mean number of samples (P and Q together).
     pub samples_mean: f64,
+    /// Mean number of LP calls.
     pub lp_calls_mean: f64,
     /// Share of queries that ended after one LP call.
     pub one_lp_share: f64,
+    /// Constraints (points given to the LP) per LP call.
     pub constraints_per_lp: f64,
     /// Points examined per LP call.
     pub work_per_lp: f64,
+    /// Mean number of chain walks.
     pub walks_mean: f64,
+    /// Chain vertices per walk.
     pub steps_per_walk: f64,
+    /// The longest walk over all queries.
     pub longest_walk: usize,
 }
 

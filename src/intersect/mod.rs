@@ -65,6 +65,7 @@ use std::str::FromStr;
 /// Receives one call per pruning iteration of an algorithm, for experiments
 /// (the thesis's iteration counts). The unit type `()` ignores them and compiles away.
 pub trait Probe {
+    /// One pruning iteration (for CLM: one unit of work, see its module docs).
     #[inline]
     fn iteration(&mut self) {}
 
@@ -191,11 +192,17 @@ pub trait ArrayIntersection {
 /// iterate over.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Algorithm {
+    /// [`Linear`]: the O(n + m) reference.
     Linear,
+    /// [`Barba`]: Barba–Langerman's O(log n + log m) pruning.
     Barba,
+    /// [`Dobkin`]: Dobkin–Souvaine's O(log n + log m) chain test.
     Dobkin,
+    /// [`ChazelleDobkin`]: Chazelle–Dobkin's O(log n + log m) pencil test.
     ChazelleDobkin,
+    /// [`Clm`]: the O(√n) sampled test on linked polygons.
     Clm,
+    /// [`Convert`]: link to array in O(n), then an O(log n) test.
     Convert,
 }
 
@@ -227,6 +234,7 @@ impl Algorithm {
     pub const LOGARITHMIC: &'static [Algorithm] =
         &[Algorithm::Barba, Algorithm::Dobkin, Algorithm::ChazelleDobkin];
 
+    /// The name used by the CLI's `--algorithm`, the benches and the CSVs.
     pub fn name(self) -> &'static str {
         match self {
             Algorithm::Linear => Linear::NAME,
