@@ -174,7 +174,7 @@ fn parse_expected<R: Read, W: Write>(ch: &mut Channel<R, W>) -> Result<(PairLine
 
 /// Runs `check --certificate`: as [`check`], each answer with the certificate that
 /// `answer` gives for the two polygons as cleaned, `{"intersects": BOOL, "certificate":
-/// {...}}` ([`certified_answer_json`](super::certified_answer_json)).
+/// {...}}` ([`super::certified_answer_json`]).
 ///
 /// # Errors
 /// Only I/O errors; bad lines get error lines.
