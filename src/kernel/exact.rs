@@ -72,6 +72,12 @@ pub struct Exact;
 
 impl Kernel for Exact {
     const NAME: &'static str = "exact";
+    type Within = ExactWithin;
+
+    #[inline]
+    fn within(self, boxes: [(Point, Point); 2]) -> ExactWithin {
+        ExactWithin::new(boxes)
+    }
 
     /// The static filter, written so that the answer is the sign of the computed
     /// determinant (as under [`Fast`](super::Fast)) and the certificate a separate
@@ -131,6 +137,205 @@ impl Kernel for Exact {
             None => cross_products_slow(factors),
         }
     }
+}
+
+/// The exact kernel for one query whose points lie in known boxes ([`Kernel::within`]):
+/// [`Exact`] behind a *semi-static* filter.
+///
+/// Let `w` be the larger side of the union of the boxes, computed in `f64`, and
+/// `P = w·w`. Every coordinate difference the predicates compute is at most `w` in
+/// magnitude (rounding is monotonic), so every product of two differences is at most
+/// `P`. The filter's two bounds, computed once:
+///
+/// * two products (`orient`, `cross`, `dot`): Shewchuk's error bound ε₀·(|l| + |r|)
+///   with |l| + |r| ≤ 2P, so `B₂ = 2ε₀(1 + 2^-30)·P + 2·f64::MIN_POSITIVE` (the
+///   margin covers the bound's own roundings, the last term underflowing products, as
+///   in the static filter). Valid for `P ≤ 2^1020`: then |l ∓ r| ≤ 2^1021 cannot
+///   overflow.
+/// * degree 4 ([`Kernel::cross_products_sign`]): the static filter's analysis with
+///   each factor's magnitude Pᵢ ≤ 2P(1 + 3u) bounds the error by 81.7u·P², to which
+///   underflow adds at most 2^-1070·P + 2^-1073; `B₄ = 96u·P²` covers both when
+///   `P ∈ [2^-400, 2^250]` (then nothing overflows either).
+///
+/// A predicate whose computed value `v` satisfies `v > B` or `v < −B` is decided by
+/// that sign: the same two comparisons the [`Fast`](super::Fast) kernel makes against
+/// zero. Anything else (a value within the bound, NaN, a bound out of its range,
+/// which is `+∞`) goes to [`Exact`]'s own layers, out of line. The default value has
+/// infinite bounds: every call goes to [`Exact`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ExactWithin {
+    /// `B₂`, or `+∞` when not valid.
+    two: f64,
+    /// `B₄`, or `+∞` when not valid.
+    four: f64,
+}
+
+impl Default for ExactWithin {
+    fn default() -> Self {
+        ExactWithin {
+            two: f64::INFINITY,
+            four: f64::INFINITY,
+        }
+    }
+}
+
+impl ExactWithin {
+    /// The kernel for queries on points inside the union of `boxes` (each `(min, max)`).
+    /// Boxes with non-finite corners give infinite bounds (every call goes to [`Exact`]).
+    ///
+    /// ```
+    /// use polysect::{ExactWithin, Kernel, Orientation, Point};
+    /// let b = (Point::new(0.0, 0.0), Point::new(1.0, 1.0));
+    /// let k = ExactWithin::new([b, b]);
+    /// let (o, x, y) = (Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(0.0, 1.0));
+    /// assert_eq!(k.orient(o, x, y), Orientation::Ccw);
+    /// assert_eq!(k.orient(o, x, Point::new(0.5, 0.0)), Orientation::Collinear);
+    /// ```
+    #[inline]
+    pub fn new([(lo0, hi0), (lo1, hi1)]: [(Point, Point); 2]) -> ExactWithin {
+        const TWO_MAX: f64 = f64::from_bits((1023 + 1020) << 52); // 2^1020
+        const FOUR_MIN: f64 = f64::from_bits((1023 - 400) << 52); // 2^-400
+        const FOUR_MAX: f64 = f64::from_bits((1023 + 250) << 52); // 2^250
+        const C2: f64 = 2.0 * ORIENT_ERR * (1.0 + 1.0 / (1u64 << 30) as f64);
+        const C4: f64 = 96.0 * (f64::EPSILON / 2.0);
+        // Both sides from both boxes; a NaN or infinite corner makes a side NaN or
+        // infinite (a corner is never dropped: no `min`/`max` that ignores NaN), and
+        // then `p` fails both range tests.
+        let side = |lo0: f64, hi0: f64, lo1: f64, hi1: f64| {
+            let (a, b) = (hi0 - lo1, hi1 - lo0);
+            let (c, d) = (hi0 - lo0, hi1 - lo1);
+            let ab = if a > b || a.is_nan() { a } else { b };
+            let cd = if c > d || c.is_nan() { c } else { d };
+            if ab > cd || ab.is_nan() { ab } else { cd }
+        };
+        let (wx, wy) = (side(lo0.x, hi0.x, lo1.x, hi1.x), side(lo0.y, hi0.y, lo1.y, hi1.y));
+        let w = if wx > wy || wx.is_nan() { wx } else { wy };
+        let p = w * w;
+        // `p <= MAX` is false for NaN and infinity.
+        let two = if p <= TWO_MAX {
+            C2 * p + 2.0 * f64::MIN_POSITIVE
+        } else {
+            f64::INFINITY
+        };
+        let four = if (FOUR_MIN..=FOUR_MAX).contains(&p) {
+            C4 * p * p
+        } else {
+            f64::INFINITY
+        };
+        ExactWithin { two, four }
+    }
+
+    /// The two-product bound `B₂` (`+∞` when not valid).
+    pub fn two_products_bound(&self) -> f64 {
+        self.two
+    }
+
+    /// The degree-4 bound `B₄` (`+∞` when not valid).
+    pub fn degree_four_bound(&self) -> f64 {
+        self.four
+    }
+}
+
+impl Kernel for ExactWithin {
+    const NAME: &'static str = "exact";
+    type Within = ExactWithin;
+
+    #[inline]
+    fn within(self, boxes: [(Point, Point); 2]) -> ExactWithin {
+        ExactWithin::new(boxes)
+    }
+
+    #[inline]
+    fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
+        let (left, right) = orient_products(a, b, c);
+        let det = left - right;
+        if det > self.two {
+            Orientation::Ccw
+        } else if det < -self.two {
+            Orientation::Cw
+        } else {
+            orient_within_slow(a, b, c)
+        }
+    }
+
+    #[inline]
+    fn sign<P: Polynomial>(self, poly: &P) -> Sign {
+        Exact.sign(poly)
+    }
+
+    #[inline]
+    fn cross(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
+        let (left, right) = cross_products(a, b, c, d);
+        let det = left - right;
+        if det > self.two {
+            Orientation::Ccw
+        } else if det < -self.two {
+            Orientation::Cw
+        } else {
+            cross_within_slow(a, b, c, d)
+        }
+    }
+
+    #[inline]
+    fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
+        let (left, right) = dot_products(a, b, c, d);
+        let det = left + right;
+        if det > self.two {
+            Sign::Positive
+        } else if det < -self.two {
+            Sign::Negative
+        } else {
+            dot_within_slow(a, b, c, d)
+        }
+    }
+
+    #[inline]
+    fn cross_products_sign(self, factors: [[Point; 4]; 4]) -> Sign {
+        let cross = |[ux, uy, vx, vy]: [f64; 4]| ux * vy - uy * vx;
+        let [d0, d1, d2, d3] = factors.map(factor_differences);
+        let s = cross(d0) * cross(d1) + cross(d2) * cross(d3);
+        if s > self.four {
+            Sign::Positive
+        } else if s < -self.four {
+            Sign::Negative
+        } else {
+            cross_products_within_slow(factors)
+        }
+    }
+}
+
+/// [`ExactWithin`]'s undecided calls: a repeated point answers zero at once (the
+/// algorithms ask such questions once or twice per query, and [`Exact`] would find
+/// the zero only after its filters); everything else goes to [`Exact`]'s static
+/// filter and what follows it.
+#[cold]
+#[inline(never)]
+fn orient_within_slow(a: Point, b: Point, c: Point) -> Orientation {
+    if a == b || a == c || b == c {
+        return Orientation::Collinear;
+    }
+    Exact.orient(a, b, c)
+}
+
+#[cold]
+#[inline(never)]
+fn cross_within_slow(a: Point, b: Point, c: Point, d: Point) -> Orientation {
+    if a == b || c == d {
+        return Orientation::Collinear;
+    }
+    Exact.cross(a, b, c, d)
+}
+
+#[cold]
+#[inline(never)]
+fn dot_within_slow(a: Point, b: Point, c: Point, d: Point) -> Sign {
+    Exact.dot(a, b, c, d)
+}
+
+#[cold]
+#[inline(never)]
+fn cross_products_within_slow(factors: [[Point; 4]; 4]) -> Sign {
+    Exact.cross_products_sign(factors)
 }
 
 /// The static filter for `det = l − r` or `det = l + r`, `l` and `r` each a product of

@@ -26,7 +26,7 @@ pub mod exact;
 mod point_serde;
 mod segment;
 
-pub use exact::Exact;
+pub use exact::{Exact, ExactWithin};
 pub use segment::{SegmentContact, point_on_segment, segment_contact, segments_intersect};
 
 use std::cmp::Ordering;
@@ -199,6 +199,29 @@ pub trait Kernel: Copy + Clone + Default + fmt::Debug + Send + Sync + 'static {
     /// A short name (`"fast"` or `"exact"`).
     const NAME: &'static str;
 
+    /// The kernel [`within`](Kernel::within) returns.
+    type Within: Kernel;
+
+    /// The same predicates for one query whose predicates only ever see points inside
+    /// the union of the bounding boxes `boxes` (each `(min, max)`): the exact kernel
+    /// turns the boxes into a *semi-static* filter, one error bound per query for
+    /// every call, so that a certified sign costs one comparison more than the
+    /// [`Fast`] kernel's, and nothing when the answer is certain. Fast returns itself.
+    ///
+    /// A predicate asked of the returned kernel on a point outside the boxes may
+    /// answer wrongly: callers pass the boxes of every polygon whose vertices the
+    /// query reads, and ask only about those vertices.
+    ///
+    /// ```
+    /// use polysect::{ConvexPolygon, Exact, Kernel, Orientation, Point};
+    /// let p = ConvexPolygon::new([[0.0, 0.0], [4.0, 0.0], [0.0, 3.0]])?;
+    /// let k = Exact.within([p.bounding_box(), p.bounding_box()]);
+    /// let v = p.vertices();
+    /// assert_eq!(k.orient(v[0], v[1], v[2]), Orientation::Ccw);
+    /// # Ok::<(), polysect::PolygonError>(())
+    /// ```
+    fn within(self, boxes: [(Point, Point); 2]) -> Self::Within;
+
     /// Orientation of the triple (a, b, c): the sign of (b − a) × (c − a).
     fn orient(self, a: Point, b: Point, c: Point) -> Orientation;
 
@@ -281,7 +304,7 @@ impl Polynomial for DotPoly {
 /// multiplied by the sign of `D` (X = a + (N/D)(b−a)), asked of
 /// [`Kernel::cross_products_sign`]. Exact under [`Exact`].
 /// The lines must not be parallel (`D ≠ 0`); for parallel lines the answer is `Collinear`.
-#[inline]
+#[inline(always)]
 pub fn line_meet_side<K: Kernel>(
     k: K,
     (a, b): (Point, Point),
@@ -309,6 +332,12 @@ pub struct Fast;
 
 impl Kernel for Fast {
     const NAME: &'static str = "fast";
+    type Within = Fast;
+
+    #[inline]
+    fn within(self, _boxes: [(Point, Point); 2]) -> Fast {
+        self
+    }
 
     #[inline]
     fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
