@@ -701,10 +701,58 @@ pub fn area_sign_of(n: usize, at: impl Fn(usize) -> Point) -> Sign {
         .expect("dyadic arithmetic is exact")
 }
 
+/// The first out-of-line step of the two-product predicates (`l ∓ r` with
+/// `l = d[0]·d[3]`, `r = d[1]·d[2]` for `orient` and `cross`; `l = d[0]·d[2]`,
+/// `r = d[1]·d[3]` with a sum for `dot`): calls whose products overflowed or all
+/// underflowed (uniformly huge or tiny inputs, 2^±600) are filtered again on their
+/// differences times a *fixed* power of two, 2^-600 or 2^600, chosen by the case:
+/// a few instructions where [`scaled_differences`] finds the exact exponent.
+///
+/// Overflow (`|l|` or `|r|` not below 2^1000, or NaN): every difference is below
+/// 2^1024, so the scaled ones are below 2^424 and no product overflows. Scaling down
+/// is exact except for scaled differences below the normal range, rounded with an
+/// absolute error of at most 2^-1075; each, times a scaled difference below 2^424,
+/// moves a product by at most 2^-651, so the bound adds 2^-640 (a larger bound stays
+/// valid). Underflow (`|l|` and `|r|` below 2^-900): scaling up by 2^600 is exact
+/// (subnormal differences become normal), and a scaled difference that overflows
+/// makes a product non-finite, which [`certain`] refuses. `None` when neither case
+/// applies or the filter still cannot decide.
+#[inline(always)]
+fn fixed_rescale_sign(d: [f64; 4], dot: bool) -> Option<Sign> {
+    const HUGE: f64 = f64::from_bits((1023 + 1000) << 52); // 2^1000
+    const TINY: f64 = f64::from_bits((1023 - 900) << 52); // 2^-900
+    const DOWN: f64 = f64::from_bits((1023 - 600) << 52); // 2^-600
+    const UP: f64 = f64::from_bits((1023 + 600) << 52); // 2^600
+    const LOST: f64 = f64::from_bits((1023 - 640) << 52); // 2^-640
+    let products = |d: [f64; 4]| {
+        if dot {
+            (d[0] * d[2], d[1] * d[3])
+        } else {
+            (d[0] * d[3], d[1] * d[2])
+        }
+    };
+    let (l, r) = products(d);
+    let (scale, extra) = if !(l.abs() < HUGE && r.abs() < HUGE) {
+        (DOWN, LOST)
+    } else if l.abs() < TINY && r.abs() < TINY {
+        (UP, 0.0)
+    } else {
+        return None;
+    };
+    let (l, r) = products(d.map(|v| v * scale));
+    let det = if dot { l + r } else { l - r };
+    let m = det.abs();
+    (m > two_products_bound(l, m) + extra).then(|| nonzero_sign(det))
+}
+
 #[cold]
 #[inline(never)]
 fn orient_slow(a: Point, b: Point, c: Point) -> Sign {
-    if let Some([dx1, dy1, dx2, dy2]) = scaled_differences([a.x - c.x, a.y - c.y, b.x - c.x, b.y - c.y]) {
+    let d = [a.x - c.x, a.y - c.y, b.x - c.x, b.y - c.y];
+    if let Some(s) = fixed_rescale_sign(d, false) {
+        return s;
+    }
+    if let Some([dx1, dy1, dx2, dy2]) = scaled_differences(d) {
         let (l, r) = (dx1 * dy2, dy1 * dx2);
         if certain(l - r, l) {
             return nonzero_sign(l - r);
@@ -763,7 +811,11 @@ fn exact_directions(r: &Rescaled<4>) -> Option<(Point, Point)> {
 #[cold]
 #[inline(never)]
 fn cross_slow(a: Point, b: Point, c: Point, d: Point) -> Sign {
-    if let Some([ux, uy, vx, vy]) = scaled_differences([b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y]) {
+    let diffs = [b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y];
+    if let Some(s) = fixed_rescale_sign(diffs, false) {
+        return s;
+    }
+    if let Some([ux, uy, vx, vy]) = scaled_differences(diffs) {
         let (l, r) = (ux * vy, uy * vx);
         if certain(l - r, l) {
             return nonzero_sign(l - r);
@@ -788,7 +840,11 @@ fn cross_slow(a: Point, b: Point, c: Point, d: Point) -> Sign {
 #[cold]
 #[inline(never)]
 fn dot_slow(a: Point, b: Point, c: Point, d: Point) -> Sign {
-    if let Some([ux, uy, vx, vy]) = scaled_differences([b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y]) {
+    let diffs = [b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y];
+    if let Some(s) = fixed_rescale_sign(diffs, true) {
+        return s;
+    }
+    if let Some([ux, uy, vx, vy]) = scaled_differences(diffs) {
         let (l, r) = (ux * vx, uy * vy);
         if certain(l + r, l) {
             return nonzero_sign(l + r);

@@ -770,3 +770,66 @@ fn semi_static_bounds_and_their_ranges() {
     assert_eq!(k.two, f64::INFINITY);
     assert_eq!(k.orient(h, t, p(0.0, 0.0)), Exact.orient(h, t, p(0.0, 0.0)));
 }
+
+/// The fixed rescaling of the out-of-line two-product path: nearly collinear,
+/// nearly parallel and nearly perpendicular calls (up to 60 ulps off) and random ones
+/// at scales whose products overflow (2^520 … 2^1020) or underflow (2^-520 … 2^-1074,
+/// subnormal), with one difference far smaller than the others in some calls (it
+/// underflows when scaled down). Whenever it decides, it is right, and it decides
+/// most random calls at these scales.
+#[test]
+fn fixed_rescale_is_exact_where_it_decides() {
+    let mut rng = SmallRng::seed_from_u64(0xf1_ed);
+    let mut decided = 0;
+    let scales = [520, 600, 900, 1000, 1020, -520, -600, -900, -1000, -1074];
+    for i in 0..20_000 {
+        let e = scales[i % scales.len()];
+        let (s1, s2) = (2f64.powi(e / 2), 2f64.powi(e - e / 2));
+        let k = rng.random_range(-60..=60);
+        let t: f64 = rng.random_range(-2.0..2.0);
+        let mut r = || Point::new(rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0));
+        let (a, b) = (r(), r());
+        let c = match i % 4 {
+            0 => Point::new(a.x + t * (b.x - a.x), ulps(a.y + t * (b.y - a.y), k)),
+            1 => Point::new(a.x + 1e-200, a.y),
+            _ => r(),
+        };
+        let d = if i % 3 == 0 {
+            Point::new(c.x - (b.y - a.y), ulps(c.y + (b.x - a.x), k))
+        } else {
+            Point::new(c.x + (b.x - a.x), ulps(c.y + (b.y - a.y), k))
+        };
+        let sc = |p: Point| Point::new(p.x * s1 * s2, p.y * s1 * s2);
+        let [a, b, c, d] = [a, b, c, d].map(sc);
+        if ![a, b, c, d].iter().all(|p| p.is_finite()) {
+            continue;
+        }
+        let cases = [
+            (
+                [a.x - c.x, a.y - c.y, b.x - c.x, b.y - c.y],
+                false,
+                sign_slow(&OrientPoly(a, b, c)),
+            ),
+            (
+                [b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y],
+                false,
+                sign_slow(&CrossPoly(a, b, c, d)),
+            ),
+            (
+                [b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y],
+                true,
+                sign_slow(&DotPoly(a, b, c, d)),
+            ),
+        ];
+        for (diffs, dot, want) in cases {
+            if let Some(s) = fixed_rescale_sign(diffs, dot) {
+                decided += 1;
+                assert_eq!(s, want, "{a:?} {b:?} {c:?} {d:?} dot: {dot}");
+            }
+        }
+        assert_eq!(Exact.orient(a, b, c), Orientation::from(cases[0].2));
+        assert_eq!(Exact.cross(a, b, c, d), Orientation::from(cases[1].2));
+        assert_eq!(Exact.dot(a, b, c, d), cases[2].2);
+    }
+    assert!(decided > 20_000, "decided {decided}");
+}
