@@ -1,6 +1,12 @@
 //! The exact kernel: correct signs for every finite `f64` input.
 //!
 //! # Layers
+//! 0. **Semi-static filter** ([`ExactWithin`], inline), for a query that names the
+//!    bounding boxes of its points ([`Kernel::within`]; the array algorithms do):
+//!    one error bound per query from the boxes' size, so a call is certified by
+//!    comparing its computed value with ±bound, the comparisons the fast kernel makes
+//!    against zero. Calls it cannot decide (nearly degenerate relative to the boxes:
+//!    short edges of large polygons, coincident points) go on to layer 1.
 //! 1. **Static filter** (inline). The predicate is evaluated in `f64` together with a
 //!    bound on its rounding error; when the result is farther from zero than the
 //!    bound, its sign is the exact sign. `orient`, `cross` and `dot` (two products
@@ -15,6 +21,10 @@
 //!    same way: the algorithms' unpredictable branches wait no longer than under
 //!    `Fast`.
 //! 2. **Out of line** (`#[cold]`), when the filter cannot decide:
+//!    * *Fixed rescaling.* Two-product calls whose products overflowed, or all
+//!      underflowed, are filtered again on their differences times 2^-600 or 2^600
+//!      (`fixed_rescale_sign`): uniformly huge or tiny input (2^±600, near
+//!      `f64::MAX`) is decided here in a few instructions.
 //!    * *Scaled differences.* Every predicate here is a homogeneous polynomial in
 //!      differences of inputs. The differences the filter computed are multiplied by
 //!      the power of two that puts the largest in [1, 2) and the filter runs again
@@ -46,14 +56,15 @@
 //!    refused and none is misjudged; the cost is paid only by near-degenerate calls.
 //!
 //! # Cost
-//! Measured in docs/results.md: on random input the exact kernel costs 1.3–1.5× the
-//! fast one's instructions in the O(log n) algorithms (whose work is almost all
-//! predicates; 1.2–1.8× their time) and about 1.0–1.1× in CLM. Validation plus the
-//! crossings sweep at 2^±600 or near `f64::MAX` measured 1.5–2.4× the same input at
-//! scale 1 in a heavily loaded run whose control (no slow path) came out 1.7×;
-//! subnormal input 2.4× (the filter's own products of subnormal differences take the
-//! microcode path). Predicates that mix magnitudes more than 2^1022 apart within one
-//! call fall to big integers when nearly degenerate.
+//! Measured in docs/results.md ("The exact kernel's overhead", "At extreme scales"),
+//! in instructions (callgrind) and time: with the semi-static filter the O(log n)
+//! algorithms spend 1.10–1.26× the fast kernel's instructions at n = 2^10 and 2^14
+//! (Chazelle–Dobkin 1.21×) and 1.18–1.43× at 2^18, where more calls are nearly
+//! degenerate relative to the polygons' size and go on to the static filter (before:
+//! 1.3–1.6×). Validation plus the crossings sweep at 2^±600 and 2^1016 cost 1.38–1.46×
+//! the instructions of the same input at scale 1 (before the fixed rescaling: 1.65×).
+//! Predicates that mix magnitudes more than 2^1022 apart within one call fall to big
+//! integers when nearly degenerate.
 
 use super::{CrossPoly, CrossProductsPoly, DotPoly, Kernel, Orientation, Point, Polynomial, Ring, Sign};
 use num_bigint::BigInt;

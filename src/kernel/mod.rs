@@ -12,7 +12,9 @@
 //!   call at the cost of the fast kernel plus one comparison, Shewchuk's
 //!   adaptive orientation (the `robust` crate) inside the exponent range where
 //!   it is exact, and exact big-integer arithmetic on the dyadic values of the
-//!   inputs everywhere else (see [`exact`]).
+//!   inputs everywhere else (see [`exact`]). A query that knows the bounding boxes of
+//!   its points asks [`Kernel::within`] for [`ExactWithin`], which puts a semi-static
+//!   filter (one error bound per query) in front of those layers.
 //!
 //! Kernels are zero-sized values chosen at compile time (`Barba.intersects_with(Exact, ..)`);
 //! [`Precision`] names them at run time (the CLI's `--precision`).
@@ -41,11 +43,14 @@ use std::str::FromStr;
 /// deserialised from `[x, y]` or `{"x": x, "y": y}`.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Point {
+    /// The x coordinate.
     pub x: f64,
+    /// The y coordinate.
     pub y: f64,
 }
 
 impl Point {
+    /// The point `(x, y)`; nothing is checked (see [`Point::is_finite`]).
     #[inline]
     pub const fn new(x: f64, y: f64) -> Self {
         Point { x, y }
@@ -89,8 +94,11 @@ impl From<Point> for [f64; 2] {
 /// The sign of a real number.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Sign {
+    /// Below zero.
     Negative,
+    /// Exactly zero.
     Zero,
+    /// Above zero.
     Positive,
 }
 
@@ -108,6 +116,7 @@ impl Sign {
         }
     }
 
+    /// The sign of the negated number.
     #[inline]
     pub fn reverse(self) -> Sign {
         match self {
@@ -140,6 +149,7 @@ pub enum Orientation {
 }
 
 impl Orientation {
+    /// The orientation of the reversed triple (or of the directions swapped).
     #[inline]
     pub fn reverse(self) -> Orientation {
         match self {
@@ -188,6 +198,7 @@ impl Ring for f64 {
 /// evaluate it. Only `+`, `-` and `*` of input coordinates are allowed, so the exact
 /// kernel can always evaluate it exactly.
 pub trait Polynomial {
+    /// The polynomial's value, evaluated in the number type `R`.
     fn eval<R: Ring>(&self) -> R;
 }
 
@@ -363,8 +374,10 @@ pub enum Precision {
 }
 
 impl Precision {
+    /// Both kernels, fast first.
     pub const ALL: [Precision; 2] = [Precision::Fast, Precision::Exact];
 
+    /// The kernel's [`Kernel::NAME`], as `--precision` spells it.
     pub fn name(self) -> &'static str {
         match self {
             Precision::Fast => Fast::NAME,
