@@ -128,9 +128,16 @@ fn every_experiment_writes_csv_and_svg() {
         let r: f64 = r.parse().unwrap();
         assert!(r > 0.0 && r.is_finite(), "{r}");
     }
-    // The exact kernel's overhead: every algorithm at every size, positive times.
+    // The exact kernel's overhead: every algorithm at every size, disjoint and
+    // intersecting, positive times.
     let (header, rows) = read_csv(&dir.join("trade_ratio.csv"));
-    assert_eq!(rows.len(), 2 * polysect::intersect::Algorithm::ALL.len());
+    assert_eq!(rows.len(), 2 * 2 * polysect::intersect::Algorithm::ALL.len());
+    assert_eq!(
+        column(&header, &rows, "relation")
+            .into_iter()
+            .collect::<std::collections::BTreeSet<_>>(),
+        ["disjoint", "intersecting"].into_iter().collect()
+    );
     assert_eq!(
         column(&header, &rows, "n")
             .into_iter()

@@ -724,6 +724,10 @@ struct Counting;
 
 impl Kernel for Counting {
     const NAME: &'static str = "counting";
+    type Within = Counting;
+    fn within(self, _boxes: [(Point, Point); 2]) -> Counting {
+        self
+    }
     fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
         PREDICATES.fetch_add(1, AtomicOrdering::Relaxed);
         Exact.orient(a, b, c)

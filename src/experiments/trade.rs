@@ -19,8 +19,10 @@
 //!
 //! # The exact kernel's overhead
 //! A second table (`trade_ratio.csv`) measures what exactness costs on ordinary input:
-//! random rotated ellipses ([`Family::Rotated`], any relation) at the sizes
-//! [`Config::ratio_log2_sizes`], [`Config::pairs_for`] pairs each. For each pair and
+//! random rotated ellipses ([`Family::Rotated`]) at the sizes
+//! [`Config::ratio_log2_sizes`], [`Config::pairs_for`] pairs each (half of them, at
+//! least two, disjoint, and as many intersecting; each relation a row of its own).
+//! For each pair and
 //! algorithm the fast and the exact query are timed in turn, three times each (fast,
 //! exact, fast, exact, …, so a drift of the machine's speed hits both), each a timed
 //! loop of [`Config::min_time`] / 2; the pair's ratio is the median exact time over
@@ -314,6 +316,7 @@ pub(crate) fn run(config: &Config) -> io::Result<Report> {
     csv.write(&config.out, "trade.csv", &mut report)?;
     let mut ratio_csv = Csv::new(&[
         "n",
+        "relation",
         "algorithm",
         "pairs",
         "fast_ns",
@@ -323,6 +326,7 @@ pub(crate) fn run(config: &Config) -> io::Result<Report> {
     for r in &ratios {
         ratio_csv.row(&[
             r.n.to_string(),
+            relation_name(r.relation).into(),
             r.algorithm.to_string(),
             r.pairs.to_string(),
             ns(r.fast_ns),
@@ -390,9 +394,10 @@ pub(crate) fn run(config: &Config) -> io::Result<Report> {
     Ok(report)
 }
 
-/// The exact kernel's overhead for one algorithm at one size.
+/// The exact kernel's overhead for one algorithm at one size and relation.
 struct Overhead {
     n: usize,
+    relation: Relation,
     algorithm: Algorithm,
     pairs: usize,
     /// Median over the pairs of the median fast / exact time per query.
@@ -407,12 +412,16 @@ fn overhead(config: &Config, rng: &mut SmallRng) -> Vec<Overhead> {
     let bar = super::progress(config, "overhead", config.ratio_log2_sizes.len());
     let min_time = config.min_time / 2;
     let mut out = Vec::new();
-    for &log2 in &config.ratio_log2_sizes {
+    for (&log2, relation) in config
+        .ratio_log2_sizes
+        .iter()
+        .flat_map(|l| [(l, Relation::Disjoint), (l, Relation::Intersecting)])
+    {
         let n = 1usize << log2;
-        bar.set_message(format!("n = 2^{log2}"));
-        let mut prepared: Vec<PreparedPair> = (0..config.pairs_for(n))
+        bar.set_message(format!("n = 2^{log2}, {}", relation_name(relation)));
+        let mut prepared: Vec<PreparedPair> = (0..config.pairs_for(n).div_ceil(2).max(2))
             .map(|i| {
-                let (p, q) = generate::pair(Family::Rotated, n, Relation::Any, rng);
+                let (p, q) = generate::pair(Family::Rotated, n, relation, rng);
                 PreparedPair::new(p, q, config.seed ^ i as u64)
             })
             .collect();
@@ -431,6 +440,7 @@ fn overhead(config: &Config, rng: &mut SmallRng) -> Vec<Overhead> {
             }
             out.push(Overhead {
                 n,
+                relation,
                 algorithm: alg,
                 pairs: prepared.len(),
                 fast_ns: median(&mut fast),
@@ -438,10 +448,21 @@ fn overhead(config: &Config, rng: &mut SmallRng) -> Vec<Overhead> {
                 ratio: median(&mut ratio),
             });
         }
-        bar.inc(1);
+        if relation == Relation::Intersecting {
+            bar.inc(1);
+        }
     }
     bar.finish();
     out
+}
+
+/// The name of a relation in the overhead table.
+fn relation_name(relation: Relation) -> &'static str {
+    match relation {
+        Relation::Disjoint => "disjoint",
+        Relation::Intersecting => "intersecting",
+        _ => "any",
+    }
 }
 
 /// The overhead as a markdown table: one row per algorithm, one column per size.
@@ -450,18 +471,24 @@ fn overhead_table(ratios: &[Overhead]) -> String {
     sizes.dedup();
     let mut md = String::from(
         "\nExact kernel time / fast kernel time on random rotated ellipses (median over pairs \
-         of interleaved measurements; exact and fast ns per query in parentheses).\n\n| algorithm |",
+         of interleaved measurements; exact and fast ns per query in parentheses).\n\n| algorithm | pairs |",
     );
     for n in &sizes {
         md.push_str(&format!(" n = 2^{} |", n.trailing_zeros()));
     }
-    md.push_str("\n|---|");
+    md.push_str("\n|---|---|");
     md.push_str(&"---|".repeat(sizes.len()));
     md.push('\n');
-    for &alg in Algorithm::ALL {
-        md.push_str(&format!("| {alg} |"));
+    for (&alg, relation) in Algorithm::ALL
+        .iter()
+        .flat_map(|a| [(a, Relation::Disjoint), (a, Relation::Intersecting)])
+    {
+        md.push_str(&format!("| {alg} | {} |", relation_name(relation)));
         for &n in &sizes {
-            match ratios.iter().find(|r| r.n == n && r.algorithm == alg) {
+            match ratios
+                .iter()
+                .find(|r| r.n == n && r.algorithm == alg && r.relation == relation)
+            {
                 Some(r) => md.push_str(&format!(
                     " {:.2} ({} / {}) |",
                     r.ratio,

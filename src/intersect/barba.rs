@@ -132,7 +132,8 @@ impl ArrayIntersection for Barba {
         q: &ConvexPolygon,
         probe: &mut P,
     ) -> bool {
-        run::<K, P, Plain>(k, p.vertices(), q.vertices(), probe)
+        let k = k.within([p.bounding_box(), q.bounding_box()]);
+        run::<K::Within, P, Plain>(k, p.vertices(), q.vertices(), probe)
     }
 
     /// See the module docs' "Certificate" section.
@@ -143,12 +144,13 @@ impl ArrayIntersection for Barba {
         q: &ConvexPolygon,
         probe: &mut P,
     ) -> Derivation {
+        let k = k.within([p.bounding_box(), q.bounding_box()]);
         let (pv, qv) = (p.vertices(), q.vertices());
-        match run::<K, P, Record>(k, pv, qv, probe) {
+        match run::<K::Within, P, Record>(k, pv, qv, probe) {
             Exit::Apart { pr, q, line } => lift(k, pv, qv, pr, q, line)
                 .or_else(|| {
                     // The run with the roles exchanged ends on other pieces.
-                    match run::<K, (), Record>(k, qv, pv, &mut ()) {
+                    match run::<K::Within, (), Record>(k, qv, pv, &mut ()) {
                         Exit::Apart { pr, q, line } => lift(k, qv, pv, pr, q, line).map(Certificate::swapped),
                         _ => None,
                     }

@@ -124,6 +124,7 @@ impl ArrayIntersection for ChazelleDobkin {
         q: &ConvexPolygon,
         probe: &mut P,
     ) -> bool {
+        let k = k.within([p.bounding_box(), q.bounding_box()]);
         run(k, p.vertices(), q.vertices(), probe).meets()
     }
 
@@ -135,6 +136,7 @@ impl ArrayIntersection for ChazelleDobkin {
         q: &ConvexPolygon,
         probe: &mut P,
     ) -> Derivation {
+        let k = k.within([p.bounding_box(), q.bounding_box()]);
         let (pv, qv) = (p.vertices(), q.vertices());
         let exit = run(k, pv, qv, probe);
         let found = match exit {

@@ -110,6 +110,7 @@ impl ArrayIntersection for Dobkin {
         q: &ConvexPolygon,
         probe: &mut P,
     ) -> bool {
+        let k = k.within([p.bounding_box(), q.bounding_box()]);
         run(k, p.vertices(), q.vertices(), probe, |outcome, _| {
             outcome == Outcome::Meet
         })
@@ -123,6 +124,7 @@ impl ArrayIntersection for Dobkin {
         q: &ConvexPolygon,
         probe: &mut P,
     ) -> Derivation {
+        let k = k.within([p.bounding_box(), q.bounding_box()]);
         let (pv, qv) = (p.vertices(), q.vertices());
         run(k, pv, qv, probe, |outcome, searches| {
             let found = match outcome {

@@ -54,6 +54,7 @@ impl ArrayIntersection for Linear {
         q: &ConvexPolygon,
         probe: &mut P,
     ) -> bool {
+        let k = k.within([p.bounding_box(), q.bounding_box()]);
         let (pv, qv) = (p.vertices(), q.vertices());
         separating_edge(k, pv, qv, probe).is_none() && separating_edge(k, qv, pv, probe).is_none()
     }
@@ -68,6 +69,7 @@ impl ArrayIntersection for Linear {
         q: &ConvexPolygon,
         probe: &mut P,
     ) -> Derivation {
+        let k = k.within([p.bounding_box(), q.bounding_box()]);
         match separating_certificate(k, p.vertices(), q.vertices(), probe) {
             Some(c) => Derivation::Certified(c),
             None => Derivation::Answer(true),

@@ -1,6 +1,12 @@
 //! The exact kernel: correct signs for every finite `f64` input.
 //!
 //! # Layers
+//! 0. **Semi-static filter** ([`ExactWithin`], inline), for a query that names the
+//!    bounding boxes of its points ([`Kernel::within`]; the array algorithms do):
+//!    one error bound per query from the boxes' size, so a call is certified by
+//!    comparing its computed value with ±bound, the comparisons the fast kernel makes
+//!    against zero. Calls it cannot decide (nearly degenerate relative to the boxes:
+//!    short edges of large polygons, coincident points) go on to layer 1.
 //! 1. **Static filter** (inline). The predicate is evaluated in `f64` together with a
 //!    bound on its rounding error; when the result is farther from zero than the
 //!    bound, its sign is the exact sign. `orient`, `cross` and `dot` (two products
@@ -15,6 +21,10 @@
 //!    same way: the algorithms' unpredictable branches wait no longer than under
 //!    `Fast`.
 //! 2. **Out of line** (`#[cold]`), when the filter cannot decide:
+//!    * *Fixed rescaling.* Two-product calls whose products overflowed, or all
+//!      underflowed, are filtered again on their differences times 2^-600 or 2^600
+//!      (`fixed_rescale_sign`): uniformly huge or tiny input (2^±600, near
+//!      `f64::MAX`) is decided here in a few instructions.
 //!    * *Scaled differences.* Every predicate here is a homogeneous polynomial in
 //!      differences of inputs. The differences the filter computed are multiplied by
 //!      the power of two that puts the largest in [1, 2) and the filter runs again
@@ -46,14 +56,15 @@
 //!    refused and none is misjudged; the cost is paid only by near-degenerate calls.
 //!
 //! # Cost
-//! Measured in docs/results.md: on random input the exact kernel costs 1.3–1.5× the
-//! fast one's instructions in the O(log n) algorithms (whose work is almost all
-//! predicates; 1.2–1.8× their time) and about 1.0–1.1× in CLM. Validation plus the
-//! crossings sweep at 2^±600 or near `f64::MAX` measured 1.5–2.4× the same input at
-//! scale 1 in a heavily loaded run whose control (no slow path) came out 1.7×;
-//! subnormal input 2.4× (the filter's own products of subnormal differences take the
-//! microcode path). Predicates that mix magnitudes more than 2^1022 apart within one
-//! call fall to big integers when nearly degenerate.
+//! Measured in docs/results.md ("The exact kernel's overhead", "At extreme scales"),
+//! in instructions (callgrind) and time: with the semi-static filter the O(log n)
+//! algorithms spend 1.10–1.26× the fast kernel's instructions at n = 2^10 and 2^14
+//! (Chazelle–Dobkin 1.21×) and 1.18–1.43× at 2^18, where more calls are nearly
+//! degenerate relative to the polygons' size and go on to the static filter (before:
+//! 1.3–1.6×). Validation plus the crossings sweep at 2^±600 and 2^1016 cost 1.38–1.46×
+//! the instructions of the same input at scale 1 (before the fixed rescaling: 1.65×).
+//! Predicates that mix magnitudes more than 2^1022 apart within one call fall to big
+//! integers when nearly degenerate.
 
 use super::{CrossPoly, CrossProductsPoly, DotPoly, Kernel, Orientation, Point, Polynomial, Ring, Sign};
 use num_bigint::BigInt;
@@ -72,6 +83,12 @@ pub struct Exact;
 
 impl Kernel for Exact {
     const NAME: &'static str = "exact";
+    type Within = ExactWithin;
+
+    #[inline]
+    fn within(self, boxes: [(Point, Point); 2]) -> ExactWithin {
+        ExactWithin::new(boxes)
+    }
 
     /// The static filter, written so that the answer is the sign of the computed
     /// determinant (as under [`Fast`](super::Fast)) and the certificate a separate
@@ -131,6 +148,205 @@ impl Kernel for Exact {
             None => cross_products_slow(factors),
         }
     }
+}
+
+/// The exact kernel for one query whose points lie in known boxes ([`Kernel::within`]):
+/// [`Exact`] behind a *semi-static* filter.
+///
+/// Let `w` be the larger side of the union of the boxes, computed in `f64`, and
+/// `P = w·w`. Every coordinate difference the predicates compute is at most `w` in
+/// magnitude (rounding is monotonic), so every product of two differences is at most
+/// `P`. The filter's two bounds, computed once:
+///
+/// * two products (`orient`, `cross`, `dot`): Shewchuk's error bound ε₀·(|l| + |r|)
+///   with |l| + |r| ≤ 2P, so `B₂ = 2ε₀(1 + 2^-30)·P + 2·f64::MIN_POSITIVE` (the
+///   margin covers the bound's own roundings, the last term underflowing products, as
+///   in the static filter). Valid for `P ≤ 2^1020`: then |l ∓ r| ≤ 2^1021 cannot
+///   overflow.
+/// * degree 4 ([`Kernel::cross_products_sign`]): the static filter's analysis with
+///   each factor's magnitude Pᵢ ≤ 2P(1 + 3u) bounds the error by 81.7u·P², to which
+///   underflow adds at most 2^-1070·P + 2^-1073; `B₄ = 96u·P²` covers both when
+///   `P ∈ [2^-400, 2^250]` (then nothing overflows either).
+///
+/// A predicate whose computed value `v` satisfies `v > B` or `v < −B` is decided by
+/// that sign: the same two comparisons the [`Fast`](super::Fast) kernel makes against
+/// zero. Anything else (a value within the bound, NaN, a bound out of its range,
+/// which is `+∞`) goes to [`Exact`]'s own layers, out of line. The default value has
+/// infinite bounds: every call goes to [`Exact`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ExactWithin {
+    /// `B₂`, or `+∞` when not valid.
+    two: f64,
+    /// `B₄`, or `+∞` when not valid.
+    four: f64,
+}
+
+impl Default for ExactWithin {
+    fn default() -> Self {
+        ExactWithin {
+            two: f64::INFINITY,
+            four: f64::INFINITY,
+        }
+    }
+}
+
+impl ExactWithin {
+    /// The kernel for queries on points inside the union of `boxes` (each `(min, max)`).
+    /// Boxes with non-finite corners give infinite bounds (every call goes to [`Exact`]).
+    ///
+    /// ```
+    /// use polysect::{ExactWithin, Kernel, Orientation, Point};
+    /// let b = (Point::new(0.0, 0.0), Point::new(1.0, 1.0));
+    /// let k = ExactWithin::new([b, b]);
+    /// let (o, x, y) = (Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(0.0, 1.0));
+    /// assert_eq!(k.orient(o, x, y), Orientation::Ccw);
+    /// assert_eq!(k.orient(o, x, Point::new(0.5, 0.0)), Orientation::Collinear);
+    /// ```
+    #[inline]
+    pub fn new([(lo0, hi0), (lo1, hi1)]: [(Point, Point); 2]) -> ExactWithin {
+        const TWO_MAX: f64 = f64::from_bits((1023 + 1020) << 52); // 2^1020
+        const FOUR_MIN: f64 = f64::from_bits((1023 - 400) << 52); // 2^-400
+        const FOUR_MAX: f64 = f64::from_bits((1023 + 250) << 52); // 2^250
+        const C2: f64 = 2.0 * ORIENT_ERR * (1.0 + 1.0 / (1u64 << 30) as f64);
+        const C4: f64 = 96.0 * (f64::EPSILON / 2.0);
+        // Both sides from both boxes; a NaN or infinite corner makes a side NaN or
+        // infinite (a corner is never dropped: no `min`/`max` that ignores NaN), and
+        // then `p` fails both range tests.
+        let side = |lo0: f64, hi0: f64, lo1: f64, hi1: f64| {
+            let (a, b) = (hi0 - lo1, hi1 - lo0);
+            let (c, d) = (hi0 - lo0, hi1 - lo1);
+            let ab = if a > b || a.is_nan() { a } else { b };
+            let cd = if c > d || c.is_nan() { c } else { d };
+            if ab > cd || ab.is_nan() { ab } else { cd }
+        };
+        let (wx, wy) = (side(lo0.x, hi0.x, lo1.x, hi1.x), side(lo0.y, hi0.y, lo1.y, hi1.y));
+        let w = if wx > wy || wx.is_nan() { wx } else { wy };
+        let p = w * w;
+        // `p <= MAX` is false for NaN and infinity.
+        let two = if p <= TWO_MAX {
+            C2 * p + 2.0 * f64::MIN_POSITIVE
+        } else {
+            f64::INFINITY
+        };
+        let four = if (FOUR_MIN..=FOUR_MAX).contains(&p) {
+            C4 * p * p
+        } else {
+            f64::INFINITY
+        };
+        ExactWithin { two, four }
+    }
+
+    /// The two-product bound `B₂` (`+∞` when not valid).
+    pub fn two_products_bound(&self) -> f64 {
+        self.two
+    }
+
+    /// The degree-4 bound `B₄` (`+∞` when not valid).
+    pub fn degree_four_bound(&self) -> f64 {
+        self.four
+    }
+}
+
+impl Kernel for ExactWithin {
+    const NAME: &'static str = "exact";
+    type Within = ExactWithin;
+
+    #[inline]
+    fn within(self, boxes: [(Point, Point); 2]) -> ExactWithin {
+        ExactWithin::new(boxes)
+    }
+
+    #[inline]
+    fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
+        let (left, right) = orient_products(a, b, c);
+        let det = left - right;
+        if det > self.two {
+            Orientation::Ccw
+        } else if det < -self.two {
+            Orientation::Cw
+        } else {
+            orient_within_slow(a, b, c)
+        }
+    }
+
+    #[inline]
+    fn sign<P: Polynomial>(self, poly: &P) -> Sign {
+        Exact.sign(poly)
+    }
+
+    #[inline]
+    fn cross(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
+        let (left, right) = cross_products(a, b, c, d);
+        let det = left - right;
+        if det > self.two {
+            Orientation::Ccw
+        } else if det < -self.two {
+            Orientation::Cw
+        } else {
+            cross_within_slow(a, b, c, d)
+        }
+    }
+
+    #[inline]
+    fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
+        let (left, right) = dot_products(a, b, c, d);
+        let det = left + right;
+        if det > self.two {
+            Sign::Positive
+        } else if det < -self.two {
+            Sign::Negative
+        } else {
+            dot_within_slow(a, b, c, d)
+        }
+    }
+
+    #[inline]
+    fn cross_products_sign(self, factors: [[Point; 4]; 4]) -> Sign {
+        let cross = |[ux, uy, vx, vy]: [f64; 4]| ux * vy - uy * vx;
+        let [d0, d1, d2, d3] = factors.map(factor_differences);
+        let s = cross(d0) * cross(d1) + cross(d2) * cross(d3);
+        if s > self.four {
+            Sign::Positive
+        } else if s < -self.four {
+            Sign::Negative
+        } else {
+            cross_products_within_slow(factors)
+        }
+    }
+}
+
+/// [`ExactWithin`]'s undecided calls: a repeated point answers zero at once (the
+/// algorithms ask such questions once or twice per query, and [`Exact`] would find
+/// the zero only after its filters); everything else goes to [`Exact`]'s static
+/// filter and what follows it.
+#[cold]
+#[inline(never)]
+fn orient_within_slow(a: Point, b: Point, c: Point) -> Orientation {
+    if a == b || a == c || b == c {
+        return Orientation::Collinear;
+    }
+    Exact.orient(a, b, c)
+}
+
+#[cold]
+#[inline(never)]
+fn cross_within_slow(a: Point, b: Point, c: Point, d: Point) -> Orientation {
+    if a == b || c == d {
+        return Orientation::Collinear;
+    }
+    Exact.cross(a, b, c, d)
+}
+
+#[cold]
+#[inline(never)]
+fn dot_within_slow(a: Point, b: Point, c: Point, d: Point) -> Sign {
+    Exact.dot(a, b, c, d)
+}
+
+#[cold]
+#[inline(never)]
+fn cross_products_within_slow(factors: [[Point; 4]; 4]) -> Sign {
+    Exact.cross_products_sign(factors)
 }
 
 /// The static filter for `det = l − r` or `det = l + r`, `l` and `r` each a product of
@@ -496,10 +712,58 @@ pub fn area_sign_of(n: usize, at: impl Fn(usize) -> Point) -> Sign {
         .expect("dyadic arithmetic is exact")
 }
 
+/// The first out-of-line step of the two-product predicates (`l ∓ r` with
+/// `l = d[0]·d[3]`, `r = d[1]·d[2]` for `orient` and `cross`; `l = d[0]·d[2]`,
+/// `r = d[1]·d[3]` with a sum for `dot`): calls whose products overflowed or all
+/// underflowed (uniformly huge or tiny inputs, 2^±600) are filtered again on their
+/// differences times a *fixed* power of two, 2^-600 or 2^600, chosen by the case:
+/// a few instructions where [`scaled_differences`] finds the exact exponent.
+///
+/// Overflow (`|l|` or `|r|` not below 2^1000, or NaN): every difference is below
+/// 2^1024, so the scaled ones are below 2^424 and no product overflows. Scaling down
+/// is exact except for scaled differences below the normal range, rounded with an
+/// absolute error of at most 2^-1075; each, times a scaled difference below 2^424,
+/// moves a product by at most 2^-651, so the bound adds 2^-640 (a larger bound stays
+/// valid). Underflow (`|l|` and `|r|` below 2^-900): scaling up by 2^600 is exact
+/// (subnormal differences become normal), and a scaled difference that overflows
+/// makes a product non-finite, which [`certain`] refuses. `None` when neither case
+/// applies or the filter still cannot decide.
+#[inline(always)]
+fn fixed_rescale_sign(d: [f64; 4], dot: bool) -> Option<Sign> {
+    const HUGE: f64 = f64::from_bits((1023 + 1000) << 52); // 2^1000
+    const TINY: f64 = f64::from_bits((1023 - 900) << 52); // 2^-900
+    const DOWN: f64 = f64::from_bits((1023 - 600) << 52); // 2^-600
+    const UP: f64 = f64::from_bits((1023 + 600) << 52); // 2^600
+    const LOST: f64 = f64::from_bits((1023 - 640) << 52); // 2^-640
+    let products = |d: [f64; 4]| {
+        if dot {
+            (d[0] * d[2], d[1] * d[3])
+        } else {
+            (d[0] * d[3], d[1] * d[2])
+        }
+    };
+    let (l, r) = products(d);
+    let (scale, extra) = if !(l.abs() < HUGE && r.abs() < HUGE) {
+        (DOWN, LOST)
+    } else if l.abs() < TINY && r.abs() < TINY {
+        (UP, 0.0)
+    } else {
+        return None;
+    };
+    let (l, r) = products(d.map(|v| v * scale));
+    let det = if dot { l + r } else { l - r };
+    let m = det.abs();
+    (m > two_products_bound(l, m) + extra).then(|| nonzero_sign(det))
+}
+
 #[cold]
 #[inline(never)]
 fn orient_slow(a: Point, b: Point, c: Point) -> Sign {
-    if let Some([dx1, dy1, dx2, dy2]) = scaled_differences([a.x - c.x, a.y - c.y, b.x - c.x, b.y - c.y]) {
+    let d = [a.x - c.x, a.y - c.y, b.x - c.x, b.y - c.y];
+    if let Some(s) = fixed_rescale_sign(d, false) {
+        return s;
+    }
+    if let Some([dx1, dy1, dx2, dy2]) = scaled_differences(d) {
         let (l, r) = (dx1 * dy2, dy1 * dx2);
         if certain(l - r, l) {
             return nonzero_sign(l - r);
@@ -558,7 +822,11 @@ fn exact_directions(r: &Rescaled<4>) -> Option<(Point, Point)> {
 #[cold]
 #[inline(never)]
 fn cross_slow(a: Point, b: Point, c: Point, d: Point) -> Sign {
-    if let Some([ux, uy, vx, vy]) = scaled_differences([b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y]) {
+    let diffs = [b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y];
+    if let Some(s) = fixed_rescale_sign(diffs, false) {
+        return s;
+    }
+    if let Some([ux, uy, vx, vy]) = scaled_differences(diffs) {
         let (l, r) = (ux * vy, uy * vx);
         if certain(l - r, l) {
             return nonzero_sign(l - r);
@@ -583,7 +851,11 @@ fn cross_slow(a: Point, b: Point, c: Point, d: Point) -> Sign {
 #[cold]
 #[inline(never)]
 fn dot_slow(a: Point, b: Point, c: Point, d: Point) -> Sign {
-    if let Some([ux, uy, vx, vy]) = scaled_differences([b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y]) {
+    let diffs = [b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y];
+    if let Some(s) = fixed_rescale_sign(diffs, true) {
+        return s;
+    }
+    if let Some([ux, uy, vx, vy]) = scaled_differences(diffs) {
         let (l, r) = (ux * vx, uy * vy);
         if certain(l + r, l) {
             return nonzero_sign(l + r);

@@ -12,7 +12,9 @@
 //!   call at the cost of the fast kernel plus one comparison, Shewchuk's
 //!   adaptive orientation (the `robust` crate) inside the exponent range where
 //!   it is exact, and exact big-integer arithmetic on the dyadic values of the
-//!   inputs everywhere else (see [`exact`]).
+//!   inputs everywhere else (see [`exact`]). A query that knows the bounding boxes of
+//!   its points asks [`Kernel::within`] for [`ExactWithin`], which puts a semi-static
+//!   filter (one error bound per query) in front of those layers.
 //!
 //! Kernels are zero-sized values chosen at compile time (`Barba.intersects_with(Exact, ..)`);
 //! [`Precision`] names them at run time (the CLI's `--precision`).
@@ -26,7 +28,7 @@ pub mod exact;
 mod point_serde;
 mod segment;
 
-pub use exact::Exact;
+pub use exact::{Exact, ExactWithin};
 pub use segment::{SegmentContact, point_on_segment, segment_contact, segments_intersect};
 
 use std::cmp::Ordering;
@@ -41,11 +43,14 @@ use std::str::FromStr;
 /// deserialised from `[x, y]` or `{"x": x, "y": y}`.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Point {
+    /// The x coordinate.
     pub x: f64,
+    /// The y coordinate.
     pub y: f64,
 }
 
 impl Point {
+    /// The point `(x, y)`; nothing is checked (see [`Point::is_finite`]).
     #[inline]
     pub const fn new(x: f64, y: f64) -> Self {
         Point { x, y }
@@ -89,8 +94,11 @@ impl From<Point> for [f64; 2] {
 /// The sign of a real number.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Sign {
+    /// Below zero.
     Negative,
+    /// Exactly zero.
     Zero,
+    /// Above zero.
     Positive,
 }
 
@@ -108,6 +116,7 @@ impl Sign {
         }
     }
 
+    /// The sign of the negated number.
     #[inline]
     pub fn reverse(self) -> Sign {
         match self {
@@ -140,6 +149,7 @@ pub enum Orientation {
 }
 
 impl Orientation {
+    /// The orientation of the reversed triple (or of the directions swapped).
     #[inline]
     pub fn reverse(self) -> Orientation {
         match self {
@@ -188,6 +198,7 @@ impl Ring for f64 {
 /// evaluate it. Only `+`, `-` and `*` of input coordinates are allowed, so the exact
 /// kernel can always evaluate it exactly.
 pub trait Polynomial {
+    /// The polynomial's value, evaluated in the number type `R`.
     fn eval<R: Ring>(&self) -> R;
 }
 
@@ -198,6 +209,29 @@ pub trait Polynomial {
 pub trait Kernel: Copy + Clone + Default + fmt::Debug + Send + Sync + 'static {
     /// A short name (`"fast"` or `"exact"`).
     const NAME: &'static str;
+
+    /// The kernel [`within`](Kernel::within) returns.
+    type Within: Kernel;
+
+    /// The same predicates for one query whose predicates only ever see points inside
+    /// the union of the bounding boxes `boxes` (each `(min, max)`): the exact kernel
+    /// turns the boxes into a *semi-static* filter, one error bound per query for
+    /// every call, so that a certified sign costs one comparison more than the
+    /// [`Fast`] kernel's, and nothing when the answer is certain. Fast returns itself.
+    ///
+    /// A predicate asked of the returned kernel on a point outside the boxes may
+    /// answer wrongly: callers pass the boxes of every polygon whose vertices the
+    /// query reads, and ask only about those vertices.
+    ///
+    /// ```
+    /// use polysect::{ConvexPolygon, Exact, Kernel, Orientation, Point};
+    /// let p = ConvexPolygon::new([[0.0, 0.0], [4.0, 0.0], [0.0, 3.0]])?;
+    /// let k = Exact.within([p.bounding_box(), p.bounding_box()]);
+    /// let v = p.vertices();
+    /// assert_eq!(k.orient(v[0], v[1], v[2]), Orientation::Ccw);
+    /// # Ok::<(), polysect::PolygonError>(())
+    /// ```
+    fn within(self, boxes: [(Point, Point); 2]) -> Self::Within;
 
     /// Orientation of the triple (a, b, c): the sign of (b − a) × (c − a).
     fn orient(self, a: Point, b: Point, c: Point) -> Orientation;
@@ -281,7 +315,7 @@ impl Polynomial for DotPoly {
 /// multiplied by the sign of `D` (X = a + (N/D)(b−a)), asked of
 /// [`Kernel::cross_products_sign`]. Exact under [`Exact`].
 /// The lines must not be parallel (`D ≠ 0`); for parallel lines the answer is `Collinear`.
-#[inline]
+#[inline(always)]
 pub fn line_meet_side<K: Kernel>(
     k: K,
     (a, b): (Point, Point),
@@ -309,6 +343,12 @@ pub struct Fast;
 
 impl Kernel for Fast {
     const NAME: &'static str = "fast";
+    type Within = Fast;
+
+    #[inline]
+    fn within(self, _boxes: [(Point, Point); 2]) -> Fast {
+        self
+    }
 
     #[inline]
     fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
@@ -334,8 +374,10 @@ pub enum Precision {
 }
 
 impl Precision {
+    /// Both kernels, fast first.
     pub const ALL: [Precision; 2] = [Precision::Fast, Precision::Exact];
 
+    /// The kernel's [`Kernel::NAME`], as `--precision` spells it.
     pub fn name(self) -> &'static str {
         match self {
             Precision::Fast => Fast::NAME,

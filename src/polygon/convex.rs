@@ -19,6 +19,9 @@ use crate::kernel::{Exact, Kernel, Orientation, Point, Sign};
 #[cfg_attr(feature = "serde", serde(try_from = "Vec<Point>", into = "Vec<Point>"))]
 pub struct ConvexPolygon {
     vertices: Vec<Point>,
+    /// The bounding box `(min, max)`, kept with the vertices so that a query can hand
+    /// the exact kernel a per-query error bound in O(1) ([`Kernel::within`]).
+    bbox: (Point, Point),
 }
 
 impl ConvexPolygon {
@@ -44,14 +47,20 @@ impl ConvexPolygon {
         P: Into<Point>,
     {
         let points: Vec<Point> = points.into_iter().map(Into::into).collect();
-        clean(&points).map(|vertices| ConvexPolygon { vertices })
+        clean(&points).map(ConvexPolygon::with_box)
     }
 
     /// Wraps a list already known to be strictly convex and counter-clockwise.
     /// Nothing is checked; an invalid list makes every algorithm's answer meaningless.
     /// Use [`ConvexPolygon::debug_validate`] in tests.
     pub fn from_ccw_unchecked(vertices: Vec<Point>) -> Self {
-        ConvexPolygon { vertices }
+        ConvexPolygon::with_box(vertices)
+    }
+
+    /// The polygon on `vertices` with its bounding box computed. O(n).
+    fn with_box(vertices: Vec<Point>) -> Self {
+        let bbox = box_of(&vertices);
+        ConvexPolygon { vertices, bbox }
     }
 
     /// The vertices, counter-clockwise.
@@ -83,7 +92,10 @@ impl ConvexPolygon {
         let mut v = self.vertices.clone();
         let n = v.len();
         v.rotate_left(start % n);
-        ConvexPolygon { vertices: v }
+        ConvexPolygon {
+            vertices: v,
+            bbox: self.bbox,
+        }
     }
 
     /// The polygon with every vertex mapped by `f`, validated again (an affine map
@@ -102,19 +114,13 @@ impl ConvexPolygon {
         for p in &mut self.vertices {
             *p = Point::new(p.x + dx, p.y + dy);
         }
+        self.bbox = box_of(&self.vertices);
     }
 
-    /// Axis-aligned bounding box `(min, max)`.
+    /// Axis-aligned bounding box `(min, max)`. O(1): computed at construction.
+    #[inline]
     pub fn bounding_box(&self) -> (Point, Point) {
-        let mut lo = self.vertices[0];
-        let mut hi = lo;
-        for p in &self.vertices[1..] {
-            lo.x = lo.x.min(p.x);
-            lo.y = lo.y.min(p.y);
-            hi.x = hi.x.max(p.x);
-            hi.y = hi.y.max(p.y);
-        }
-        (lo, hi)
+        self.bbox
     }
 
     /// Checks the invariant exactly: at least three finite vertices, every turn
@@ -155,6 +161,22 @@ impl TryFrom<Vec<Point>> for ConvexPolygon {
     fn try_from(points: Vec<Point>) -> Result<Self, Self::Error> {
         ConvexPolygon::new(points)
     }
+}
+
+/// The bounding box `(min, max)` of a list (a zero box at the origin for an empty
+/// one, which no polygon has).
+fn box_of(vertices: &[Point]) -> (Point, Point) {
+    let Some(&first) = vertices.first() else {
+        return (Point::default(), Point::default());
+    };
+    let (mut lo, mut hi) = (first, first);
+    for p in &vertices[1..] {
+        lo.x = lo.x.min(p.x);
+        lo.y = lo.y.min(p.y);
+        hi.x = hi.x.max(p.x);
+        hi.y = hi.y.max(p.y);
+    }
+    (lo, hi)
 }
 
 /// Whether direction `d` lies in the upper half-turn [0, π) of angles.

@@ -605,3 +605,231 @@ fn subnormal_differences_beside_f64_max() {
         assert_eq!(Exact.cross_products_sign(f), exact_products(f), "{f:?}");
     }
 }
+
+/// The box `(min, max)` of some points.
+fn box_of(points: &[Point]) -> (Point, Point) {
+    let (mut lo, mut hi) = (points[0], points[0]);
+    for p in points {
+        lo = Point::new(lo.x.min(p.x), lo.y.min(p.y));
+        hi = Point::new(hi.x.max(p.x), hi.y.max(p.y));
+    }
+    (lo, hi)
+}
+
+/// The semi-static filter of [`ExactWithin`], with the box of each call's own points
+/// (the tightest box, so the bound is as small as it gets): nearly collinear triples,
+/// nearly parallel and nearly perpendicular segments, and a third line through (or a
+/// few ulps off) a crossing, perturbed by up to 60 ulps at offsets up to 2^52 and
+/// scaled by powers of two from 2^-1074 (subnormal) to 2^1000 (beyond the bounds'
+/// ranges). Whenever the semi-static layer decides, it is right; both outcomes occur
+/// within a factor of four of the bound; and the kernel as a whole always agrees with
+/// big integers.
+#[test]
+fn semi_static_filter_at_its_bound() {
+    let mut rng = SmallRng::seed_from_u64(0x5e_a1);
+    // [decided, undecided] within a factor of 4 of the bound, per predicate.
+    let mut near = [[0usize; 2]; 4];
+    let mut decided_total = 0usize;
+    let mut check = |f: usize, value: f64, bound: f64, got: Sign, want: Sign, what: &dyn Fn() -> String| {
+        let decided = value > bound || value < -bound;
+        if decided {
+            decided_total += 1;
+            assert_eq!(Sign::of(value), want, "semi-static {f}: {}", what());
+        }
+        assert_eq!(got, want, "kernel {f}: {}", what());
+        if bound.is_finite() && value.abs() > bound / 4.0 && value.abs() < bound * 4.0 {
+            near[f][usize::from(!decided)] += 1;
+        }
+    };
+    let scales = [
+        0, 0, 0, -1074, -1000, -600, -400, 250, 300, 505, 509, 511, 600, 1000,
+    ];
+    for i in 0..40_000 {
+        let off = 2f64.powi([0, 20, 40, 52][i % 4]);
+        let e = scales[(i / 4) % scales.len()];
+        let (s1, s2) = (2f64.powi(e / 2), 2f64.powi(e - e / 2));
+        let t: f64 = rng.random_range(-2.0..2.0);
+        let k = rng.random_range(-60..=60);
+        let mut r = || {
+            Point::new(
+                off + rng.random_range(-1.0..1.0),
+                off + rng.random_range(-1.0..1.0),
+            )
+        };
+        let (a, b) = (r(), r());
+        let on = Point::new(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y));
+        let c = Point::new(on.x, ulps(on.y, k));
+        let d1 = Point::new(c.x + (b.x - a.x), ulps(c.y + (b.y - a.y), k / 2));
+        let d2 = Point::new(c.x - (b.y - a.y), ulps(c.y + (b.x - a.x), k / 2));
+        let (e2, c3, d3) = (r(), r(), r());
+        let x = crossing(a, b, c3, d3);
+        let f3 = Point::new(ulps(x.x, k), x.y);
+        // Scaled by 2^e: exact unless it underflows, and then still a valid input.
+        let sc = |p: Point| Point::new(p.x * s1 * s2, p.y * s1 * s2);
+        let [a, b, c, d1, d2, e2, c3, d3, f3] = [a, b, c, d1, d2, e2, c3, d3, f3].map(sc);
+        if [a, b, c, d1, d2, e2, c3, d3, f3].iter().any(|p| !p.is_finite()) {
+            continue;
+        }
+
+        let k3 = ExactWithin::new([box_of(&[a, b]), box_of(&[c])]);
+        let (l, r) = orient_products(a, b, c);
+        let want = sign_slow(&OrientPoly(a, b, c));
+        let got = k3.orient(a, b, c);
+        check(0, l - r, k3.two, Sign::of(as_value_of(got)), want, &|| {
+            format!("orient {a:?} {b:?} {c:?}")
+        });
+
+        let k4 = ExactWithin::new([box_of(&[a, b]), box_of(&[c, d1])]);
+        let (l, r) = cross_products(a, b, c, d1);
+        let want = sign_slow(&CrossPoly(a, b, c, d1));
+        let got = k4.cross(a, b, c, d1);
+        check(1, l - r, k4.two, Sign::of(as_value_of(got)), want, &|| {
+            format!("cross {a:?} {b:?} {c:?} {d1:?}")
+        });
+
+        let k4 = ExactWithin::new([box_of(&[a, b]), box_of(&[c, d2])]);
+        let (l, r) = dot_products(a, b, c, d2);
+        let want = sign_slow(&DotPoly(a, b, c, d2));
+        check(2, l + r, k4.two, k4.dot(a, b, c, d2), want, &|| {
+            format!("dot {a:?} {b:?} {c:?} {d2:?}")
+        });
+
+        let factors = line_meet_factors([a, b, c3, d3, e2, f3]);
+        let k6 = ExactWithin::new([box_of(&[a, b, c3]), box_of(&[d3, e2, f3])]);
+        let cr = |[ux, uy, vx, vy]: [f64; 4]| ux * vy - uy * vx;
+        let [g0, g1, g2, g3] = factors.map(factor_differences);
+        let s = cr(g0) * cr(g1) + cr(g2) * cr(g3);
+        let want = exact_products(factors);
+        check(3, s, k6.four, k6.cross_products_sign(factors), want, &|| {
+            format!("{factors:?}")
+        });
+    }
+    // The degree-4 bound is the loosest (P² for a product of four differences), so
+    // fewer of its calls come near it.
+    for (f, [decided, undecided]) in near.into_iter().enumerate() {
+        let least = if f == 3 { 10 } else { 50 };
+        assert!(
+            decided > least && undecided > least,
+            "predicate {f}: {decided} decided, {undecided} not, near the bound"
+        );
+    }
+    assert!(
+        decided_total > 40_000,
+        "the semi-static filter decides too little: {decided_total}"
+    );
+}
+
+fn as_value_of(o: Orientation) -> f64 {
+    match o {
+        Orientation::Cw => -1.0,
+        Orientation::Collinear => 0.0,
+        Orientation::Ccw => 1.0,
+    }
+}
+
+/// The bounds' ranges: boxes whose side is too large or too small for a bound, or not
+/// finite, give infinite bounds (every call goes to [`Exact`]); the default too.
+#[test]
+fn semi_static_bounds_and_their_ranges() {
+    let p = Point::new;
+    let unit = (p(0.0, 0.0), p(1.0, 1.0));
+    let k = ExactWithin::new([unit, unit]);
+    assert!(k.two > 0.0 && k.two < 1e-15 && k.four > 0.0 && k.four < 1e-13);
+    // The side is the union's: a far box widens it.
+    let far = ExactWithin::new([unit, (p(3.0, 0.0), p(4.0, 1.0))]);
+    assert!(far.two > 15.0 * k.two && far.four > 200.0 * k.four);
+    let d = ExactWithin::default();
+    assert!(d.two == f64::INFINITY && d.four == f64::INFINITY);
+    // A box that holds a non-finite point has a non-finite corner on that side.
+    for bad in [f64::NAN, f64::INFINITY] {
+        let b = ExactWithin::new([unit, (p(0.0, 0.0), p(bad, 1.0))]);
+        assert!(b.two == f64::INFINITY && b.four == f64::INFINITY, "{bad}");
+        let b = ExactWithin::new([(p(-bad, 0.0), p(1.0, 1.0)), unit]);
+        assert!(b.two == f64::INFINITY && b.four == f64::INFINITY, "{bad}");
+        let b = ExactWithin::new([unit, (p(0.0, -bad), p(1.0, bad))]);
+        assert!(b.two == f64::INFINITY && b.four == f64::INFINITY, "{bad}");
+    }
+    // Side 2^510: P = 2^1020 is the last valid two-product bound; degree 4 stops at 2^125.
+    let side = |s: f64| ExactWithin::new([(p(0.0, 0.0), p(s, s)), (p(0.0, 0.0), p(s, s))]);
+    assert!(side(2f64.powi(510)).two.is_finite());
+    assert_eq!(side(2f64.powi(510).next_up()).two, f64::INFINITY);
+    assert!(side(2f64.powi(125)).four.is_finite());
+    assert_eq!(side(2f64.powi(125).next_up()).four, f64::INFINITY);
+    assert!(side(2f64.powi(-200)).four.is_finite());
+    assert_eq!(side(2f64.powi(-200).next_down()).four, f64::INFINITY);
+    // Subnormal and zero sides keep a valid (absolute) two-product bound.
+    assert_eq!(side(5e-324).two, 2.0 * f64::MIN_POSITIVE);
+    assert_eq!(side(0.0).two, 2.0 * f64::MIN_POSITIVE);
+    // On a one-point box every orientation is collinear; the kernel still says so.
+    let o = p(3.0, 3.0);
+    let k = ExactWithin::new([(o, o), (o, o)]);
+    assert_eq!(k.orient(o, o, o), Orientation::Collinear);
+    // A huge and a tiny box together: the filter steps aside, the answer is exact.
+    let (h, t) = (p(1e300, -1e300), p(1e-300, 3e-300));
+    let k = ExactWithin::new([(h, h), (p(0.0, 0.0), t)]);
+    assert_eq!(k.two, f64::INFINITY);
+    assert_eq!(k.orient(h, t, p(0.0, 0.0)), Exact.orient(h, t, p(0.0, 0.0)));
+}
+
+/// The fixed rescaling of the out-of-line two-product path: nearly collinear,
+/// nearly parallel and nearly perpendicular calls (up to 60 ulps off) and random ones
+/// at scales whose products overflow (2^520 … 2^1020) or underflow (2^-520 … 2^-1074,
+/// subnormal), with one difference far smaller than the others in some calls (it
+/// underflows when scaled down). Whenever it decides, it is right, and it decides
+/// most random calls at these scales.
+#[test]
+fn fixed_rescale_is_exact_where_it_decides() {
+    let mut rng = SmallRng::seed_from_u64(0xf1_ed);
+    let mut decided = 0;
+    let scales = [520, 600, 900, 1000, 1020, -520, -600, -900, -1000, -1074];
+    for i in 0..20_000 {
+        let e = scales[i % scales.len()];
+        let (s1, s2) = (2f64.powi(e / 2), 2f64.powi(e - e / 2));
+        let k = rng.random_range(-60..=60);
+        let t: f64 = rng.random_range(-2.0..2.0);
+        let mut r = || Point::new(rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0));
+        let (a, b) = (r(), r());
+        let c = match i % 4 {
+            0 => Point::new(a.x + t * (b.x - a.x), ulps(a.y + t * (b.y - a.y), k)),
+            1 => Point::new(a.x + 1e-200, a.y),
+            _ => r(),
+        };
+        let d = if i % 3 == 0 {
+            Point::new(c.x - (b.y - a.y), ulps(c.y + (b.x - a.x), k))
+        } else {
+            Point::new(c.x + (b.x - a.x), ulps(c.y + (b.y - a.y), k))
+        };
+        let sc = |p: Point| Point::new(p.x * s1 * s2, p.y * s1 * s2);
+        let [a, b, c, d] = [a, b, c, d].map(sc);
+        if ![a, b, c, d].iter().all(|p| p.is_finite()) {
+            continue;
+        }
+        let cases = [
+            (
+                [a.x - c.x, a.y - c.y, b.x - c.x, b.y - c.y],
+                false,
+                sign_slow(&OrientPoly(a, b, c)),
+            ),
+            (
+                [b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y],
+                false,
+                sign_slow(&CrossPoly(a, b, c, d)),
+            ),
+            (
+                [b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y],
+                true,
+                sign_slow(&DotPoly(a, b, c, d)),
+            ),
+        ];
+        for (diffs, dot, want) in cases {
+            if let Some(s) = fixed_rescale_sign(diffs, dot) {
+                decided += 1;
+                assert_eq!(s, want, "{a:?} {b:?} {c:?} {d:?} dot: {dot}");
+            }
+        }
+        assert_eq!(Exact.orient(a, b, c), Orientation::from(cases[0].2));
+        assert_eq!(Exact.cross(a, b, c, d), Orientation::from(cases[1].2));
+        assert_eq!(Exact.dot(a, b, c, d), cases[2].2);
+    }
+    assert!(decided > 20_000, "decided {decided}");
+}
