@@ -453,8 +453,8 @@ fn run<'a, K: Kernel, P: Probe>(k: K, pv: &'a [Point], qv: &'a [Point], probe: &
     while f.edges() > 2 || g.edges() > 2 {
         probe.iteration();
         probe.kept(super::Kept::ChazelleDobkin {
-            f: super::Span::new(f.index(f.lo), f.edges() + 1),
-            g: super::Span::new(g.index(g.hi), g.edges() + 1),
+            f: super::Span::new(f.start + f.lo, f.edges() + 1),
+            g: super::Span::new(g.start + g.pts.len() - g.hi, g.edges() + 1),
             pivot: a,
             tangents: [ql, qr],
             window: [dlo, dhi],
@@ -530,13 +530,6 @@ fn run<'a, K: Kernel, P: Probe>(k: K, pv: &'a [Point], qv: &'a [Point], probe: &
             }
         }
     }
-    probe.kept(super::Kept::ChazelleDobkin {
-        f: super::Span::new(f.index(f.lo), f.edges() + 1),
-        g: super::Span::new(g.index(g.hi), g.edges() + 1),
-        pivot: a,
-        tangents: [ql, qr],
-        window: [dlo, dhi],
-    });
     let hit = finish(&fr, &f, &g, dlo, dhi);
     let tangents = [(last + 1) % m, first];
     Exit::Finish { f, g, hit, tangents }

@@ -543,9 +543,9 @@ impl<'a> PairSearch<'a> {
         probe.iteration();
         probe.kept(super::Kept::Dobkin {
             left: self.lv,
-            l: super::Span::new(self.index(Side::Left, self.i0), le + 1),
+            l: super::Span::new(self.l.start + self.i0, le + 1),
             right: self.rv,
-            r: super::Span::new(self.index(Side::Right, self.j0), re + 1),
+            r: super::Span::new(self.r.start + self.j0, re + 1),
             heights: [lo_y, hi_y],
         });
         let ke = self.i0 + le / 2; // e = (lp(ke), lp(ke + 1)), top to bottom

@@ -19,7 +19,7 @@
 //! | Barba–Langerman | main loop iteration | P' and Q' (index ranges) | T_P (inner triangle of P'), the lines of T_Q's three edges (Q''s edge hull) |
 //! | Barba–Langerman | finish against a small Q' | P' and Q''s ≤ 6 vertices | T_P |
 //! | Dobkin–Souvaine | one chain-pair search iteration | the left chain of one polygon and the right chain of the other, in the common y-interval | the interval's bounding heights |
-//! | Chazelle–Dobkin | pruning iteration, then the finish | the chains F ⊆ P and G ⊆ Q | the pivot, the pencil's tangents, the window |
+//! | Chazelle–Dobkin | pruning iteration | the chains F ⊆ P and G ⊆ Q | the pivot, the pencil's tangents, the window |
 //! | CLM | samples, each LP, each walk | — | the sample points, each LP's point sets and its separating line, each walked chain |
 //!
 //! Linear and Convert report nothing (Convert's array test runs on the walked arrays,
@@ -44,10 +44,12 @@ use crate::polygon::{ConvexPolygon, LinkedPolygon};
 use rand::Rng;
 
 /// `len` consecutive vertices of a polygon from array index `start`, wrapping past the
-/// last vertex.
+/// last vertex. The hooks may give a `start` of n or more, meaning `start` modulo n
+/// (so that the plain calls compute no remainder for them); [`Trace`]s hold starts
+/// below n.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Span {
-    /// Array index of the first vertex.
+    /// Array index of the first vertex (modulo the polygon's size).
     pub start: usize,
     /// Number of vertices.
     pub len: usize,
