@@ -30,7 +30,7 @@ pub mod http;
 pub mod protocol;
 pub mod sim;
 
-pub use contact::contact_normal;
+pub use contact::{separation_normal, witness_normal};
 pub use protocol::{Reply, Session};
 pub use sim::{Settings, Simulation};
 

@@ -9,12 +9,18 @@
 //!    first.
 //! 2. **Broad phase**: [`Scene::candidate_pairs`], the pairs whose boxes overlap (timed
 //!    on its own and reported as the candidate count).
-//! 3. **Narrow phase**: [`Scene::intersecting_pairs`], the store's own answer, planned
-//!    per pair (sampled, converted, cached) as the chosen strategy says. It flushes the
-//!    already-flushed broad phase once more; that repeat is counted in this phase.
-//! 4. **Response**: each intersecting pair whose polygons approach along the contact
-//!    normal ([`contact_normal`]) exchanges momentum along it, an elastic collision with
-//!    masses proportional to area.
+//! 3. **Narrow phase**: [`Scene::intersecting_pairs_certified`], the store's own
+//!    answer with a certificate per intersecting pair, planned per pair (sampled,
+//!    converted, cached) as the chosen strategy says. It flushes the already-flushed
+//!    broad phase once more; that repeat is counted in this phase.
+//! 4. **Response**: the candidate pairs found disjoint are asked once more, certified
+//!    ([`Scene::intersects_batch_certified`]; timed here, not counted in the frame's
+//!    queries), and each one's separating edge is kept. Each intersecting pair takes
+//!    its contact normal from the separating edge of its last disjoint frame
+//!    ([`separation_normal`]), or, when it has none (it was never seen disjoint with
+//!    overlapping boxes), from its intersection certificate ([`witness_normal`]); a
+//!    pair approaching along its normal exchanges momentum along it, an elastic
+//!    collision with masses proportional to area.
 //!
 //! # Exact positions on both sides of the wire
 //! Every coordinate in the simulation (vertices, edit targets, per-frame moves) is a
@@ -32,13 +38,14 @@
 //! [`MAX_TOTAL_VERTICES`] in all; speed in 0..=[`MAX_SPEED`]; each polygon hands out at
 //! most [`MAX_VERTEX_IDS`] vertex ids.
 
-use super::contact::contact_normal;
+use super::contact::{separation_normal, witness_normal};
+use crate::intersect::Certificate;
 use crate::kernel::{Exact, Fast, Point, Precision};
 use crate::polygon::{LinkedPolygon, VertexId, convex_hull};
 use crate::store::{PlannerStats, PolygonId, Scene, SceneError, Strategy};
 use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::f64::consts::TAU;
 use std::time::Instant;
 
@@ -237,6 +244,9 @@ pub struct Simulation {
     index: HashMap<PolygonId, usize>,
     scene: u64,
     frame: u64,
+    /// Per candidate pair `[i, j]`, `i < j`: the contact normal from `i` to `j` given by
+    /// the separating edge of the last frame that found the pair disjoint.
+    separators: HashMap<[usize; 2], [f64; 2]>,
 }
 
 impl Simulation {
@@ -253,6 +263,7 @@ impl Simulation {
             index: HashMap::new(),
             scene,
             frame: 0,
+            separators: HashMap::new(),
         };
         let mut rng = SmallRng::seed_from_u64(settings.seed);
         for (points, velocity) in generate(&settings, &mut rng) {
@@ -388,13 +399,14 @@ impl Simulation {
         }
         let t1 = Instant::now();
         let before = on_scene!(&self.store, s => s.stats());
-        let candidates = on_scene!(&mut self.store, s => s.candidate_pairs()).len();
+        let candidates = on_scene!(&mut self.store, s => s.candidate_pairs());
         let t2 = Instant::now();
-        let found = on_scene!(&mut self.store, s => s.intersecting_pairs());
-        let pairs = self.index_pairs(&found);
+        let found = on_scene!(&mut self.store, s => s.intersecting_pairs_certified());
+        let hits = self.index_certified(found);
+        let pairs: Vec<[usize; 2]> = hits.iter().map(|h| h.0).collect();
         let t3 = Instant::now();
         let after = on_scene!(&self.store, s => s.stats());
-        let normals = self.respond(&pairs, advance);
+        let normals = self.respond(&candidates, &hits, advance);
         let t4 = Instant::now();
         let stats = stats_delta(after, before);
         let ms = |a: Instant, b: Instant| (b - a).as_secs_f64() * 1e3;
@@ -405,7 +417,7 @@ impl Simulation {
             offsets: self.bodies.iter().flat_map(|b| b.offset).collect(),
             pairs,
             normals,
-            candidates,
+            candidates: candidates.len(),
             queries: stats.box_rejects + stats.array_tests + stats.sampled_tests,
             timing: Timing {
                 update_ms: ms(t0, t1),
@@ -451,20 +463,72 @@ impl Simulation {
         }
     }
 
-    /// Contact normals for `pairs`; when the frame advanced, the elastic bounce of every
-    /// pair approaching along its normal.
-    fn respond(&mut self, pairs: &[[usize; 2]], bounce: bool) -> Vec<Option<[f64; 2]>> {
-        let mut walked: HashMap<usize, Vec<Point>> = HashMap::new();
-        let mut normals = Vec::with_capacity(pairs.len());
-        for &[i, j] in pairs {
-            for k in [i, j] {
-                walked.entry(k).or_insert_with(|| {
-                    let polygon =
-                        on_scene!(&self.store, s => s.polygon(self.bodies[k].id)).expect("live polygon");
-                    polygon.iter().map(|(_, p)| p).collect()
-                });
+    /// The store's certified intersecting pairs as sorted index pairs `[i, j]`, `i < j`,
+    /// each certificate turned so that its P is polygon `i`.
+    fn index_certified(
+        &self,
+        found: Vec<(PolygonId, PolygonId, Certificate)>,
+    ) -> Vec<([usize; 2], Certificate)> {
+        let mut out: Vec<([usize; 2], Certificate)> = found
+            .into_iter()
+            .map(|(a, b, c)| {
+                let (i, j) = (self.index[&a], self.index[&b]);
+                if i < j { ([i, j], c) } else { ([j, i], c.swapped()) }
+            })
+            .collect();
+        out.sort_unstable_by_key(|h| h.0);
+        out
+    }
+
+    /// Contact normals for the intersecting pairs `hits` (module docs, "Contact
+    /// normals"); when the frame advanced, the elastic bounce of every pair approaching
+    /// along its normal. Records the separating edge of every candidate pair found
+    /// disjoint, for its next contact.
+    fn respond(
+        &mut self,
+        candidates: &[(PolygonId, PolygonId)],
+        hits: &[([usize; 2], Certificate)],
+        bounce: bool,
+    ) -> Vec<Option<[f64; 2]>> {
+        // Candidates the narrow phase found disjoint: their separating edges.
+        let hit_set: HashSet<[usize; 2]> = hits.iter().map(|h| h.0).collect();
+        let disjoint: Vec<(PolygonId, PolygonId)> = candidates
+            .iter()
+            .copied()
+            .filter(|(a, b)| {
+                let (i, j) = (self.index[a], self.index[b]);
+                !hit_set.contains(&[i.min(j), i.max(j)])
+            })
+            .collect();
+        let certificates = on_scene!(&mut self.store, s => s.intersects_batch_certified(&disjoint));
+        let mut separators = HashMap::with_capacity(disjoint.len() + hits.len());
+        for ((a, b), certificate) in disjoint.iter().zip(certificates) {
+            let (i, j) = (self.index[a], self.index[b]);
+            if let Some(n) = certificate.ok().as_ref().and_then(separation_normal) {
+                let n = if i < j { n } else { [-n[0], -n[1]] };
+                separators.insert([i.min(j), i.max(j)], n);
             }
-            let n = contact_normal(&walked[&i], &walked[&j]);
+        }
+        let mut walked: HashMap<usize, Vec<Point>> = HashMap::new();
+        let mut normals = Vec::with_capacity(hits.len());
+        for (pair, certificate) in hits {
+            let [i, j] = *pair;
+            let n = match self.separators.get(pair) {
+                Some(&n) => {
+                    separators.insert(*pair, n);
+                    Some(n)
+                }
+                None => {
+                    for k in [i, j] {
+                        walked.entry(k).or_insert_with(|| {
+                            let polygon = on_scene!(&self.store, s => s.polygon(self.bodies[k].id))
+                                .expect("live polygon");
+                            polygon.iter().map(|(_, p)| p).collect()
+                        });
+                    }
+                    witness_normal(certificate, &walked[&i], &walked[&j])
+                }
+            };
             normals.push(n);
             if let (true, Some(n)) = (bounce, n) {
                 let (a, b) = (&self.bodies[i], &self.bodies[j]);
@@ -474,6 +538,7 @@ impl Simulation {
                 }
             }
         }
+        self.separators = separators;
         normals
     }
 
