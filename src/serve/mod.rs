@@ -29,6 +29,7 @@ mod contact;
 pub mod http;
 pub mod protocol;
 pub mod sim;
+pub mod trace;
 
 pub use contact::{separation_normal, witness_normal};
 pub use protocol::{Reply, Session};

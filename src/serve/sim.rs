@@ -39,9 +39,9 @@
 //! most [`MAX_VERTEX_IDS`] vertex ids.
 
 use super::contact::{separation_normal, witness_normal};
-use crate::intersect::Certificate;
+use crate::intersect::{Algorithm, Certificate, Trace, trace_rng};
 use crate::kernel::{Exact, Fast, Point, Precision};
-use crate::polygon::{LinkedPolygon, VertexId, convex_hull};
+use crate::polygon::{ConvexPolygon, LinkedPolygon, VertexId, convex_hull};
 use crate::store::{PlannerStats, PolygonId, Scene, SceneError, Strategy};
 use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};
@@ -63,6 +63,9 @@ pub const MAX_VERTICES: usize = 65_536;
 pub const MAX_TOTAL_VERTICES: usize = 1 << 21;
 pub const MAX_SPEED: f64 = 5.0;
 pub const MAX_VERTEX_IDS: usize = 1 << 20;
+/// Step-through traces polygons of at most this many vertices (the reply carries every
+/// vertex, and each step its marks).
+pub const MAX_TRACE_VERTICES: usize = 4096;
 /// Distance per frame at speed 1, in box units (the box is 1200 wide).
 const BASE_SPEED: f64 = 1.6;
 /// The largest velocity after collisions, in box units per frame at speed 1.
@@ -540,6 +543,45 @@ impl Simulation {
         }
         self.separators = separators;
         normals
+    }
+
+    /// A trace of `algorithm` on polygons `a` (as P) and `b` (as Q) at their current
+    /// positions, under the scene's precision, with the two polygons' vertices.
+    /// Randomised algorithms draw from a generator seeded by the frame number.
+    ///
+    /// # Errors
+    /// An index out of range, `a == b`, or a polygon of more than
+    /// [`MAX_TRACE_VERTICES`] vertices.
+    pub fn trace(
+        &self,
+        a: usize,
+        b: usize,
+        algorithm: Algorithm,
+    ) -> Result<(Vec<Point>, Vec<Point>, Trace), String> {
+        if a == b {
+            return Err(format!("a trace needs two different polygons (both are {a})"));
+        }
+        let polygon = |i: usize| -> Result<ConvexPolygon, String> {
+            let body = self
+                .bodies
+                .get(i)
+                .ok_or_else(|| format!("no polygon {i} (there are {})", self.bodies.len()))?;
+            let linked = on_scene!(&self.store, s => s.polygon(body.id)).map_err(|e| e.to_string())?;
+            if linked.len() > MAX_TRACE_VERTICES {
+                return Err(format!(
+                    "polygon {i} has {} vertices; step-through traces at most {MAX_TRACE_VERTICES}",
+                    linked.len()
+                ));
+            }
+            ConvexPolygon::new(linked.iter().map(|(_, p)| p)).map_err(|e| e.to_string())
+        };
+        let (p, q) = (polygon(a)?, polygon(b)?);
+        let mut rng = SmallRng::seed_from_u64(self.frame);
+        let t = match self.settings.precision {
+            Precision::Exact => trace_rng(algorithm, Exact, &p, &q, &mut rng),
+            Precision::Fast => trace_rng(algorithm, Fast, &p, &q, &mut rng),
+        };
+        Ok((p.vertices().to_vec(), q.vertices().to_vec(), t))
     }
 
     fn body(&self, polygon: usize) -> Result<&Body, EditFailure> {
