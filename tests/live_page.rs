@@ -286,6 +286,10 @@ struct Shown {
 }
 
 /// What the page shows, once the drawn pairs account for every edit it received.
+fn t_step(b: &Browser) -> u64 {
+    b.js("return window.polysect.trace.step;").as_u64().expect("step")
+}
+
 fn shown(b: &Browser) -> Shown {
     b.wait_for("a consistent frame", "window.polysect.shown().consistent", 20);
     let v = b.js("return window.polysect.shown();");
@@ -660,6 +664,63 @@ fn live_page_in_a_browser() {
     );
     let now = assert_pairs_match_the_library(&b);
     assert_eq!(now.polygons[d], tri, "the refused drag moved nothing");
+
+    // 6b. Step-through: each algorithm's trace on a pair, stepped to its end with the
+    // page's buttons; the last step's answer and the certificate are the library's.
+    let pair = now.pairs.first().copied().unwrap_or([0, 1]);
+    for algorithm in ["barba", "dobkin", "chazelle-dobkin", "clm"] {
+        let traces = b.js("return window.polysect.traces;").as_u64().expect("count");
+        b.type_into("#traceA", &pair[0].to_string());
+        b.type_into("#traceB", &pair[1].to_string());
+        b.js(&format!(
+            "document.getElementById('traceAlgorithm').value = '{algorithm}'; return true;"
+        ));
+        b.click("#trace");
+        b.wait_for("the trace", &format!("window.polysect.traces > {traces}"), 20);
+        let t = b.js("return window.polysect.trace;");
+        assert_eq!(t["algorithm"], json!(algorithm));
+        let steps = t["steps"].as_u64().expect("steps");
+        for k in 1..steps {
+            assert_eq!(t_step(&b), k - 1);
+            b.click("#traceForward");
+        }
+        b.click("#traceBack");
+        b.click("#traceForward");
+        let t = b.js("return window.polysect.trace;");
+        assert_eq!(
+            t["step"].as_u64(),
+            Some(steps - 1),
+            "{algorithm}: stepped to the end"
+        );
+        let pts = |v: &Value| -> ConvexPolygon {
+            ConvexPolygon::new(
+                v.as_array()
+                    .expect("points")
+                    .iter()
+                    .map(|xy| Point::new(xy[0].as_f64().expect("x"), xy[1].as_f64().expect("y"))),
+            )
+            .expect("a convex polygon")
+        };
+        let (p, q) = (pts(&t["p"]), pts(&t["q"]));
+        let want = Linear.intersects(&p, &q);
+        assert_eq!(
+            t["stepAnswer"],
+            json!(want),
+            "{algorithm}: the last step's answer"
+        );
+        let certificate = polysect::certificate_json::certificate_from_json(&t["certificate"].to_string())
+            .expect("a certificate");
+        assert_eq!(
+            polysect::intersect::verify(&p, &q, &certificate),
+            Ok(()),
+            "{algorithm}"
+        );
+        assert!(
+            t["text"].as_str().expect("text").contains("certificate"),
+            "{algorithm}"
+        );
+    }
+    b.click("#traceClose");
 
     // 7. SIGTERM stops the server with status 0.
     drop(b);
