@@ -68,6 +68,7 @@ use std::str::FromStr;
 /// Receives one call per pruning iteration of an algorithm, for experiments
 /// (the thesis's iteration counts). The unit type `()` ignores them and compiles away.
 pub trait Probe {
+    /// One pruning iteration.
     #[inline]
     fn iteration(&mut self) {}
 

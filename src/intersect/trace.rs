@@ -76,28 +76,48 @@ pub enum Kept<'a> {
     /// Q). T_P is P''s vertices at positions 0, (len − 1)/2 and len − 1; T_Q's edges
     /// start at Q''s positions 0, (len − 2)/2 and len − 2. Invariant: P and Q intersect
     /// if and only if CH(P') and CH(Q') do.
-    Barba { p: Span, q: Span },
+    Barba {
+        /// P'.
+        p: Span,
+        /// Q'.
+        q: Span,
+    },
     /// Barba–Langerman's finish: P' against Q''s vertices `q` (at most six, array
     /// indices into Q; two when Q' shrank to a chord).
-    BarbaSmall { p: Span, q: &'a [usize] },
+    BarbaSmall {
+        /// P'.
+        p: Span,
+        /// Q''s vertices.
+        q: &'a [usize],
+    },
     /// Dobkin–Souvaine: one chain-pair search, the part `l` of the left chain of the
     /// polygon `left` against the part `r` of the right chain of `right`, both within
     /// the common y-interval `heights` (low, high).
     Dobkin {
+        /// The polygon of the left chain.
         left: &'a [Point],
+        /// The left chain's part in play, top to bottom.
         l: Span,
+        /// The polygon of the right chain.
         right: &'a [Point],
+        /// The right chain's part in play, bottom to top.
         r: Span,
+        /// The common y-interval: low, high.
         heights: [f64; 2],
     },
     /// Chazelle–Dobkin: the chains F (vertices `f` of P) and G (vertices `g` of Q)
     /// still in play; `pivot` is P's vertex 0, `tangents` the pencil's tangent points
     /// on Q (q_L, q_R) and `window` the directions from the pivot bounding the window.
     ChazelleDobkin {
+        /// F, a chain of P.
         f: Span,
+        /// G, a chain of Q.
         g: Span,
+        /// P's vertex 0.
         pivot: Point,
+        /// The pencil's tangent points on Q.
         tangents: [Point; 2],
+        /// Points on the window's two bounding directions from the pivot.
         window: [Point; 2],
     },
 }

@@ -83,6 +83,7 @@ impl Server {
         Ok(Server { listener, addr })
     }
 
+    /// The address it listens on (the port chosen when asked for port 0).
     pub fn local_addr(&self) -> SocketAddr {
         self.addr
     }

@@ -61,7 +61,9 @@ pub const TRACED: &[Algorithm] = &[
 /// A reply to the page.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Reply {
+    /// A JSON text message.
     Text(String),
+    /// A binary message (the scene's vertices).
     Binary(Vec<u8>),
 }
 
@@ -118,6 +120,9 @@ impl Default for Session {
 
 impl Session {
     /// A session on the default scene ([`Settings::default`]).
+    ///
+    /// # Panics
+    /// Never: the default settings are valid (a unit test builds them).
     pub fn new() -> Session {
         Session {
             sim: Simulation::new(Settings::default(), 1).expect("the default settings are valid"),
@@ -125,6 +130,7 @@ impl Session {
         }
     }
 
+    /// The session's simulation.
     pub fn simulation(&self) -> &Simulation {
         &self.sim
     }

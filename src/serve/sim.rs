@@ -56,12 +56,19 @@ pub const GRID: f64 = 1.0 / (1u64 << 36) as f64;
 /// Edit targets must lie in `[AREA_MIN, AREA_MAX]` on both axes (per axis: the box and
 /// half its size on each side).
 pub const AREA_MIN: [f64; 2] = [-0.5 * WORLD[0], -0.5 * WORLD[1]];
+/// See [`AREA_MIN`].
 pub const AREA_MAX: [f64; 2] = [1.5 * WORLD[0], 1.5 * WORLD[1]];
+/// The most polygons in a scene.
 pub const MAX_POLYGONS: usize = 1000;
+/// The fewest vertices per polygon.
 pub const MIN_VERTICES: usize = 3;
+/// The most vertices per polygon.
 pub const MAX_VERTICES: usize = 65_536;
+/// The most vertices in a scene.
 pub const MAX_TOTAL_VERTICES: usize = 1 << 21;
+/// The largest speed setting.
 pub const MAX_SPEED: f64 = 5.0;
+/// The most vertex ids one polygon hands out (insertions take new ids).
 pub const MAX_VERTEX_IDS: usize = 1 << 20;
 /// Step-through traces polygons of at most this many vertices (the reply carries every
 /// vertex, and each step its marks).
@@ -81,12 +88,19 @@ pub fn snap(x: f64) -> f64 {
 /// What the page controls.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Settings {
+    /// Number of polygons.
     pub polygons: usize,
+    /// Vertices per polygon.
     pub vertices: usize,
+    /// Seed of the scene's shapes, positions and velocities.
     pub seed: u64,
+    /// How the store answers a pair.
     pub strategy: Strategy,
+    /// The kernel of the store's queries.
     pub precision: Precision,
+    /// Multiplies every velocity.
     pub speed: f64,
+    /// Whether frames leave the polygons in place.
     pub paused: bool,
 }
 
@@ -184,16 +198,22 @@ struct Body {
 /// Milliseconds spent in each part of a frame on the server.
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
 pub struct Timing {
+    /// Moving the polygons.
     pub update_ms: f64,
+    /// The broad phase (candidate pairs).
     pub broad_ms: f64,
+    /// The narrow phase (intersecting pairs with certificates).
     pub narrow_ms: f64,
+    /// Contact normals and bounces (with the certified queries on disjoint candidates).
     pub response_ms: f64,
 }
 
 /// What one frame changed, for the page.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Frame {
+    /// The scene's number.
     pub scene: u64,
+    /// Frames advanced since the scene started.
     pub frame: u64,
     /// Whether the polygons moved (false while paused).
     pub advanced: bool,
@@ -207,6 +227,7 @@ pub struct Frame {
     pub candidates: usize,
     /// Queries the store answered in this frame (box rejects included).
     pub queries: u64,
+    /// Server time per part of the frame.
     pub timing: Timing,
     /// What the planner did in this frame.
     pub stats: PlannerStats,
@@ -218,12 +239,16 @@ pub struct Frame {
 /// position minus the polygon's offset).
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Edit {
+    /// The polygon's index.
     pub polygon: usize,
     /// `move`, `insert` or `remove`.
     pub kind: &'static str,
+    /// The wire id of the vertex moved, inserted or removed.
     pub vertex: u32,
+    /// For an insertion: the wire id of the vertex it follows.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub after: Option<u32>,
+    /// For a move or an insertion: the vertex's new base point.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub point: Option<[f64; 2]>,
 }
@@ -290,22 +315,27 @@ impl Simulation {
         Ok(sim)
     }
 
+    /// The settings in force.
     pub fn settings(&self) -> Settings {
         self.settings
     }
 
+    /// The scene's number.
     pub fn scene(&self) -> u64 {
         self.scene
     }
 
+    /// Frames advanced since the scene started.
     pub fn frame_number(&self) -> u64 {
         self.frame
     }
 
+    /// Number of polygons.
     pub fn len(&self) -> usize {
         self.bodies.len()
     }
 
+    /// Whether the scene has no polygons.
     pub fn is_empty(&self) -> bool {
         self.bodies.is_empty()
     }
@@ -710,6 +740,9 @@ impl Simulation {
 
     /// Checks that every store vertex is its base vertex plus the offset and lies on the
     /// grid (the module docs' claim), and the store's own invariants.
+    ///
+    /// # Errors
+    /// The first violation found, described.
     pub fn debug_validate(&self, base: &[f64]) -> Result<(), String> {
         on_scene!(&self.store, s => s.debug_validate())?;
         let mut k = 0;
