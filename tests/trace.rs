@@ -8,10 +8,8 @@
 //!
 //! `POLYSECT_TRACE_PAIRS` scales the number of pairs per family (default 100).
 
-use polysect::fuzzing::Decoder;
 use polysect::generate::{self, Family, Relation};
 use polysect::intersect::{Algorithm, Role, Shape, Span, Trace, trace_rng, verify};
-use polysect::polygon::convex_hull;
 use polysect::{ConvexPolygon, Exact};
 use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};
@@ -110,8 +108,12 @@ fn traces_end_in_the_certified_answer_on_every_family() {
     assert!(steps > 0);
 }
 
+/// (The fuzz decoder is built with the `protocol` feature.)
+#[cfg(feature = "protocol")]
 #[test]
 fn traces_end_in_the_certified_answer_on_arbitrary_hulls() {
+    use polysect::fuzzing::Decoder;
+    use polysect::polygon::convex_hull;
     // The fuzz driver's inputs: random bytes decoded into points, their hulls.
     let mut tested = 0;
     for seed in 0..pairs_per_family() as u64 * 20 {
