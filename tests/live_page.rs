@@ -816,10 +816,10 @@ fn live_page_fps() {
     }
 }
 
-/// Takes the pictures of docs/live.md (docs/img/live_simulation.png and
-/// docs/img/live_editing.png): the default scene paused on collisions, then a scene in
-/// editing: a dragged vertex, an inserted one, a refused drag and its reason, the
-/// pointer over a vertex.
+/// Takes the pictures of docs/live.md (docs/img/live_simulation.png,
+/// docs/img/live_editing.png and docs/img/live_trace.png): the default scene paused on
+/// collisions, then a scene in editing: a dragged vertex, an inserted one, a refused
+/// drag and its reason, the pointer over a vertex; then a step of a trace.
 #[test]
 #[ignore = "writes docs/img; needs chromium and chromium-driver; run by hand"]
 fn live_page_screenshots() {
@@ -876,4 +876,29 @@ fn live_page_screenshots() {
     );
     std::thread::sleep(Duration::from_millis(400));
     std::fs::write(out.join("live_editing.png"), b.screenshot()).expect("written");
+
+    // The step-through: Barba–Langerman on the two closest untouched polygons, a
+    // middle step.
+    let c: Vec<Point> = s.polygons.iter().map(|p| centroid(p)).collect();
+    let n = c.len();
+    let (i, j) = (3..n)
+        .flat_map(|i| (i + 1..n).map(move |j| (i, j)))
+        .min_by(|&(a, b), &(x, y)| {
+            let d = |u: usize, v: usize| (c[u].x - c[v].x).hypot(c[u].y - c[v].y);
+            d(a, b).total_cmp(&d(x, y))
+        })
+        .expect("a pair");
+    b.type_into("#traceA", &i.to_string());
+    b.type_into("#traceB", &j.to_string());
+    b.click("#trace");
+    b.wait_for("the trace", "window.polysect.traces > 0", 20);
+    let steps = b
+        .js("return window.polysect.trace.steps;")
+        .as_u64()
+        .expect("steps");
+    for _ in 0..steps / 2 {
+        b.click("#traceForward");
+    }
+    std::thread::sleep(Duration::from_millis(400));
+    std::fs::write(out.join("live_trace.png"), b.screenshot()).expect("written");
 }
