@@ -286,6 +286,10 @@ struct Shown {
 }
 
 /// What the page shows, once the drawn pairs account for every edit it received.
+fn t_step(b: &Browser) -> u64 {
+    b.js("return window.polysect.trace.step;").as_u64().expect("step")
+}
+
 fn shown(b: &Browser) -> Shown {
     b.wait_for("a consistent frame", "window.polysect.shown().consistent", 20);
     let v = b.js("return window.polysect.shown();");
@@ -661,6 +665,63 @@ fn live_page_in_a_browser() {
     let now = assert_pairs_match_the_library(&b);
     assert_eq!(now.polygons[d], tri, "the refused drag moved nothing");
 
+    // 6b. Step-through: each algorithm's trace on a pair, stepped to its end with the
+    // page's buttons; the last step's answer and the certificate are the library's.
+    let pair = now.pairs.first().copied().unwrap_or([0, 1]);
+    for algorithm in ["barba", "dobkin", "chazelle-dobkin", "clm"] {
+        let traces = b.js("return window.polysect.traces;").as_u64().expect("count");
+        b.type_into("#traceA", &pair[0].to_string());
+        b.type_into("#traceB", &pair[1].to_string());
+        b.js(&format!(
+            "document.getElementById('traceAlgorithm').value = '{algorithm}'; return true;"
+        ));
+        b.click("#trace");
+        b.wait_for("the trace", &format!("window.polysect.traces > {traces}"), 20);
+        let t = b.js("return window.polysect.trace;");
+        assert_eq!(t["algorithm"], json!(algorithm));
+        let steps = t["steps"].as_u64().expect("steps");
+        for k in 1..steps {
+            assert_eq!(t_step(&b), k - 1);
+            b.click("#traceForward");
+        }
+        b.click("#traceBack");
+        b.click("#traceForward");
+        let t = b.js("return window.polysect.trace;");
+        assert_eq!(
+            t["step"].as_u64(),
+            Some(steps - 1),
+            "{algorithm}: stepped to the end"
+        );
+        let pts = |v: &Value| -> ConvexPolygon {
+            ConvexPolygon::new(
+                v.as_array()
+                    .expect("points")
+                    .iter()
+                    .map(|xy| Point::new(xy[0].as_f64().expect("x"), xy[1].as_f64().expect("y"))),
+            )
+            .expect("a convex polygon")
+        };
+        let (p, q) = (pts(&t["p"]), pts(&t["q"]));
+        let want = Linear.intersects(&p, &q);
+        assert_eq!(
+            t["stepAnswer"],
+            json!(want),
+            "{algorithm}: the last step's answer"
+        );
+        let certificate = polysect::certificate_json::certificate_from_json(&t["certificate"].to_string())
+            .expect("a certificate");
+        assert_eq!(
+            polysect::intersect::verify(&p, &q, &certificate),
+            Ok(()),
+            "{algorithm}"
+        );
+        assert!(
+            t["text"].as_str().expect("text").contains("certificate"),
+            "{algorithm}"
+        );
+    }
+    b.click("#traceClose");
+
     // 7. SIGTERM stops the server with status 0.
     drop(b);
     let pid = server.0.id().to_string();
@@ -755,10 +816,10 @@ fn live_page_fps() {
     }
 }
 
-/// Takes the pictures of docs/live.md (docs/img/live_simulation.png and
-/// docs/img/live_editing.png): the default scene paused on collisions, then a scene in
-/// editing: a dragged vertex, an inserted one, a refused drag and its reason, the
-/// pointer over a vertex.
+/// Takes the pictures of docs/live.md (docs/img/live_simulation.png,
+/// docs/img/live_editing.png and docs/img/live_trace.png): the default scene paused on
+/// collisions, then a scene in editing: a dragged vertex, an inserted one, a refused
+/// drag and its reason, the pointer over a vertex; then a step of a trace.
 #[test]
 #[ignore = "writes docs/img; needs chromium and chromium-driver; run by hand"]
 fn live_page_screenshots() {
@@ -815,4 +876,29 @@ fn live_page_screenshots() {
     );
     std::thread::sleep(Duration::from_millis(400));
     std::fs::write(out.join("live_editing.png"), b.screenshot()).expect("written");
+
+    // The step-through: Barba–Langerman on the two closest untouched polygons, a
+    // middle step.
+    let c: Vec<Point> = s.polygons.iter().map(|p| centroid(p)).collect();
+    let n = c.len();
+    let (i, j) = (3..n)
+        .flat_map(|i| (i + 1..n).map(move |j| (i, j)))
+        .min_by(|&(a, b), &(x, y)| {
+            let d = |u: usize, v: usize| (c[u].x - c[v].x).hypot(c[u].y - c[v].y);
+            d(a, b).total_cmp(&d(x, y))
+        })
+        .expect("a pair");
+    b.type_into("#traceA", &i.to_string());
+    b.type_into("#traceB", &j.to_string());
+    b.click("#trace");
+    b.wait_for("the trace", "window.polysect.traces > 0", 20);
+    let steps = b
+        .js("return window.polysect.trace.steps;")
+        .as_u64()
+        .expect("steps");
+    for _ in 0..steps / 2 {
+        b.click("#traceForward");
+    }
+    std::thread::sleep(Duration::from_millis(400));
+    std::fs::write(out.join("live_trace.png"), b.screenshot()).expect("written");
 }

@@ -48,6 +48,7 @@ mod trade;
 
 pub use query::{Kernels, PreparedPair};
 pub use thesis::ThesisConfig;
+pub use thesis_figures::{TRACE_FIGURES, trace_svg, write_trace_figures};
 pub use trade::needle_pair;
 
 use indicatif::{ProgressBar, ProgressStyle};

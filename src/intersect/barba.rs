@@ -366,6 +366,10 @@ fn run<K: Kernel, P: Probe, M: Mode>(k: K, pv: &[Point], qv: &[Point], probe: &m
             return against_small::<K, P, M>(k, pv, pr, qv, qs, probe);
         }
         probe.iteration();
+        probe.kept(super::Kept::Barba {
+            p: super::Span::new(pr.start, pr.len),
+            q: super::Span::new(qr.start, qr.len),
+        });
         let decision = step(k, pv, pr, qv, qr, &mut cache);
         let (n, m) = (pv.len(), qv.len());
         let (tp, ep) = (t_positions(pr), e_positions(qr));
@@ -603,6 +607,10 @@ fn against_small<K: Kernel, P: Probe, M: Mode>(
     let n = pv.len();
     loop {
         probe.iteration();
+        probe.kept(super::Kept::BarbaSmall {
+            p: super::Span::new(pr.start, pr.len),
+            q: &idx[..len],
+        });
         let mid = pr.mid();
         let t = [pr.at(pv, 0), pr.at(pv, mid), pr.at(pv, pr.len - 1)];
         let Some(axis) = separating_axis(k, &t, qs) else {

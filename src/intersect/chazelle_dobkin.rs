@@ -454,6 +454,13 @@ fn run<'a, K: Kernel, P: Probe>(k: K, pv: &'a [Point], qv: &'a [Point], probe: &
 
     while f.edges() > 2 || g.edges() > 2 {
         probe.iteration();
+        probe.kept(super::Kept::ChazelleDobkin {
+            f: super::Span::new(f.start + f.lo, f.edges() + 1),
+            g: super::Span::new(g.start + g.pts.len() - g.hi, g.edges() + 1),
+            pivot: a,
+            tangents: [ql, qr],
+            window: [dlo, dhi],
+        });
         // Case 1: a middle edge entirely outside the window.
         if f.edges() > 2 {
             let i = f.middle();

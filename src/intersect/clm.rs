@@ -362,7 +362,7 @@ fn counted_lp<K: Kernel, R: Rng + ?Sized, P: Probe>(
 ) -> Result<Separation, LpError> {
     let before = lp.work;
     let result = separating_line(k, a, b, rng, lp);
-    probe.lp_call(a.positions.len() + b.positions.len(), lp.work - before);
+    probe.lp_call(a, b, lp.work - before, &result);
     result
 }
 
@@ -385,7 +385,6 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     ws.rq.clear();
     sample(p, sample_size(c, p.len()), rng, &mut ws.sample, &mut ws.rp);
     sample(q, sample_size(c, q.len()), rng, &mut ws.sample, &mut ws.rq);
-    probe.samples(ws.rp.len(), ws.rq.len());
     let rp = ArenaPoints {
         polygon: p,
         positions: &ws.rp,
@@ -394,6 +393,7 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         polygon: q,
         positions: &ws.rq,
     };
+    probe.samples(&rp, &rq);
     let t = match counted_lp(k, &rp, &rq, rng, &mut ws.lp, probe) {
         Ok(Separation::Separated(t)) => t,
         // Samples are never empty (polygons have ≥ 3 vertices), so only a real
@@ -422,8 +422,14 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         &mut ws.cq,
     );
     ws.walked += (ws.cp.len() + ws.cq.len()) as u64;
-    probe.chain_walk(ws.cp.len());
-    probe.chain_walk(ws.cq.len());
+    probe.chain_walk(&ArenaPoints {
+        polygon: p,
+        positions: &ws.cp,
+    });
+    probe.chain_walk(&ArenaPoints {
+        polygon: q,
+        positions: &ws.cq,
+    });
     let ClmWorkspace {
         rp,
         rq,
@@ -493,10 +499,16 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     );
     *walked += (chain.len() + chain2.len()) as u64;
     if p_open {
-        probe.chain_walk(chain.len());
+        probe.chain_walk(&ArenaPoints {
+            polygon: p,
+            positions: chain,
+        });
     }
     if q_open {
-        probe.chain_walk(chain2.len());
+        probe.chain_walk(&ArenaPoints {
+            polygon: q,
+            positions: chain2,
+        });
     }
     let mut meets = |near: &[u32],
                      x: &LinkedPolygon,

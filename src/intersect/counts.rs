@@ -9,6 +9,7 @@
 //! query separately.
 
 use super::Probe;
+use crate::lp::{ArenaPoints, LpError, Separation};
 
 /// One LP call of a CLM query.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -93,17 +94,24 @@ impl Probe for Counts {
         self.iterations += 1;
     }
 
-    fn samples(&mut self, p: usize, q: usize) {
-        self.samples_p += p;
-        self.samples_q += q;
+    fn samples(&mut self, p: &ArenaPoints<'_>, q: &ArenaPoints<'_>) {
+        self.samples_p += p.positions.len();
+        self.samples_q += q.positions.len();
     }
 
-    fn lp_call(&mut self, constraints: usize, work: u64) {
+    fn lp_call(
+        &mut self,
+        a: &ArenaPoints<'_>,
+        b: &ArenaPoints<'_>,
+        work: u64,
+        _: &Result<Separation, LpError>,
+    ) {
+        let constraints = a.positions.len() + b.positions.len();
         self.lps.push(LpCall { constraints, work });
     }
 
-    fn chain_walk(&mut self, vertices: usize) {
-        self.walks.push(vertices);
+    fn chain_walk(&mut self, chain: &ArenaPoints<'_>) {
+        self.walks.push(chain.positions.len());
     }
 }
 

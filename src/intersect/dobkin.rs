@@ -543,6 +543,13 @@ impl<'a> PairSearch<'a> {
             return Some(self.at_both_ends(k));
         }
         probe.iteration();
+        probe.kept(super::Kept::Dobkin {
+            left: self.lv,
+            l: super::Span::new(self.l.start + self.i0, le + 1),
+            right: self.rv,
+            r: super::Span::new(self.r.start + self.j0, re + 1),
+            heights: [lo_y, hi_y],
+        });
         let ke = self.i0 + le / 2; // e = (lp(ke), lp(ke + 1)), top to bottom
         let kf = self.j0 + re / 2; // f = (rp(kf), rp(kf + 1)), bottom to top
         let (e_top, e_bot) = (self.lp(ke), self.lp(ke + 1));

@@ -43,6 +43,7 @@ mod fallback;
 mod linear;
 mod linear_linked;
 mod linked;
+mod trace;
 
 pub use barba::Barba;
 pub use certificate::{Certificate, CertificateError, Derivation, Which, verify, verify_linked};
@@ -55,8 +56,10 @@ pub use linear::{Linear, brute_force};
 pub use linear_linked::LinearLinked;
 pub(crate) use linked::fresh_rng;
 pub use linked::{Convert, ConvertWorkspace, LinkedIntersection};
+pub use trace::{Kept, Mark, Role, Shape, Span, Trace, TraceStep, Tracer, trace, trace_rng};
 
 use crate::kernel::{Exact, Fast, Kernel, Precision};
+use crate::lp::{ArenaPoints, LpError, Separation};
 use crate::polygon::ConvexPolygon;
 use rand::Rng;
 use std::fmt;
@@ -75,18 +78,32 @@ pub trait Probe {
     #[inline]
     fn fallback(&mut self, _kind: Fallback) {}
 
-    /// [`Clm`] drew samples of `p` and `q` vertices (once per query).
+    /// [`Clm`] drew its samples `p` and `q` (once per query).
     #[inline]
-    fn samples(&mut self, _p: usize, _q: usize) {}
+    fn samples(&mut self, _p: &ArenaPoints<'_>, _q: &ArenaPoints<'_>) {}
 
-    /// [`Clm`] ran one LP on `constraints` points (both sets), which examined `work`
-    /// of them (violation tests, one-dimensional steps, certification).
+    /// [`Clm`] ran one LP on the point sets `a` and `b` (its constraints), which
+    /// examined `work` points (violation tests, one-dimensional steps, certification)
+    /// and returned `result`.
     #[inline]
-    fn lp_call(&mut self, _constraints: usize, _work: u64) {}
+    fn lp_call(
+        &mut self,
+        _a: &ArenaPoints<'_>,
+        _b: &ArenaPoints<'_>,
+        _work: u64,
+        _result: &Result<Separation, LpError>,
+    ) {
+    }
 
-    /// [`Clm`] walked one chain of `vertices` vertices (a step per vertex collected).
+    /// [`Clm`] walked one chain (a step per vertex collected).
     #[inline]
-    fn chain_walk(&mut self, _vertices: usize) {}
+    fn chain_walk(&mut self, _chain: &ArenaPoints<'_>) {}
+
+    /// One pruning step of [`Barba`], [`Dobkin`] or [`ChazelleDobkin`] is about to
+    /// decide: what the algorithm keeps at this point ([`Kept`]). [`Tracer`] records
+    /// these as a [`Trace`].
+    #[inline]
+    fn kept(&mut self, _kept: Kept<'_>) {}
 }
 
 /// How a certified call completed an answer its algorithm did not certify.

@@ -1,168 +1,167 @@
-//! The contact normal of a colliding pair, for the elastic bounce: the one function the
-//! certificate-based normal (the separating edge of the last disjoint frame, or the
-//! contact witness) will replace.
+//! The contact normal of a colliding pair, for the elastic bounce, taken from the
+//! store's certificates (docs/live.md, "The contact normal").
 //!
-//! Today it is the **minimum-overlap axis** of the separating-axis theorem: among the
-//! outward edge normals of both polygons, the one along which the two polygons' extents
-//! overlap least. For two convex polygons that intersect this is the direction of the
-//! shortest translation that separates them (the penetration direction); for disjoint
-//! ones it is the axis of largest gap. The answer is oriented from `a` towards `b`.
+//! * **From the last disjoint frame**: while a pair's boxes overlap and the polygons do
+//!   not, the store's certificate is a separating edge ([`Certificate::Separated`]);
+//!   its outward unit normal, oriented from `a` towards `b`, is the direction in which
+//!   the two meet: [`separation_normal`].
+//! * **From the contact witness**, when the pair was never seen disjoint with
+//!   overlapping boxes (placed or edited into contact): [`witness_normal`]. For a
+//!   vertex of one polygon inside the other, the outward normal of the other polygon's
+//!   edge nearest that vertex; for two crossing edges, the difference of their outward
+//!   normals (each edge pushes the other polygon out along its own normal).
+//!
+//! Both are oriented from `a` (the certificate's P) towards `b`.
 //!
 //! # Complexity
-//! O(n + m) for polygons of n and m vertices: as the edges of one polygon are walked
-//! counter-clockwise their outward normals turn monotonically, so the other polygon's
-//! extreme vertex along each normal moves monotonically too (a rotating two-pointer
-//! walk); each polygon's edges are walked once against the other. Both polygons must be
-//! given as arrays, so the caller walks linked polygons first, O(n + m) as well: this is
-//! response, not detection, and runs only on pairs the store reported as intersecting.
+//! O(1) from a separating edge; O(m) for a vertex witness (the nearest edge of the
+//! other polygon, whose vertices the caller walked), O(1) for crossing edges.
 //!
 //! # Precision
 //! Plain floating point: a normal is a direction for the physics, not a predicate, and
-//! nothing is decided from it. On nearly parallel edges rounding can make the extreme
-//! vertex walk stop one step early; the overlap found is then within rounding of the
-//! minimum.
+//! nothing is decided from it. `None` where the edges are degenerate (zero or
+//! non-finite length) or the two normals of crossing edges cancel.
 
+use crate::intersect::{Certificate, Which};
 use crate::kernel::Point;
 
-/// The unit contact normal pointing from `a` towards `b`, or `None` when either slice
-/// has fewer than 3 points or every edge is degenerate. Both slices are convex polygons,
-/// counter-clockwise, without repeated vertices.
-///
-/// ```
-/// use polysect::serve::contact_normal;
-/// use polysect::Point;
-/// let square = |x: f64, y: f64| [(x, y), (x + 2.0, y), (x + 2.0, y + 2.0), (x, y + 2.0)]
-///     .map(|(x, y)| Point::new(x, y));
-/// // b overlaps a by 0.5 along x and 1.5 along y: the normal is +x.
-/// let n = contact_normal(&square(0.0, 0.0), &square(1.5, 0.5)).unwrap();
-/// assert_eq!(n, [1.0, 0.0]);
-/// ```
-pub fn contact_normal(a: &[Point], b: &[Point]) -> Option<[f64; 2]> {
-    if a.len() < 3 || b.len() < 3 {
-        return None;
-    }
-    // Along a's normals b lies beyond: the direction from a to b is +u.
-    let from_a = least_overlap(a, b);
-    // Along b's normals a lies beyond: the direction from a to b is -u.
-    let from_b = least_overlap(b, a).map(|(o, u)| (o, [-u[0], -u[1]]));
-    let best = match (from_a, from_b) {
-        (Some(x), Some(y)) => {
-            if y.0 < x.0 {
-                y
-            } else {
-                x
-            }
-        }
-        (x, y) => x.or(y)?,
-    };
-    Some(best.1)
+/// The outward unit normal of the counter-clockwise edge `from` → `to` (the edge
+/// turned clockwise), or `None` for a degenerate edge.
+fn outward(from: Point, to: Point) -> Option<[f64; 2]> {
+    let (dx, dy) = (to.x - from.x, to.y - from.y);
+    let len = dx.hypot(dy);
+    (len > 0.0 && len.is_finite()).then(|| [dy / len, -dx / len])
 }
 
-/// Over the edges of `p`: the least overlap of `p` and `q` along an outward unit normal
-/// of `p` (negative: a gap), with that normal.
-fn least_overlap(p: &[Point], q: &[Point]) -> Option<(f64, [f64; 2])> {
-    let (n, m) = (p.len(), q.len());
-    let dot = |u: [f64; 2], v: Point| u[0] * v.x + u[1] * v.y;
-    let mut best: Option<(f64, [f64; 2])> = None;
-    let mut j = usize::MAX;
-    let mut steps = 0usize;
-    for i in 0..n {
-        let (s, e) = (p[i], p[(i + 1) % n]);
-        let (dx, dy) = (e.x - s.x, e.y - s.y);
-        let len = dx.hypot(dy);
-        if len == 0.0 || !len.is_finite() {
-            continue;
+fn unit(v: [f64; 2]) -> Option<[f64; 2]> {
+    let len = v[0].hypot(v[1]);
+    (len > 0.0 && len.is_finite()).then(|| [v[0] / len, v[1] / len])
+}
+
+fn neg(v: [f64; 2]) -> [f64; 2] {
+    [-v[0], -v[1]]
+}
+
+/// The unit normal from `a` (the certificate's P) towards `b` given by a separating
+/// edge, or `None` for another certificate or a degenerate edge.
+///
+/// ```
+/// use polysect::intersect::{Certificate, Which};
+/// use polysect::serve::separation_normal;
+/// use polysect::Point;
+/// // Q's edge (2, 2) → (2, 0), counter-clockwise: Q lies on its +x side, P on its
+/// // outer side (-x), so the normal from P towards Q is +x.
+/// let c = Certificate::Separated { of: Which::Q, from: Point::new(2.0, 2.0), to: Point::new(2.0, 0.0) };
+/// assert_eq!(separation_normal(&c), Some([1.0, 0.0]));
+/// ```
+pub fn separation_normal(certificate: &Certificate) -> Option<[f64; 2]> {
+    match *certificate {
+        Certificate::Separated { of, from, to } => {
+            let u = outward(from, to)?;
+            Some(if of == Which::P { u } else { neg(u) })
         }
-        // Counter-clockwise boundary: the outward normal is the edge turned clockwise.
-        let u = [dy / len, -dx / len];
-        if j == usize::MAX {
-            j = (0..m)
-                .min_by(|&x, &y| dot(u, q[x]).total_cmp(&dot(u, q[y])))
-                .expect("q has vertices");
-        } else {
-            // The minimising vertex of q moves counter-clockwise as u turns; the step
-            // budget keeps rounding noise from looping.
-            while steps < 2 * (n + m) && dot(u, q[(j + 1) % m]) < dot(u, q[j]) {
-                j = (j + 1) % m;
-                steps += 1;
-            }
+        _ => None,
+    }
+}
+
+/// The unit normal from `a` towards `b` given by an intersection witness (module docs),
+/// with `a` and `b` the two polygons' vertices, counter-clockwise; `None` for a
+/// separating certificate or a degenerate witness.
+pub fn witness_normal(certificate: &Certificate, a: &[Point], b: &[Point]) -> Option<[f64; 2]> {
+    match *certificate {
+        Certificate::Separated { .. } => None,
+        Certificate::VertexInside { of, point } => {
+            let other = if of == Which::P { b } else { a };
+            let u = nearest_edge_normal(other, point)?;
+            // The other polygon's edge pushes the vertex out along u.
+            Some(if of == Which::P { neg(u) } else { u })
         }
-        let overlap = dot(u, s) - dot(u, q[j]);
-        if best.is_none_or(|(o, _)| overlap < o) {
-            best = Some((overlap, u));
+        Certificate::CrossingEdges { p, q } => {
+            let (up, uq) = (outward(p[0], p[1])?, outward(q[0], q[1])?);
+            unit([up[0] - uq[0], up[1] - uq[1]])
         }
     }
-    best
+}
+
+/// The outward unit normal of the edge of `poly` nearest `x` (a point inside it).
+fn nearest_edge_normal(poly: &[Point], x: Point) -> Option<[f64; 2]> {
+    let n = poly.len();
+    (0..n)
+        .filter_map(|i| {
+            let (s, e) = (poly[i], poly[(i + 1) % n]);
+            let u = outward(s, e)?;
+            // Distance from x to the edge's line (x is inside: the line's distance).
+            let d = (u[0] * (s.x - x.x) + u[1] * (s.y - x.y)).abs();
+            Some((d, u))
+        })
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(_, u)| u)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::generate::{Density, ellipse_polygon};
-    use rand::SeedableRng;
-    use rand::rngs::SmallRng;
 
-    /// The least overlap over every edge normal of both polygons, by brute force.
-    fn brute(a: &[Point], b: &[Point]) -> f64 {
-        let mut best = f64::INFINITY;
-        for (p, q) in [(a, b), (b, a)] {
-            for i in 0..p.len() {
-                let (s, e) = (p[i], p[(i + 1) % p.len()]);
-                let len = (e.x - s.x).hypot(e.y - s.y);
-                let u = [(e.y - s.y) / len, -(e.x - s.x) / len];
-                best = best.min(overlap_along(p, q, u));
-            }
-        }
-        best
-    }
-
-    /// max over p of u·x minus min over q of u·x.
-    fn overlap_along(p: &[Point], q: &[Point], u: [f64; 2]) -> f64 {
-        let d = |v: &Point| u[0] * v.x + u[1] * v.y;
-        let hi = p.iter().map(d).fold(f64::NEG_INFINITY, f64::max);
-        let lo = q.iter().map(d).fold(f64::INFINITY, f64::min);
-        hi - lo
+    fn square(x: f64, y: f64) -> Vec<Point> {
+        [(x, y), (x + 2.0, y), (x + 2.0, y + 2.0), (x, y + 2.0)]
+            .map(|(x, y)| Point::new(x, y))
+            .to_vec()
     }
 
     #[test]
-    fn squares_give_the_axis_of_least_overlap_from_a_to_b() {
-        let sq = |x: f64, y: f64| {
-            [(x, y), (x + 2.0, y), (x + 2.0, y + 2.0), (x, y + 2.0)].map(|(x, y)| Point::new(x, y))
+    fn separating_edges_give_their_outward_normal_from_a_to_b() {
+        let (a, b) = (square(0.0, 0.0), square(3.0, 0.5));
+        // a's right edge separates: from a towards b is +x.
+        let c = Certificate::Separated {
+            of: Which::P,
+            from: a[1],
+            to: a[2],
         };
-        assert_eq!(contact_normal(&sq(0.0, 0.0), &sq(1.5, 0.5)), Some([1.0, 0.0]));
-        assert_eq!(contact_normal(&sq(0.0, 0.0), &sq(-1.5, 0.5)), Some([-1.0, 0.0]));
-        assert_eq!(contact_normal(&sq(0.0, 0.0), &sq(0.2, 1.8)), Some([0.0, 1.0]));
-        assert_eq!(contact_normal(&sq(0.0, 0.0), &sq(0.2, -1.8)), Some([0.0, -1.0]));
-        // Disjoint: the axis of the largest gap, still from a to b.
-        assert_eq!(contact_normal(&sq(0.0, 0.0), &sq(5.0, 0.5)), Some([1.0, 0.0]));
+        assert_eq!(separation_normal(&c), Some([1.0, 0.0]));
+        // b's left edge (3, 2.5) → (3, 0.5): its outer side is -x, the normal from a to b +x.
+        let c = Certificate::Separated {
+            of: Which::Q,
+            from: b[3],
+            to: b[0],
+        };
+        assert_eq!(separation_normal(&c), Some([1.0, 0.0]));
+        assert_eq!(witness_normal(&c, &a, &b), None);
+        let degenerate = Certificate::Separated {
+            of: Which::P,
+            from: a[0],
+            to: a[0],
+        };
+        assert_eq!(separation_normal(&degenerate), None);
     }
 
     #[test]
-    fn degenerate_input_gives_none() {
-        let tri = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]].map(Point::from);
-        assert_eq!(contact_normal(&tri[..2], &tri), None);
-        assert_eq!(contact_normal(&tri, &[]), None);
-    }
-
-    /// The two-pointer walk finds the same least overlap as trying every normal against
-    /// every vertex, on random ellipse polygons at every relative position, and the
-    /// normal it returns achieves it and points from a to b.
-    #[test]
-    fn walk_matches_brute_force_on_random_polygons() {
-        let mut rng = SmallRng::seed_from_u64(0xc0_47ac7);
-        for case in 0..600 {
-            let n = [3, 4, 7, 16, 64, 300][case % 6];
-            let m = [3, 5, 9, 33, 128][case % 5];
-            let a = ellipse_polygon(&mut rng, n, &Density::Uniform, true).into_vertices();
-            let b = ellipse_polygon(&mut rng, m, &Density::Uniform, true).into_vertices();
-            let got = contact_normal(&a, &b).expect("valid polygons");
-            let want = brute(&a, &b);
-            let achieved = overlap_along(&a, &b, got);
-            assert!(
-                (achieved - want).abs() <= 1e-9,
-                "case {case}: normal {got:?} overlaps {achieved}, least overlap {want}"
-            );
-            assert!((got[0].hypot(got[1]) - 1.0).abs() < 1e-12, "unit length");
-        }
+    fn witnesses_give_the_nearest_edge_or_the_crossing_edges_normals() {
+        let (a, b) = (square(0.0, 0.0), square(1.8, 0.5));
+        // b's vertex (1.8, 0.5) lies in a, nearest a's right edge: from a to b is +x.
+        let c = Certificate::VertexInside {
+            of: Which::Q,
+            point: b[0],
+        };
+        assert_eq!(witness_normal(&c, &a, &b), Some([1.0, 0.0]));
+        // a's vertex (2, 2) lies in b, nearest b's left edge (outward -x): +x again.
+        let c = Certificate::VertexInside {
+            of: Which::P,
+            point: a[2],
+        };
+        assert_eq!(witness_normal(&c, &a, &b), Some([1.0, 0.0]));
+        // a's top edge crosses b's left edge: the normals (0, 1) and (-1, 0) give (1, 1)/√2.
+        let c = Certificate::CrossingEdges {
+            p: [a[2], a[3]],
+            q: [b[3], b[0]],
+        };
+        let n = witness_normal(&c, &a, &b).unwrap();
+        assert!((n[0] - n[1]).abs() < 1e-15 && n[0] > 0.0);
+        assert_eq!(separation_normal(&c), None);
+        // Parallel edges of the same direction cancel: no normal.
+        let c = Certificate::CrossingEdges {
+            p: [a[1], a[2]],
+            q: [a[1], a[2]],
+        };
+        assert_eq!(witness_normal(&c, &a, &a), None);
     }
 }

@@ -10,6 +10,7 @@ const MAX_HEADERS: usize = 32;
 /// A parsed request head.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Request {
+    /// The method (`GET`, `HEAD`, ...), as sent.
     pub method: String,
     /// The path without the query string.
     pub path: String,
@@ -37,6 +38,7 @@ impl Request {
 /// Why a request head could not be read.
 #[derive(Debug)]
 pub enum HeadError {
+    /// Reading failed or the peer closed early.
     Io(io::Error),
     /// Answer with this status and message.
     Bad(u16, String),
@@ -107,6 +109,9 @@ fn reason(status: u16) -> &'static str {
 }
 
 /// Writes a complete response and flushes; `head_only` omits the body (for HEAD).
+///
+/// # Errors
+/// Writing to `stream` failed.
 pub fn respond(
     stream: &mut impl Write,
     status: u16,
@@ -128,6 +133,9 @@ pub fn respond(
 }
 
 /// A plain-text error response.
+///
+/// # Errors
+/// Writing to `stream` failed.
 pub fn respond_error(stream: &mut impl Write, status: u16, message: &str) -> io::Result<()> {
     respond(
         stream,

@@ -29,8 +29,9 @@ mod contact;
 pub mod http;
 pub mod protocol;
 pub mod sim;
+pub mod trace;
 
-pub use contact::contact_normal;
+pub use contact::{separation_normal, witness_normal};
 pub use protocol::{Reply, Session};
 pub use sim::{Settings, Simulation};
 
@@ -82,6 +83,7 @@ impl Server {
         Ok(Server { listener, addr })
     }
 
+    /// The address it listens on (the port chosen when asked for port 0).
     pub fn local_addr(&self) -> SocketAddr {
         self.addr
     }

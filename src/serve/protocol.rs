@@ -13,6 +13,10 @@
 //!   `{"op":"remove","scene":S,"polygon":I,"vertex":V}`: edits in box coordinates. `S`
 //!   is the scene number the page is showing: an edit meant for an older scene is an
 //!   error, never applied to the new one.
+//! - `{"op":"trace","scene":S,"polygons":[A,B],"algorithm":"barba|dobkin|chazelle-dobkin|clm"}`:
+//!   a step-through trace of the algorithm on polygons A (as P) and B (as Q) at their
+//!   current positions (at most [`MAX_TRACE_VERTICES`](super::sim::MAX_TRACE_VERTICES)
+//!   vertices each).
 //!
 //! Unknown fields and ops, wrong types, numbers out of range, messages too large or not
 //! UTF-8, binary messages: an `error` reply, and nothing changes.
@@ -27,9 +31,14 @@
 //! - `{"type":"edit", ...}`: an accepted [`Edit`](super::sim::Edit).
 //! - `{"type":"refused","op":..,"polygon":I,"reason":"..."}`: the store refused an edit;
 //!   the reason is the store error's text.
+//! - `{"type":"trace", ...}`: a trace ([`trace_json`](super::trace::trace_json)): the
+//!   two polygons' vertices, the steps (kept and pruned index ranges, marks, text), the
+//!   answer and the certificate; the last step carries the answer.
 //! - `{"type":"error","message":"..."}`: the message was malformed or named nothing.
 
 use super::sim::{EditFailure, Settings, Simulation, WORLD};
+use super::trace::trace_json;
+use crate::intersect::Algorithm;
 use crate::kernel::Precision;
 use crate::store::Strategy;
 use serde::Deserialize;
@@ -41,10 +50,20 @@ pub const MAX_MESSAGE_BYTES: usize = 4096;
 /// Messages above this close the connection (WebSocket status 1009).
 pub const MAX_TRANSPORT_BYTES: usize = 1 << 20;
 
+/// The algorithms the step-through mode traces.
+pub const TRACED: &[Algorithm] = &[
+    Algorithm::Barba,
+    Algorithm::Dobkin,
+    Algorithm::ChazelleDobkin,
+    Algorithm::Clm,
+];
+
 /// A reply to the page.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Reply {
+    /// A JSON text message.
     Text(String),
+    /// A binary message (the scene's vertices).
     Binary(Vec<u8>),
 }
 
@@ -79,6 +98,11 @@ enum Request {
         polygon: usize,
         vertex: u32,
     },
+    Trace {
+        scene: u64,
+        polygons: [usize; 2],
+        algorithm: String,
+    },
 }
 
 /// One page's state: its simulation and the scene counter.
@@ -96,6 +120,9 @@ impl Default for Session {
 
 impl Session {
     /// A session on the default scene ([`Settings::default`]).
+    ///
+    /// # Panics
+    /// Never: the default settings are valid (a unit test builds them).
     pub fn new() -> Session {
         Session {
             sim: Simulation::new(Settings::default(), 1).expect("the default settings are valid"),
@@ -103,6 +130,7 @@ impl Session {
         }
     }
 
+    /// The session's simulation.
     pub fn simulation(&self) -> &Simulation {
         &self.sim
     }
@@ -196,6 +224,11 @@ impl Session {
                 polygon,
                 vertex,
             } => self.edit("remove", scene, polygon, |s| s.remove_vertex(polygon, vertex)),
+            Request::Trace {
+                scene,
+                polygons,
+                algorithm,
+            } => vec![self.trace(scene, polygons, &algorithm)],
         }
     }
 
@@ -223,6 +256,28 @@ impl Session {
             ),
             Err(EditFailure::Invalid(m)) => error_reply(m),
         }]
+    }
+
+    fn trace(&self, scene: u64, [a, b]: [usize; 2], algorithm: &str) -> Reply {
+        if scene != self.sim.scene() {
+            return error_reply(format!(
+                "the trace is for scene {scene}, but scene {} is showing",
+                self.sim.scene()
+            ));
+        }
+        let algorithm = match algorithm.parse::<Algorithm>() {
+            Ok(a) if TRACED.contains(&a) => a,
+            Ok(a) => {
+                return error_reply(format!(
+                    "no step-through for {a} (traced: barba, dobkin, chazelle-dobkin, clm)"
+                ));
+            }
+            Err(e) => return error_reply(e),
+        };
+        match self.sim.trace(a, b, algorithm) {
+            Ok((p, q, t)) => Reply::Text(trace_json(scene, [a, b], &p, &q, &t).to_string()),
+            Err(e) => error_reply(e),
+        }
     }
 
     fn frame(&mut self, advance: bool) -> Reply {
@@ -500,5 +555,67 @@ mod tests {
         assert_eq!(one(&mut s, "{\"op\":\"frame\"}")["frame"], 1);
         assert_eq!(one(&mut s, "{\"op\":\"step\"}")["frame"], 2);
         assert_eq!(one(&mut s, "{\"op\":\"frame\"}")["advanced"], false);
+    }
+
+    #[test]
+    fn traces_end_in_the_librarys_answer_and_bad_requests_are_errors() {
+        let mut session = Session::new();
+        let scene = session.simulation().scene();
+        let polygons = session.simulation().current_vertices();
+        let p = crate::ConvexPolygon::new(polygons[0].iter().copied()).unwrap();
+        let q = crate::ConvexPolygon::new(polygons[1].iter().copied()).unwrap();
+        for name in ["barba", "dobkin", "chazelle-dobkin", "clm"] {
+            let msg = format!(r#"{{"op":"trace","scene":{scene},"polygons":[0,1],"algorithm":"{name}"}}"#);
+            let v = one(&mut session, &msg);
+            assert_eq!(v["type"], "trace", "{v}");
+            let steps = v["steps"].as_array().unwrap();
+            let want = crate::intersect::Algorithm::Linear.intersects(crate::Precision::Exact, &p, &q);
+            assert_eq!(steps.last().unwrap()["answer"], json!(want), "{name}");
+            assert_eq!(v["answer"], json!(want));
+            assert_eq!(v["p"].as_array().unwrap().len(), p.len());
+        }
+        for (msg, contains) in [
+            (
+                format!(r#"{{"op":"trace","scene":{scene},"polygons":[0,0],"algorithm":"barba"}}"#),
+                "two different",
+            ),
+            (
+                format!(r#"{{"op":"trace","scene":{scene},"polygons":[0,9999],"algorithm":"barba"}}"#),
+                "no polygon 9999",
+            ),
+            (
+                format!(r#"{{"op":"trace","scene":{scene},"polygons":[0,1],"algorithm":"linear"}}"#),
+                "no step-through",
+            ),
+            (
+                format!(r#"{{"op":"trace","scene":{scene},"polygons":[0,1],"algorithm":"nope"}}"#),
+                "unknown algorithm",
+            ),
+            (
+                format!(
+                    r#"{{"op":"trace","scene":{},"polygons":[0,1],"algorithm":"barba"}}"#,
+                    scene + 1
+                ),
+                "scene",
+            ),
+            (
+                format!(r#"{{"op":"trace","scene":{scene},"polygons":[0],"algorithm":"barba"}}"#),
+                "invalid",
+            ),
+        ] {
+            assert_error_reply(&mut session, msg.as_bytes(), contains);
+        }
+        // Polygons too large to trace.
+        let big = Settings {
+            polygons: 2,
+            vertices: crate::serve::sim::MAX_TRACE_VERTICES + 1,
+            ..Settings::default()
+        };
+        let mut session = Session {
+            sim: Simulation::new(big, 1).unwrap(),
+            scenes: 1,
+        };
+        let msg = r#"{"op":"trace","scene":1,"polygons":[0,1],"algorithm":"barba"}"#;
+        assert_error_reply(&mut session, msg.as_bytes(), "at most");
     }
 }

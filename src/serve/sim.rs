@@ -9,12 +9,18 @@
 //!    first.
 //! 2. **Broad phase**: [`Scene::candidate_pairs`], the pairs whose boxes overlap (timed
 //!    on its own and reported as the candidate count).
-//! 3. **Narrow phase**: [`Scene::intersecting_pairs`], the store's own answer, planned
-//!    per pair (sampled, converted, cached) as the chosen strategy says. It flushes the
-//!    already-flushed broad phase once more; that repeat is counted in this phase.
-//! 4. **Response**: each intersecting pair whose polygons approach along the contact
-//!    normal ([`contact_normal`]) exchanges momentum along it, an elastic collision with
-//!    masses proportional to area.
+//! 3. **Narrow phase**: [`Scene::intersecting_pairs_certified`], the store's own
+//!    answer with a certificate per intersecting pair, planned per pair (sampled,
+//!    converted, cached) as the chosen strategy says. It flushes the already-flushed
+//!    broad phase once more; that repeat is counted in this phase.
+//! 4. **Response**: the candidate pairs found disjoint are asked once more, certified
+//!    ([`Scene::intersects_batch_certified`]; timed here, not counted in the frame's
+//!    queries), and each one's separating edge is kept. Each intersecting pair takes
+//!    its contact normal from the separating edge of its last disjoint frame
+//!    ([`separation_normal`]), or, when it has none (it was never seen disjoint with
+//!    overlapping boxes), from its intersection certificate ([`witness_normal`]); a
+//!    pair approaching along its normal exchanges momentum along it, an elastic
+//!    collision with masses proportional to area.
 //!
 //! # Exact positions on both sides of the wire
 //! Every coordinate in the simulation (vertices, edit targets, per-frame moves) is a
@@ -32,13 +38,14 @@
 //! [`MAX_TOTAL_VERTICES`] in all; speed in 0..=[`MAX_SPEED`]; each polygon hands out at
 //! most [`MAX_VERTEX_IDS`] vertex ids.
 
-use super::contact::contact_normal;
+use super::contact::{separation_normal, witness_normal};
+use crate::intersect::{Algorithm, Certificate, Trace, trace_rng};
 use crate::kernel::{Exact, Fast, Point, Precision};
-use crate::polygon::{LinkedPolygon, VertexId, convex_hull};
+use crate::polygon::{ConvexPolygon, LinkedPolygon, VertexId, convex_hull};
 use crate::store::{PlannerStats, PolygonId, Scene, SceneError, Strategy};
 use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use std::f64::consts::TAU;
 use std::time::Instant;
 
@@ -49,13 +56,23 @@ pub const GRID: f64 = 1.0 / (1u64 << 36) as f64;
 /// Edit targets must lie in `[AREA_MIN, AREA_MAX]` on both axes (per axis: the box and
 /// half its size on each side).
 pub const AREA_MIN: [f64; 2] = [-0.5 * WORLD[0], -0.5 * WORLD[1]];
+/// See [`AREA_MIN`].
 pub const AREA_MAX: [f64; 2] = [1.5 * WORLD[0], 1.5 * WORLD[1]];
+/// The most polygons in a scene.
 pub const MAX_POLYGONS: usize = 1000;
+/// The fewest vertices per polygon.
 pub const MIN_VERTICES: usize = 3;
+/// The most vertices per polygon.
 pub const MAX_VERTICES: usize = 65_536;
+/// The most vertices in a scene.
 pub const MAX_TOTAL_VERTICES: usize = 1 << 21;
+/// The largest speed setting.
 pub const MAX_SPEED: f64 = 5.0;
+/// The most vertex ids one polygon hands out (insertions take new ids).
 pub const MAX_VERTEX_IDS: usize = 1 << 20;
+/// Step-through traces polygons of at most this many vertices (the reply carries every
+/// vertex, and each step its marks).
+pub const MAX_TRACE_VERTICES: usize = 4096;
 /// Distance per frame at speed 1, in box units (the box is 1200 wide).
 const BASE_SPEED: f64 = 1.6;
 /// The largest velocity after collisions, in box units per frame at speed 1.
@@ -71,12 +88,19 @@ pub fn snap(x: f64) -> f64 {
 /// What the page controls.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Settings {
+    /// Number of polygons.
     pub polygons: usize,
+    /// Vertices per polygon.
     pub vertices: usize,
+    /// Seed of the scene's shapes, positions and velocities.
     pub seed: u64,
+    /// How the store answers a pair.
     pub strategy: Strategy,
+    /// The kernel of the store's queries.
     pub precision: Precision,
+    /// Multiplies every velocity.
     pub speed: f64,
+    /// Whether frames leave the polygons in place.
     pub paused: bool,
 }
 
@@ -174,16 +198,22 @@ struct Body {
 /// Milliseconds spent in each part of a frame on the server.
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
 pub struct Timing {
+    /// Moving the polygons.
     pub update_ms: f64,
+    /// The broad phase (candidate pairs).
     pub broad_ms: f64,
+    /// The narrow phase (intersecting pairs with certificates).
     pub narrow_ms: f64,
+    /// Contact normals and bounces (with the certified queries on disjoint candidates).
     pub response_ms: f64,
 }
 
 /// What one frame changed, for the page.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Frame {
+    /// The scene's number.
     pub scene: u64,
+    /// Frames advanced since the scene started.
     pub frame: u64,
     /// Whether the polygons moved (false while paused).
     pub advanced: bool,
@@ -197,6 +227,7 @@ pub struct Frame {
     pub candidates: usize,
     /// Queries the store answered in this frame (box rejects included).
     pub queries: u64,
+    /// Server time per part of the frame.
     pub timing: Timing,
     /// What the planner did in this frame.
     pub stats: PlannerStats,
@@ -208,12 +239,16 @@ pub struct Frame {
 /// position minus the polygon's offset).
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Edit {
+    /// The polygon's index.
     pub polygon: usize,
     /// `move`, `insert` or `remove`.
     pub kind: &'static str,
+    /// The wire id of the vertex moved, inserted or removed.
     pub vertex: u32,
+    /// For an insertion: the wire id of the vertex it follows.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub after: Option<u32>,
+    /// For a move or an insertion: the vertex's new base point.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub point: Option<[f64; 2]>,
 }
@@ -237,6 +272,9 @@ pub struct Simulation {
     index: HashMap<PolygonId, usize>,
     scene: u64,
     frame: u64,
+    /// Per candidate pair `[i, j]`, `i < j`: the contact normal from `i` to `j` given by
+    /// the separating edge of the last frame that found the pair disjoint.
+    separators: HashMap<[usize; 2], [f64; 2]>,
 }
 
 impl Simulation {
@@ -253,6 +291,7 @@ impl Simulation {
             index: HashMap::new(),
             scene,
             frame: 0,
+            separators: HashMap::new(),
         };
         let mut rng = SmallRng::seed_from_u64(settings.seed);
         for (points, velocity) in generate(&settings, &mut rng) {
@@ -276,22 +315,27 @@ impl Simulation {
         Ok(sim)
     }
 
+    /// The settings in force.
     pub fn settings(&self) -> Settings {
         self.settings
     }
 
+    /// The scene's number.
     pub fn scene(&self) -> u64 {
         self.scene
     }
 
+    /// Frames advanced since the scene started.
     pub fn frame_number(&self) -> u64 {
         self.frame
     }
 
+    /// Number of polygons.
     pub fn len(&self) -> usize {
         self.bodies.len()
     }
 
+    /// Whether the scene has no polygons.
     pub fn is_empty(&self) -> bool {
         self.bodies.is_empty()
     }
@@ -388,13 +432,14 @@ impl Simulation {
         }
         let t1 = Instant::now();
         let before = on_scene!(&self.store, s => s.stats());
-        let candidates = on_scene!(&mut self.store, s => s.candidate_pairs()).len();
+        let candidates = on_scene!(&mut self.store, s => s.candidate_pairs());
         let t2 = Instant::now();
-        let found = on_scene!(&mut self.store, s => s.intersecting_pairs());
-        let pairs = self.index_pairs(&found);
+        let found = on_scene!(&mut self.store, s => s.intersecting_pairs_certified());
+        let hits = self.index_certified(found);
+        let pairs: Vec<[usize; 2]> = hits.iter().map(|h| h.0).collect();
         let t3 = Instant::now();
         let after = on_scene!(&self.store, s => s.stats());
-        let normals = self.respond(&pairs, advance);
+        let normals = self.respond(&candidates, &hits, advance);
         let t4 = Instant::now();
         let stats = stats_delta(after, before);
         let ms = |a: Instant, b: Instant| (b - a).as_secs_f64() * 1e3;
@@ -405,7 +450,7 @@ impl Simulation {
             offsets: self.bodies.iter().flat_map(|b| b.offset).collect(),
             pairs,
             normals,
-            candidates,
+            candidates: candidates.len(),
             queries: stats.box_rejects + stats.array_tests + stats.sampled_tests,
             timing: Timing {
                 update_ms: ms(t0, t1),
@@ -451,20 +496,72 @@ impl Simulation {
         }
     }
 
-    /// Contact normals for `pairs`; when the frame advanced, the elastic bounce of every
-    /// pair approaching along its normal.
-    fn respond(&mut self, pairs: &[[usize; 2]], bounce: bool) -> Vec<Option<[f64; 2]>> {
-        let mut walked: HashMap<usize, Vec<Point>> = HashMap::new();
-        let mut normals = Vec::with_capacity(pairs.len());
-        for &[i, j] in pairs {
-            for k in [i, j] {
-                walked.entry(k).or_insert_with(|| {
-                    let polygon =
-                        on_scene!(&self.store, s => s.polygon(self.bodies[k].id)).expect("live polygon");
-                    polygon.iter().map(|(_, p)| p).collect()
-                });
+    /// The store's certified intersecting pairs as sorted index pairs `[i, j]`, `i < j`,
+    /// each certificate turned so that its P is polygon `i`.
+    fn index_certified(
+        &self,
+        found: Vec<(PolygonId, PolygonId, Certificate)>,
+    ) -> Vec<([usize; 2], Certificate)> {
+        let mut out: Vec<([usize; 2], Certificate)> = found
+            .into_iter()
+            .map(|(a, b, c)| {
+                let (i, j) = (self.index[&a], self.index[&b]);
+                if i < j { ([i, j], c) } else { ([j, i], c.swapped()) }
+            })
+            .collect();
+        out.sort_unstable_by_key(|h| h.0);
+        out
+    }
+
+    /// Contact normals for the intersecting pairs `hits` (module docs, "Contact
+    /// normals"); when the frame advanced, the elastic bounce of every pair approaching
+    /// along its normal. Records the separating edge of every candidate pair found
+    /// disjoint, for its next contact.
+    fn respond(
+        &mut self,
+        candidates: &[(PolygonId, PolygonId)],
+        hits: &[([usize; 2], Certificate)],
+        bounce: bool,
+    ) -> Vec<Option<[f64; 2]>> {
+        // Candidates the narrow phase found disjoint: their separating edges.
+        let hit_set: HashSet<[usize; 2]> = hits.iter().map(|h| h.0).collect();
+        let disjoint: Vec<(PolygonId, PolygonId)> = candidates
+            .iter()
+            .copied()
+            .filter(|(a, b)| {
+                let (i, j) = (self.index[a], self.index[b]);
+                !hit_set.contains(&[i.min(j), i.max(j)])
+            })
+            .collect();
+        let certificates = on_scene!(&mut self.store, s => s.intersects_batch_certified(&disjoint));
+        let mut separators = HashMap::with_capacity(disjoint.len() + hits.len());
+        for ((a, b), certificate) in disjoint.iter().zip(certificates) {
+            let (i, j) = (self.index[a], self.index[b]);
+            if let Some(n) = certificate.ok().as_ref().and_then(separation_normal) {
+                let n = if i < j { n } else { [-n[0], -n[1]] };
+                separators.insert([i.min(j), i.max(j)], n);
             }
-            let n = contact_normal(&walked[&i], &walked[&j]);
+        }
+        let mut walked: HashMap<usize, Vec<Point>> = HashMap::new();
+        let mut normals = Vec::with_capacity(hits.len());
+        for (pair, certificate) in hits {
+            let [i, j] = *pair;
+            let n = match self.separators.get(pair) {
+                Some(&n) => {
+                    separators.insert(*pair, n);
+                    Some(n)
+                }
+                None => {
+                    for k in [i, j] {
+                        walked.entry(k).or_insert_with(|| {
+                            let polygon = on_scene!(&self.store, s => s.polygon(self.bodies[k].id))
+                                .expect("live polygon");
+                            polygon.iter().map(|(_, p)| p).collect()
+                        });
+                    }
+                    witness_normal(certificate, &walked[&i], &walked[&j])
+                }
+            };
             normals.push(n);
             if let (true, Some(n)) = (bounce, n) {
                 let (a, b) = (&self.bodies[i], &self.bodies[j]);
@@ -474,7 +571,47 @@ impl Simulation {
                 }
             }
         }
+        self.separators = separators;
         normals
+    }
+
+    /// A trace of `algorithm` on polygons `a` (as P) and `b` (as Q) at their current
+    /// positions, under the scene's precision, with the two polygons' vertices.
+    /// Randomised algorithms draw from a generator seeded by the frame number.
+    ///
+    /// # Errors
+    /// An index out of range, `a == b`, or a polygon of more than
+    /// [`MAX_TRACE_VERTICES`] vertices.
+    pub fn trace(
+        &self,
+        a: usize,
+        b: usize,
+        algorithm: Algorithm,
+    ) -> Result<(Vec<Point>, Vec<Point>, Trace), String> {
+        if a == b {
+            return Err(format!("a trace needs two different polygons (both are {a})"));
+        }
+        let polygon = |i: usize| -> Result<ConvexPolygon, String> {
+            let body = self
+                .bodies
+                .get(i)
+                .ok_or_else(|| format!("no polygon {i} (there are {})", self.bodies.len()))?;
+            let linked = on_scene!(&self.store, s => s.polygon(body.id)).map_err(|e| e.to_string())?;
+            if linked.len() > MAX_TRACE_VERTICES {
+                return Err(format!(
+                    "polygon {i} has {} vertices; step-through traces at most {MAX_TRACE_VERTICES}",
+                    linked.len()
+                ));
+            }
+            ConvexPolygon::new(linked.iter().map(|(_, p)| p)).map_err(|e| e.to_string())
+        };
+        let (p, q) = (polygon(a)?, polygon(b)?);
+        let mut rng = SmallRng::seed_from_u64(self.frame);
+        let t = match self.settings.precision {
+            Precision::Exact => trace_rng(algorithm, Exact, &p, &q, &mut rng),
+            Precision::Fast => trace_rng(algorithm, Fast, &p, &q, &mut rng),
+        };
+        Ok((p.vertices().to_vec(), q.vertices().to_vec(), t))
     }
 
     fn body(&self, polygon: usize) -> Result<&Body, EditFailure> {
@@ -603,6 +740,9 @@ impl Simulation {
 
     /// Checks that every store vertex is its base vertex plus the offset and lies on the
     /// grid (the module docs' claim), and the store's own invariants.
+    ///
+    /// # Errors
+    /// The first violation found, described.
     pub fn debug_validate(&self, base: &[f64]) -> Result<(), String> {
         on_scene!(&self.store, s => s.debug_validate())?;
         let mut k = 0;

@@ -20,6 +20,7 @@
     edits: 0, editsAtFrame: 0, moveInflight: false, moveQueued: null, drag: null, hover: null,
     times: [], fps: 0, drawMs: 0, refusals: 0, errors: 0, lastRefusal: "", lastError: "",
     view: { scale: 1, ox: 0, oy: 0, dpr: 1 }, figuresAt: 0, figuresOf: null, appliedParams: false,
+    trace: null, traceStep: 0, traces: 0,
   };
 
   function send(msg) {
@@ -44,9 +45,10 @@
   function onText(m) {
     switch (m.type) {
       case "settings": onSettings(m); break;
-      case "scene": S.sizes = m.sizes; S.world = m.world; S.scene = m.scene; S.ready = false; resize(); break;
+      case "scene": S.sizes = m.sizes; S.world = m.world; S.scene = m.scene; S.ready = false; S.trace = null; showTraceStep(); resize(); break;
       case "frame": onFrame(m); break;
       case "edit": onEdit(m); break;
+      case "trace": onTrace(m); break;
       case "refused":
         S.refusals++; S.lastRefusal = m.reason; S.moveInflight = false;
         status(`Refused ${m.op} on polygon ${m.polygon}: ${m.reason}`, "refused");
@@ -319,6 +321,7 @@
       });
       ctx.stroke();
     }
+    if (S.trace) drawTrace();
     if (S.hover) {
       const p = S.polys[S.hover.poly], k = p && p.ids.indexOf(S.hover.vertex);
       if (p && k >= 0) {
@@ -332,6 +335,83 @@
     S.drawMs = 0.9 * S.drawMs + 0.1 * (performance.now() - t0);
     figures();
   }
+  // ---- step-through ----
+  const ROLE = {
+    triangle: "#1f7a3a", bound: "#7a5cc2", pencil: "#c27a00", window: "#d4a017", sample: "#0a7f8c",
+    chain: "#1f7a3a", separator: "#111", witness: "#d0021b",
+  };
+  function onTrace(m) {
+    S.trace = m; S.traceStep = 0; S.traces++;
+    showTraceStep();
+  }
+  function showTraceStep() {
+    const t = S.trace;
+    if (!t) { $("traceText").textContent = ""; S.dirty = true; return; }
+    const st = t.steps[S.traceStep];
+    const last = S.traceStep === t.steps.length - 1;
+    $("traceText").textContent = `${t.algorithm}, step ${S.traceStep + 1} of ${t.steps.length}: ${st.text}` +
+      (last ? ` — certificate ${JSON.stringify(t.certificate)}` : "");
+    S.dirty = true;
+  }
+  function drawTrace() {
+    const t = S.trace, st = t.steps[S.traceStep], v = S.view;
+    const X = (pt) => v.ox + pt[0] * v.scale, Y = (pt) => v.oy + pt[1] * v.scale;
+    ctx.save();
+    ctx.fillStyle = "rgba(255,255,255,0.55)";
+    ctx.fillRect(v.ox, v.oy, S.world[0] * v.scale, S.world[1] * v.scale);
+    const outline = (pts, colour, width, dash) => {
+      ctx.beginPath();
+      pts.forEach((pt, k) => (k ? ctx.lineTo(X(pt), Y(pt)) : ctx.moveTo(X(pt), Y(pt))));
+      ctx.closePath(); ctx.setLineDash(dash || []); ctx.strokeStyle = colour; ctx.lineWidth = width; ctx.stroke();
+    };
+    const spans = (pts, list, colour, width, dash) => {
+      for (const [start, len] of list) {
+        ctx.beginPath();
+        for (let k = 0; k < len; k++) {
+          const pt = pts[(start + k) % pts.length];
+          k ? ctx.lineTo(X(pt), Y(pt)) : ctx.moveTo(X(pt), Y(pt));
+        }
+        if (len === 1) { const pt = pts[start % pts.length]; ctx.arc(X(pt), Y(pt), 3, 0, 2 * Math.PI); }
+        ctx.setLineDash(dash || []); ctx.strokeStyle = colour; ctx.lineWidth = width; ctx.stroke();
+      }
+    };
+    outline(t.p, "#2d5a96", 1); outline(t.q, "#b3260d", 1);
+    spans(t.p, st.pruned[0], "#9aa3b2", 3, [4, 3]); spans(t.q, st.pruned[1], "#9aa3b2", 3, [4, 3]);
+    spans(t.p, st.kept[0], "#2d5a96", 3.5); spans(t.q, st.kept[1], "#b3260d", 3.5);
+    const W = S.world[0] + S.world[1];
+    for (const mk of st.marks) {
+      const c = ROLE[mk.role] || "#000", pts = mk.points;
+      ctx.setLineDash(mk.role === "bound" || mk.role === "window" ? [6, 4] : []);
+      ctx.strokeStyle = c; ctx.fillStyle = c; ctx.lineWidth = mk.role === "separator" || mk.role === "witness" ? 2.5 : 1.5;
+      ctx.beginPath();
+      if (mk.kind === "points") {
+        for (const pt of pts) { ctx.moveTo(X(pt) + 3, Y(pt)); ctx.arc(X(pt), Y(pt), 3, 0, 2 * Math.PI); }
+        ctx.fill(); continue;
+      }
+      if (mk.kind === "line") {
+        const [a, b] = pts, dx = b[0] - a[0], dy = b[1] - a[1], l = Math.hypot(dx, dy) || 1;
+        const e = [dx / l * 2 * W, dy / l * 2 * W];
+        ctx.moveTo(X([a[0] - e[0], a[1] - e[1]]), Y([a[0] - e[0], a[1] - e[1]]));
+        ctx.lineTo(X([a[0] + e[0], a[1] + e[1]]), Y([a[0] + e[0], a[1] + e[1]]));
+      } else {
+        pts.forEach((pt, k) => (k ? ctx.lineTo(X(pt), Y(pt)) : ctx.moveTo(X(pt), Y(pt))));
+        if (mk.kind === "polygon") ctx.closePath();
+      }
+      ctx.stroke();
+    }
+    ctx.restore();
+  }
+  function requestTrace() {
+    if (!S.ready) return;
+    if (S.settings && !S.settings.paused) send({ op: "settings", paused: true });
+    send({ op: "trace", scene: S.scene, polygons: [Number($("traceA").value), Number($("traceB").value)], algorithm: $("traceAlgorithm").value });
+  }
+  function traceMove(d) {
+    if (!S.trace) return;
+    S.traceStep = Math.max(0, Math.min(S.trace.steps.length - 1, S.traceStep + d));
+    showTraceStep();
+  }
+
   function centre(i) {
     const b = S.polys[i].box;
     return [(b[0] + b[2]) / 2 + S.offsets[2 * i], (b[1] + b[3]) / 2 + S.offsets[2 * i + 1]];
@@ -380,6 +460,10 @@
   $("step").onclick = () => { if (S.ready && !S.inflight) { S.inflight = true; send({ op: "step" }); } };
   $("showVertices").onchange = () => { S.dirty = true; };
   $("showNormals").onchange = () => { S.dirty = true; };
+  $("trace").onclick = requestTrace;
+  $("traceBack").onclick = () => traceMove(-1);
+  $("traceForward").onclick = () => traceMove(1);
+  $("traceClose").onclick = () => { S.trace = null; showTraceStep(); };
   window.addEventListener("resize", resize);
 
   // What the page shows, for tests and the curious: exact world coordinates (base +
@@ -401,6 +485,14 @@
     get errors() { return S.errors; },
     get lastError() { return S.lastError; },
     get status() { return $("status").textContent; },
+    // The step-through: the trace received (null when closed) and the step shown.
+    get trace() {
+      const t = S.trace;
+      return t && { algorithm: t.algorithm, polygons: t.polygons, steps: t.steps.length, step: S.traceStep,
+        stepAnswer: t.steps[S.traceStep].answer, answer: t.answer, certificate: t.certificate, text: $("traceText").textContent,
+        p: t.p, q: t.q };
+    },
+    get traces() { return S.traces; },
     shown() {
       return {
         scene: S.scene, frame: S.frame, pairs: S.pairs.map((p) => [p[0], p[1]]),
