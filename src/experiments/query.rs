@@ -81,6 +81,11 @@ impl PreparedPair {
         (answer, counts)
     }
 
+    /// The linked copies the linked tests run on (shuffled arenas).
+    pub fn arenas(&self) -> (&LinkedPolygon, &LinkedPolygon) {
+        (&self.lp, &self.lq)
+    }
+
     /// Runs CLM with sample factor `c` once under the exact kernel.
     #[inline]
     pub fn query_clm_factor(&mut self, c: f64) -> bool {

@@ -412,127 +412,158 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         return false; // the LP saw both polygons whole
     }
     let (tp, tq) = (ws.rp[t.a] as usize, ws.rq[t.b] as usize);
-    // P lies on the right of the line, Q on the left: P's far side is the left. The two
-    // walks are interleaved so that their cache misses overlap.
-    far_chains(
-        k,
+    // P lies on the right of the line, Q on the left: P's far side is the left.
+    let first = [
         Walk::new(p, t.start, t.end, Orientation::Ccw, tp),
-        &mut ws.cp,
         Walk::new(q, t.start, t.end, Orientation::Cw, tq),
-        &mut ws.cq,
-    );
-    ws.walked += (ws.cp.len() + ws.cq.len()) as u64;
-    probe.chain_walk(ws.cp.len());
-    probe.chain_walk(ws.cq.len());
+    ];
+    // The chains are walked into buffers taken out of the workspace for the schedule
+    // and put back after it, whatever it answers.
+    let mut chains = Chains([
+        std::mem::take(&mut ws.cp),
+        std::mem::take(&mut ws.cq),
+        std::mem::take(&mut ws.chain),
+        std::mem::take(&mut ws.chain2),
+    ]);
+    let answer = walk_and_decide::<K, R, P, CERT>(k, p, q, first, &mut chains, rng, ws, probe);
+    let Chains([cp, cq, chain, chain2]) = chains;
+    (ws.cp, ws.cq, ws.chain, ws.chain2) = (cp, cq, chain, chain2);
+    answer
+}
+
+/// The four chain buffers, indexed by [`Set::chain_index`].
+struct Chains([Vec<u32>; 4]);
+
+impl Chains {
+    fn get(&self, s: Set) -> &[u32] {
+        &self.0[s.chain_index()]
+    }
+}
+
+impl Set {
+    /// The buffer of a chain set in [`Chains`] (samples have none).
+    fn chain_index(self) -> usize {
+        match self {
+            Set::Cp => 0,
+            Set::Cq => 1,
+            Set::Chain => 2,
+            Set::Chain2 => 3,
+            Set::Rp | Set::Rq => unreachable!("samples are not walked"),
+        }
+    }
+}
+
+/// A walk in progress in one of the lockstep slots: the chain set it fills.
+struct Active<'a> {
+    set: Set,
+    walk: Walk<'a>,
+    cursor: Cursor,
+}
+
+/// Steps 3–5 of the module docs after the first LP, as a schedule of chain walks kept
+/// two at a time in lockstep, so that their cache misses (each step is a dependent
+/// load at a random arena position) overlap for the whole query rather than only
+/// while both walks of a pair last. `first` are the walks of C_P and C_Q. When a walk
+/// ends, the LP that needed it runs at once (an intersection there ends the query),
+/// and the walk that LP's line calls for takes the freed slot:
+/// * C_Q done: LP(R_P, C_Q); its line starts C′_P.
+/// * C_P done: LP(R_Q, C_P); its line starts C′_Q.
+/// * C′_P done: LP(C′_P, C_Q). C′_Q done: LP(C′_Q, C_P).
+///
+/// The answer is the disjunction of the four LPs' verdicts, so the order in which
+/// walks end does not change it. A sample that is its whole polygon has decided its
+/// sub-test already: its second chain is not walked.
+#[allow(clippy::too_many_arguments)]
+fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
+    k: K,
+    p: &LinkedPolygon,
+    q: &LinkedPolygon,
+    first: [Walk<'_>; 2],
+    chains: &mut Chains,
+    rng: &mut R,
+    ws: &mut ClmWorkspace,
+    probe: &mut P,
+) -> bool {
     let ClmWorkspace {
         rp,
         rq,
-        cp,
-        cq,
-        chain,
-        chain2,
         lp,
         walked,
         trace,
         ..
     } = ws;
-    // P against CH(C_Q) and Q against CH(C_P): first each sample against the other's
-    // chain (an intersection there ends the query), then both second chains, walked
-    // together, against the first chains.
-    let lines = [(&*rp, p, &*cq, q), (&*rq, q, &*cp, p)].map(|(rx, x, cy, y)| {
-        let sample = ArenaPoints {
-            polygon: x,
-            positions: rx,
-        };
-        let far = ArenaPoints {
-            polygon: y,
-            positions: cy,
-        };
-        match counted_lp(k, &sample, &far, rng, lp, probe) {
-            Ok(Separation::Separated(t)) => Some(t),
-            _ => None,
-        }
-    });
-    if CERT {
-        // The LP workspace keeps the witness of the last LP that found intersecting
-        // hulls, so that LP's sets are recorded.
-        let sets = [(Set::Rp, Set::Cq), (Set::Rq, Set::Cp)];
-        for (line, (a, b)) in lines.iter().zip(sets) {
-            match line {
-                Some(t) => trace.lines.push((*t, a, b)),
-                None => trace.meet = Some((a, b)),
-            }
-        }
-    }
-    let [Some(lp_line), Some(lq_line)] = lines else {
-        return true;
-    };
-    // A sample that is its whole polygon has decided its sub-test already.
     let p_open = rp.len() < p.len();
     let q_open = rq.len() < q.len();
-    far_chains(
-        k,
-        Walk::new(
-            p,
-            lp_line.start,
-            lp_line.end,
-            Orientation::Ccw,
-            rp[lp_line.a] as usize,
-        )
-        .only_if(p_open),
-        chain,
-        Walk::new(
-            q,
-            lq_line.start,
-            lq_line.end,
-            Orientation::Ccw,
-            rq[lq_line.a] as usize,
-        )
-        .only_if(q_open),
-        chain2,
-    );
-    *walked += (chain.len() + chain2.len()) as u64;
-    if p_open {
-        probe.chain_walk(chain.len());
+    let mut slots: [Option<Active<'_>>; 2] = [None, None];
+    for (slot, (walk, set)) in slots.iter_mut().zip(first.into_iter().zip([Set::Cp, Set::Cq])) {
+        let cursor = walk.start(k, &mut chains.0[set.chain_index()]);
+        *slot = Some(Active { set, walk, cursor });
     }
-    if q_open {
-        probe.chain_walk(chain2.len());
-    }
-    let mut meets = |near: &[u32],
-                     x: &LinkedPolygon,
-                     far: &[u32],
-                     y: &LinkedPolygon,
-                     rng: &mut R,
-                     lp: &mut LpWorkspace,
-                     sets: (Set, Set)| {
-        let near = ArenaPoints {
-            polygon: x,
-            positions: near,
-        };
-        let far = ArenaPoints {
-            polygon: y,
-            positions: far,
-        };
-        match counted_lp(k, &near, &far, rng, lp, probe) {
-            Ok(Separation::Separated(t)) => {
-                if CERT {
-                    trace.lines.push((t, sets.0, sets.1));
-                }
-                false
-            }
-            _ => {
-                if CERT {
-                    trace.meet = Some(sets);
-                }
-                true
+    loop {
+        for a in slots.iter_mut().flatten() {
+            if !a.cursor.done {
+                a.walk
+                    .advance(k, &mut a.cursor, &mut chains.0[a.set.chain_index()]);
             }
         }
-    };
-    (p_open && meets(chain, p, cq, q, rng, lp, (Set::Chain, Set::Cq)))
-        || (q_open && meets(chain2, q, cp, p, rng, lp, (Set::Chain2, Set::Cp)))
+        for slot in &mut slots {
+            let Some(set) = slot.as_ref().filter(|a| a.cursor.done).map(|a| a.set) else {
+                continue;
+            };
+            *slot = None;
+            let len = chains.get(set).len();
+            *walked += len as u64;
+            probe.chain_walk(len);
+            // The LP this chain completes: (near set, its polygon, far chain, its polygon).
+            let (near, far) = match set {
+                Set::Cq => (Set::Rp, Set::Cq),
+                Set::Cp => (Set::Rq, Set::Cp),
+                Set::Chain => (Set::Chain, Set::Cq),
+                _ => (Set::Chain2, Set::Cp),
+            };
+            let polygon = |s: Set| if s.of() == Which::P { p } else { q };
+            let near_points = match near {
+                Set::Rp => &rp[..],
+                Set::Rq => &rq[..],
+                s => chains.get(s),
+            };
+            let a = ArenaPoints {
+                polygon: polygon(near),
+                positions: near_points,
+            };
+            let b = ArenaPoints {
+                polygon: polygon(far),
+                positions: chains.get(far),
+            };
+            let Ok(Separation::Separated(line)) = counted_lp(k, &a, &b, rng, lp, probe) else {
+                if CERT {
+                    trace.meet = Some((near, far));
+                }
+                return true;
+            };
+            if CERT {
+                trace.lines.push((line, near, far));
+            }
+            // After a first chain, the second chain of the other polygon, beyond the line
+            // (the near set is on its right: its far side is the left).
+            let next = match near {
+                Set::Rp if p_open => Some((Set::Chain, p, rp[line.a])),
+                Set::Rq if q_open => Some((Set::Chain2, q, rq[line.a])),
+                _ => None,
+            };
+            if let Some((set, poly, t)) = next {
+                let walk = Walk::new(poly, line.start, line.end, Orientation::Ccw, t as usize);
+                let cursor = walk.start(k, &mut chains.0[set.chain_index()]);
+                *slot = Some(Active { set, walk, cursor });
+            }
+        }
+        if slots.iter().all(Option::is_none) {
+            return false;
+        }
+    }
 }
 
-/// One chain walk (see [`far_chains`]): from the tangent vertex at position `t` of
+/// One chain walk (see [`walk_and_decide`]): from the tangent vertex at position `t` of
 /// `poly`, along the side where the neighbour lies strictly on the `far` side of the
 /// directed line (s, e).
 struct Walk<'a> {
@@ -541,24 +572,11 @@ struct Walk<'a> {
     e: Point,
     far: Orientation,
     t: usize,
-    enabled: bool,
 }
 
 impl<'a> Walk<'a> {
     fn new(poly: &'a LinkedPolygon, s: Point, e: Point, far: Orientation, t: usize) -> Self {
-        Walk {
-            poly,
-            s,
-            e,
-            far,
-            t,
-            enabled: true,
-        }
-    }
-
-    fn only_if(mut self, enabled: bool) -> Self {
-        self.enabled = enabled;
-        self
+        Walk { poly, s, e, far, t }
     }
 }
 
@@ -585,9 +603,6 @@ impl Walk<'_> {
             steps_left: 0,
             done: true,
         };
-        if !self.enabled {
-            return done;
-        }
         let (poly, t) = (self.poly, self.t);
         let (next, prev) = (poly.next_at(t), poly.prev_at(t));
         let forward = if self.is_far(k, next) {
@@ -626,26 +641,5 @@ impl Walk<'_> {
         if c.v == self.t {
             c.done = true;
         }
-    }
-}
-
-/// Runs two chain walks in lockstep (their memory accesses overlap). Each writes to its
-/// `out` the positions of the run of `poly`'s vertices strictly on the `far` side of
-/// the directed line (s, e), walked from the tangent vertex at position `t` (on the
-/// line, not on the far side), including the first non-far vertex at both ends; or
-/// (prev t, t, next t) when neither neighbour of t is on the far side. A disabled walk
-/// leaves its `out` empty.
-fn far_chains<K: Kernel>(k: K, w1: Walk<'_>, out1: &mut Vec<u32>, w2: Walk<'_>, out2: &mut Vec<u32>) {
-    let mut c1 = w1.start(k, out1);
-    let mut c2 = w2.start(k, out2);
-    while !c1.done && !c2.done {
-        w1.advance(k, &mut c1, out1);
-        w2.advance(k, &mut c2, out2);
-    }
-    while !c1.done {
-        w1.advance(k, &mut c1, out1);
-    }
-    while !c2.done {
-        w2.advance(k, &mut c2, out2);
     }
 }
