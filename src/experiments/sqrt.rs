@@ -50,6 +50,7 @@ pub(crate) fn run(config: &Config) -> io::Result<Report> {
     draw(config, &mut report, "clm_sqrt.svg", &chart, &s)?;
     counts(config, &sizes, &mut report)?;
     let limits = limit(config, &sizes, &mut report)?;
+    let variants = variants(config, &mut report)?;
     let mut t = String::from(
         "| n | intersecting ns/√(2n) | disjoint ns/√(2n) | intersecting time | disjoint time |\n|---|---|---|---|---|\n",
     );
@@ -83,8 +84,92 @@ pub(crate) fn run(config: &Config) -> io::Result<Report> {
             l.clm_ns / l.limit_ns
         ));
     }
+    t.push_str(&variants);
     report.summary = t;
     Ok(report)
+}
+
+/// The implementation variants of sampling (independent draws, or the thesis's 3.3.1
+/// Fisher–Yates) and of the LP's randomisation (the caller's, thesis 3.3.5, the
+/// default; or the LP's own shuffle) against the default, at a few sizes: per pair the four variants
+/// are timed in turn, three rounds, the pair's figure the median of each; the point's
+/// the median over pairs. Writes `clm_variants.csv`; returns a Markdown table.
+fn variants(config: &Config, report: &mut Report) -> io::Result<String> {
+    use crate::intersect::{ClmVariant, LpOrder, Sampling};
+    let named = [
+        (
+            "default: independent, caller shuffles",
+            Sampling::Independent,
+            LpOrder::Caller,
+        ),
+        ("independent, LP shuffles", Sampling::Independent, LpOrder::Lp),
+        (
+            "thesis: Fisher–Yates, caller shuffles",
+            Sampling::FisherYates,
+            LpOrder::Caller,
+        ),
+        ("Fisher–Yates, LP shuffles", Sampling::FisherYates, LpOrder::Lp),
+    ]
+    .map(|(name, sampling, lp_order)| {
+        (
+            name,
+            ClmVariant {
+                sampling,
+                lp_order,
+                ..ClmVariant::default()
+            },
+        )
+    });
+    let mut csv = Csv::new(&["relation", "n", "pairs", "variant", "median_ns", "over_ours"]);
+    let mut t = String::from(
+        "\nSampling and LP-order variants (median per query; in brackets, variant / default):\n\n| n | relation |",
+    );
+    for (name, _) in &named {
+        t.push_str(&format!(" {name} |"));
+    }
+    t.push_str("\n|---|---|");
+    t.push_str(&"---|".repeat(named.len()));
+    t.push('\n');
+    let sizes: &[u32] = if config.log2_sizes.len() < 10 {
+        &[10, 14]
+    } else {
+        &[10, 14, 18, 20]
+    };
+    for &l in sizes {
+        let n = 1usize << l;
+        for relation in [Relation::Intersecting, Relation::Disjoint] {
+            let mut prepared = pairs(config, Family::Rotated, relation, n, config.pairs_for(n));
+            let mut times = vec![Vec::new(); named.len()];
+            for pp in &mut prepared {
+                let mut rounds = vec![Vec::new(); named.len()];
+                for _ in 0..3 {
+                    for (i, &(_, v)) in named.iter().enumerate() {
+                        rounds[i].push(time_per_query(config.min_time, || pp.query_clm_variant(v)));
+                    }
+                }
+                for (i, r) in rounds.iter_mut().enumerate() {
+                    times[i].push(median(r));
+                }
+            }
+            let medians: Vec<f64> = times.iter_mut().map(|x| median(x)).collect();
+            t.push_str(&format!("| 2^{l} | {} |", relation_name(relation)));
+            for (i, (name, _)) in named.iter().enumerate() {
+                let ratio = medians[i] / medians[0];
+                csv.row(&[
+                    relation_name(relation).into(),
+                    n.to_string(),
+                    prepared.len().to_string(),
+                    (*name).into(),
+                    super::ns(medians[i]),
+                    format!("{ratio:.3}"),
+                ]);
+                t.push_str(&format!(" {} ({ratio:.2}) |", short_ns(medians[i])));
+            }
+            t.push('\n');
+        }
+    }
+    csv.write(&config.out, "clm_variants.csv", report)?;
+    Ok(t)
 }
 
 /// CLM and its memory limit at one size and relation (medians over pairs).

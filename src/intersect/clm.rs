@@ -84,6 +84,7 @@ use crate::kernel::{Kernel, Orientation, Point};
 use crate::lp::{ArenaPoints, Bitangent, LpError, LpWorkspace, Separation, WitnessPoint, separating_line};
 use crate::polygon::{LinkedPolygon, SampleWorkspace};
 use rand::Rng;
+use rand::seq::SliceRandom;
 
 /// The Chazelle–Liu–Magen sublinear test with the default sample factor
 /// [`Clm::SAMPLE_FACTOR`]; see the module docs.
@@ -118,6 +119,64 @@ impl Clm {
 #[derive(Clone, Copy, Debug)]
 pub struct ClmWithFactor(pub f64);
 
+/// How [`ClmVariant`] draws its samples.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Sampling {
+    /// Ours (the default): independent uniform draws when r ≤ n/16, else distinct
+    /// positions by rejection with marks (see the module docs, step 1).
+    #[default]
+    Independent,
+    /// The thesis's (its 3.3.1): r distinct positions by a partial Fisher–Yates shuffle
+    /// of the positions 0..n. The thesis swaps the arena's nodes themselves; here an
+    /// index array in the workspace is shuffled and restored after the draw, so the
+    /// arena is untouched (n · 4 bytes of workspace, one extra random access per draw).
+    FisherYates,
+}
+
+/// Who puts the LP's constraints in random order in [`ClmVariant`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum LpOrder {
+    /// Every LP shuffles all its points (Seidel's algorithm as written).
+    Lp,
+    /// The default, from the thesis (its 3.3.5): the caller randomises. Independent
+    /// samples come in random order and are not shuffled again (distinct samples and
+    /// whole polygons, listed in arena order, are shuffled once); each chain is
+    /// shuffled once when walked; the LP keeps the order given
+    /// ([`LpWorkspace::keep_order`]), taking A's and B's points alternately. Seidel's
+    /// bound still holds: the first i points are a uniformly random subset of ⌈i/2⌉
+    /// of A and ⌊i/2⌋ of B, and the i-th is uniform among its set's part, so it is one
+    /// of the (at most two, barring ties) points the optimum is tight on in its set
+    /// with probability O(1/i). Measured faster than [`LpOrder::Lp`] (docs/results.md):
+    /// no random swaps per point and per LP, and a sample shared by two LPs or a chain
+    /// shared by two is randomised once.
+    #[default]
+    Caller,
+}
+
+/// The test with every implementation choice explicit: the sample factor and the
+/// thesis's variants of sampling and of the LP's randomisation, for experiments that
+/// compare them (`polysect bench sqrt`, docs/thesis.md). Every variant gives the same
+/// answers; only the time changes.
+#[derive(Clone, Copy, Debug)]
+pub struct ClmVariant {
+    /// Samples of ⌈factor·√n⌉ vertices.
+    pub factor: f64,
+    /// How the samples are drawn.
+    pub sampling: Sampling,
+    /// Who randomises the LPs' order.
+    pub lp_order: LpOrder,
+}
+
+impl Default for ClmVariant {
+    fn default() -> Self {
+        ClmVariant {
+            factor: Clm::SAMPLE_FACTOR,
+            sampling: Sampling::default(),
+            lp_order: LpOrder::default(),
+        }
+    }
+}
+
 /// Reusable scratch memory for [`Clm`]: sample marks and the sample, chain and LP buffers.
 #[derive(Clone, Debug, Default)]
 pub struct ClmWorkspace {
@@ -130,6 +189,10 @@ pub struct ClmWorkspace {
     chain2: Vec<u32>,
     lp: LpWorkspace,
     walked: u64,
+    /// The index array of [`Sampling::FisherYates`] (the identity between draws) and
+    /// the swaps of one draw, to restore it.
+    perm: Vec<u32>,
+    swaps: Vec<u32>,
     /// What the last certified query found, for its certificate.
     trace: Trace,
     scratch: WitnessScratch,
@@ -214,6 +277,45 @@ impl LinkedIntersection for ClmWithFactor {
     const NAME: &'static str = "clm";
     type Workspace = ClmWorkspace;
 
+    #[inline]
+    fn intersects_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
+        &self,
+        kernel: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        rng: &mut R,
+        workspace: &mut ClmWorkspace,
+        probe: &mut P,
+    ) -> bool {
+        let v = ClmVariant {
+            factor: self.0,
+            ..ClmVariant::default()
+        };
+        v.intersects_in(kernel, p, q, rng, workspace, probe)
+    }
+
+    #[inline]
+    fn derive_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
+        &self,
+        kernel: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        rng: &mut R,
+        workspace: &mut ClmWorkspace,
+        probe: &mut P,
+    ) -> Derivation {
+        let v = ClmVariant {
+            factor: self.0,
+            ..ClmVariant::default()
+        };
+        v.derive_in(kernel, p, q, rng, workspace, probe)
+    }
+}
+
+impl LinkedIntersection for ClmVariant {
+    const NAME: &'static str = "clm";
+    type Workspace = ClmWorkspace;
+
     fn intersects_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
         &self,
         k: K,
@@ -224,7 +326,7 @@ impl LinkedIntersection for ClmWithFactor {
         probe: &mut P,
     ) -> bool {
         let work_before = ws.lp.work + ws.walked;
-        let answer = clm::<K, R, P, false>(k, self.0, p, q, rng, ws, probe);
+        let answer = clm::<K, R, P, false>(k, *self, p, q, rng, ws, probe);
         for _ in work_before..ws.lp.work + ws.walked {
             probe.iteration();
         }
@@ -242,7 +344,7 @@ impl LinkedIntersection for ClmWithFactor {
         probe: &mut P,
     ) -> Derivation {
         let work_before = ws.lp.work + ws.walked;
-        let answer = clm::<K, R, P, true>(k, self.0, p, q, rng, ws, probe);
+        let answer = clm::<K, R, P, true>(k, *self, p, q, rng, ws, probe);
         for _ in work_before..ws.lp.work + ws.walked {
             probe.iteration();
         }
@@ -345,6 +447,33 @@ fn sample<R: Rng + ?Sized>(
     }
 }
 
+/// Appends min(r, n) distinct random positions of a polygon of `n` vertices to `out`
+/// by a partial Fisher–Yates shuffle of `perm` (the identity on 0..n before and after:
+/// the swaps are undone in reverse order). [`Sampling::FisherYates`].
+fn fisher_yates<R: Rng + ?Sized>(
+    n: usize,
+    r: usize,
+    rng: &mut R,
+    perm: &mut Vec<u32>,
+    swaps: &mut Vec<u32>,
+    out: &mut Vec<u32>,
+) {
+    if perm.len() != n {
+        perm.clear();
+        perm.extend(0..n as u32);
+    }
+    swaps.clear();
+    for last in (n - r.min(n)..n).rev() {
+        let j = rng.random_range(0..=last);
+        perm.swap(j, last);
+        swaps.push(j as u32);
+        out.push(perm[last]);
+    }
+    for (last, &j) in (n - swaps.len()..n).zip(swaps.iter().rev()) {
+        perm.swap(j as usize, last);
+    }
+}
+
 /// ⌈c·√n⌉, at least 3.
 fn sample_size(c: f64, n: usize) -> usize {
     let r = (c * (n as f64).sqrt()).ceil();
@@ -369,7 +498,7 @@ fn counted_lp<K: Kernel, R: Rng + ?Sized, P: Probe>(
 /// The test; with `CERT` it also records in `ws.trace` what its certificate needs.
 fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     k: K,
-    c: f64,
+    v: ClmVariant,
     p: &LinkedPolygon,
     q: &LinkedPolygon,
     rng: &mut R,
@@ -381,10 +510,28 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         ws.trace.lines.clear();
     }
     ws.lp.record_witness(CERT);
+    ws.lp.keep_order(v.lp_order == LpOrder::Caller);
     ws.rp.clear();
     ws.rq.clear();
-    sample(p, sample_size(c, p.len()), rng, &mut ws.sample, &mut ws.rp);
-    sample(q, sample_size(c, q.len()), rng, &mut ws.sample, &mut ws.rq);
+    let (rp_len, rq_len) = (sample_size(v.factor, p.len()), sample_size(v.factor, q.len()));
+    match v.sampling {
+        Sampling::Independent => {
+            sample(p, rp_len, rng, &mut ws.sample, &mut ws.rp);
+            sample(q, rq_len, rng, &mut ws.sample, &mut ws.rq);
+            if v.lp_order == LpOrder::Caller {
+                // Only independent draws come in random order.
+                for (r, poly) in [(&mut ws.rp, p), (&mut ws.rq, q)] {
+                    if r.len().saturating_mul(16) > poly.len() {
+                        r.shuffle(rng);
+                    }
+                }
+            }
+        }
+        Sampling::FisherYates => {
+            fisher_yates(p.len(), rp_len, rng, &mut ws.perm, &mut ws.swaps, &mut ws.rp);
+            fisher_yates(q.len(), rq_len, rng, &mut ws.perm, &mut ws.swaps, &mut ws.rq);
+        }
+    }
     probe.samples(ws.rp.len(), ws.rq.len());
     let rp = ArenaPoints {
         polygon: p,
@@ -425,7 +572,9 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         std::mem::take(&mut ws.chain),
         std::mem::take(&mut ws.chain2),
     ]);
-    let answer = walk_and_decide::<K, R, P, CERT>(k, p, q, first, &mut chains, rng, ws, probe);
+    let shuffle_chains = v.lp_order == LpOrder::Caller;
+    let answer =
+        walk_and_decide::<K, R, P, CERT>(k, p, q, first, &mut chains, shuffle_chains, rng, ws, probe);
     let Chains([cp, cq, chain, chain2]) = chains;
     (ws.cp, ws.cq, ws.chain, ws.chain2) = (cp, cq, chain, chain2);
     answer
@@ -472,7 +621,8 @@ struct Active<'a> {
 ///
 /// The answer is the disjunction of the four LPs' verdicts, so the order in which
 /// walks end does not change it. A sample that is its whole polygon has decided its
-/// sub-test already: its second chain is not walked.
+/// sub-test already: its second chain is not walked. With `shuffle_chains` each chain
+/// is shuffled when walked ([`LpOrder::Caller`]).
 #[allow(clippy::too_many_arguments)]
 fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     k: K,
@@ -480,6 +630,7 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     q: &LinkedPolygon,
     first: [Walk<'_>; 2],
     chains: &mut Chains,
+    shuffle_chains: bool,
     rng: &mut R,
     ws: &mut ClmWorkspace,
     probe: &mut P,
@@ -512,6 +663,9 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
             };
             *slot = None;
             let len = chains.get(set).len();
+            if shuffle_chains {
+                chains.0[set.chain_index()].shuffle(rng);
+            }
             *walked += len as u64;
             probe.chain_walk(len);
             // The LP this chain completes: (near set, its polygon, far chain, its polygon).
@@ -641,5 +795,37 @@ impl Walk<'_> {
         if c.v == self.t {
             c.done = true;
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::fisher_yates;
+    use rand::SeedableRng;
+    use rand::rngs::SmallRng;
+
+    #[test]
+    fn fisher_yates_draws_distinct_positions_and_restores_its_array() {
+        let mut rng = SmallRng::seed_from_u64(3);
+        let (mut perm, mut swaps, mut out) = (Vec::new(), Vec::new(), Vec::new());
+        let mut hits = [0u32; 10];
+        for r in [0, 1, 3, 9, 10, 20] {
+            for _ in 0..200 {
+                out.clear();
+                fisher_yates(10, r, &mut rng, &mut perm, &mut swaps, &mut out);
+                assert_eq!(out.len(), r.min(10));
+                let mut sorted = out.clone();
+                sorted.sort_unstable();
+                sorted.dedup();
+                assert_eq!(sorted.len(), out.len(), "distinct: {out:?}");
+                assert!(out.iter().all(|&i| i < 10));
+                assert_eq!(perm, (0..10).collect::<Vec<u32>>(), "restored");
+                if r == 1 {
+                    hits[out[0] as usize] += 1;
+                }
+            }
+        }
+        // Every position is drawn (200 single draws over 10 positions).
+        assert!(hits.iter().all(|&h| h > 0), "{hits:?}");
     }
 }
