@@ -92,6 +92,20 @@ impl PreparedPair {
         v.intersects_in(Exact, &self.lp, &self.lq, &mut self.rng, &mut self.clm, &mut ())
     }
 
+    /// Runs a CLM variant once under the exact kernel, returning its [`Counts`].
+    pub fn counts_clm_variant(&mut self, v: ClmVariant) -> Counts {
+        let mut counts = Counts::default();
+        v.intersects_in(
+            Exact,
+            &self.lp,
+            &self.lq,
+            &mut self.rng,
+            &mut self.clm,
+            &mut counts,
+        );
+        counts
+    }
+
     /// Runs CLM with sample factor `c` once under the exact kernel.
     #[inline]
     pub fn query_clm_factor(&mut self, c: f64) -> bool {

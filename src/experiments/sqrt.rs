@@ -140,7 +140,13 @@ fn variants(config: &Config, report: &mut Report) -> io::Result<String> {
         for relation in [Relation::Intersecting, Relation::Disjoint] {
             let mut prepared = pairs(config, Family::Rotated, relation, n, config.pairs_for(n));
             let mut times = vec![Vec::new(); named.len()];
+            let mut work = vec![0u64; named.len()];
             for pp in &mut prepared {
+                for (i, &(_, v)) in named.iter().enumerate() {
+                    work[i] += (0..SHAPES)
+                        .map(|_| pp.counts_clm_variant(v).lp_work())
+                        .sum::<u64>();
+                }
                 let mut rounds = vec![Vec::new(); named.len()];
                 for _ in 0..3 {
                     for (i, &(_, v)) in named.iter().enumerate() {
@@ -152,6 +158,7 @@ fn variants(config: &Config, report: &mut Report) -> io::Result<String> {
                 }
             }
             let medians: Vec<f64> = times.iter_mut().map(|x| median(x)).collect();
+            let queries = (prepared.len() * SHAPES) as f64;
             t.push_str(&format!("| 2^{l} | {} |", relation_name(relation)));
             for (i, (name, _)) in named.iter().enumerate() {
                 let ratio = medians[i] / medians[0];
@@ -162,8 +169,13 @@ fn variants(config: &Config, report: &mut Report) -> io::Result<String> {
                     (*name).into(),
                     super::ns(medians[i]),
                     format!("{ratio:.3}"),
+                    format!("{:.1}", work[i] as f64 / queries),
                 ]);
-                t.push_str(&format!(" {} ({ratio:.2}) |", short_ns(medians[i])));
+                t.push_str(&format!(
+                    " {} ({ratio:.2}); {:.0} |",
+                    short_ns(medians[i]),
+                    work[i] as f64 / queries
+                ));
             }
             t.push('\n');
         }

@@ -23,10 +23,16 @@
 //! 5. P against CH(C_Q): the LP on R_P and C_Q; intersecting hulls mean P ∩ Q ≠ ∅. Else
 //!    its line L′ gives the chain C′_P of P beyond L′ (step 3 again), and P ∩ CH(C_Q) ≠ ∅
 //!    iff CH(C′_P) ∩ CH(C_Q) ≠ ∅, one more LP. Q against CH(C_P) symmetrically.
-//!    Order of work: both sample-against-chain LPs first (either can end the query),
-//!    then C′_P and C′_Q walked together, then the two chain-against-chain LPs. Chain
-//!    walks always run in pairs, interleaved, so that their cache misses (each step is
-//!    a dependent load at a random arena position) overlap.
+//!    Order of work: chain walks run two at a time in lockstep, so that their cache
+//!    misses (each step is a dependent load at a random arena position) overlap, and
+//!    each LP runs as soon as the chain it needs is walked (either sample-against-chain
+//!    LP can end the query); the second chain its line calls for then takes the freed
+//!    walking slot (see `walk_and_decide`).
+//!
+//! The LPs' random order comes from CLM (thesis 3.3.5, [`LpOrder::Caller`]): samples
+//! drawn independently are in random order already, chains are shuffled once when
+//! walked, and the LP keeps the order given. [`ClmVariant`] also runs the LP's own
+//! shuffle and the thesis's Fisher–Yates sampling (3.3.1), for comparison.
 //!
 //! At most five LPs on O(r + n/r) points each, so the expected time is O(√n) for
 //! r = Θ(√n). The constant c = [`Clm::SAMPLE_FACTOR`] was chosen by measurement
@@ -448,8 +454,8 @@ fn sample<R: Rng + ?Sized>(
 }
 
 /// Appends min(r, n) distinct random positions of a polygon of `n` vertices to `out`
-/// by a partial Fisher–Yates shuffle of `perm` (the identity on 0..n before and after:
-/// the swaps are undone in reverse order). [`Sampling::FisherYates`].
+/// by a partial Fisher–Yates shuffle of `perm` (the identity before and after: the
+/// swaps are undone in reverse order). [`Sampling::FisherYates`].
 fn fisher_yates<R: Rng + ?Sized>(
     n: usize,
     r: usize,
@@ -458,10 +464,13 @@ fn fisher_yates<R: Rng + ?Sized>(
     swaps: &mut Vec<u32>,
     out: &mut Vec<u32>,
 ) {
-    if perm.len() != n {
+    // The identity on 0..len, of which 0..n is the identity on 0..n: one array serves
+    // polygons of every size, built once for the largest.
+    if perm.len() < n {
         perm.clear();
         perm.extend(0..n as u32);
     }
+    let perm = &mut perm[..n];
     swaps.clear();
     for last in (n - r.min(n)..n).rev() {
         let j = rng.random_range(0..=last);
@@ -809,6 +818,8 @@ mod tests {
         let mut rng = SmallRng::seed_from_u64(3);
         let (mut perm, mut swaps, mut out) = (Vec::new(), Vec::new(), Vec::new());
         let mut hits = [0u32; 10];
+        // A larger polygon first: its array serves the smaller one.
+        fisher_yates(25, 5, &mut rng, &mut perm, &mut swaps, &mut out);
         for r in [0, 1, 3, 9, 10, 20] {
             for _ in 0..200 {
                 out.clear();
@@ -819,7 +830,7 @@ mod tests {
                 sorted.dedup();
                 assert_eq!(sorted.len(), out.len(), "distinct: {out:?}");
                 assert!(out.iter().all(|&i| i < 10));
-                assert_eq!(perm, (0..10).collect::<Vec<u32>>(), "restored");
+                assert_eq!(perm, (0..perm.len() as u32).collect::<Vec<u32>>(), "restored");
                 if r == 1 {
                     hits[out[0] as usize] += 1;
                 }
