@@ -6,8 +6,8 @@
 
 use polysect::generate::{Family, Relation, map_pair, pair, regular_polygon};
 use polysect::intersect::{
-    Algorithm, ArrayIntersection, Clm, ClmWithFactor, ClmWorkspace, Convert, ConvertWorkspace, Iterations,
-    Linear, LinkedIntersection,
+    Algorithm, ArrayIntersection, Clm, ClmVariant, ClmWithFactor, ClmWorkspace, Convert, ConvertWorkspace,
+    Iterations, Linear, LinkedIntersection, LpOrder, Sampling,
 };
 use polysect::{ConvexPolygon, Exact, Fast, LinkedPolygon, Point, Precision};
 use rand::rngs::SmallRng;
@@ -312,4 +312,47 @@ fn algorithm_enum_and_probe() {
         assert!(!got, "c = {c}");
         assert!(it.0 > 0);
     }
+}
+
+/// The thesis's variants (Fisher–Yates sampling, the caller randomising the LP) answer
+/// as `Linear` does under the exact kernel, on the touching families and random
+/// pairs, several seeds per pair.
+#[test]
+fn thesis_variants_agree_with_linear() {
+    let mut rng = SmallRng::seed_from_u64(SEED + 9);
+    let mut ws = ClmWorkspace::default();
+    let variants = [
+        (Sampling::FisherYates, LpOrder::Lp),
+        (Sampling::Independent, LpOrder::Caller),
+        (Sampling::FisherYates, LpOrder::Caller),
+    ];
+    let (mut queries, mut intersecting) = (0u32, 0u32);
+    for &family in Family::TOUCHING.iter().chain([Family::Rotated].iter()) {
+        for relation in [Relation::Intersecting, Relation::Disjoint] {
+            for _ in 0..12 {
+                let n = random_size(&mut rng).min(4000);
+                let (p, q) = pair(family, n, relation, &mut rng);
+                let truth = Linear.intersects_with(Exact, &p, &q);
+                let lp = LinkedPolygon::from_convex_shuffled(&p, &mut rng);
+                let lq = LinkedPolygon::from_convex_shuffled(&q, &mut rng);
+                for (sampling, lp_order) in variants {
+                    let v = ClmVariant {
+                        sampling,
+                        lp_order,
+                        ..ClmVariant::default()
+                    };
+                    for _ in 0..3 {
+                        let got = v.intersects_in(Exact, &lp, &lq, &mut rng, &mut ws, &mut ());
+                        assert_eq!(got, truth, "{family:?} n = {n}, {sampling:?}, {lp_order:?}");
+                        queries += 1;
+                        intersecting += u32::from(got);
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        intersecting > queries / 5 && intersecting < queries * 4 / 5,
+        "{intersecting} of {queries}"
+    );
 }

@@ -157,7 +157,28 @@ fn every_experiment_writes_csv_and_svg() {
     );
 
     let (header, rows) = read_csv(&dir.join("clm_factor.csv"));
-    assert_eq!(column(&header, &rows, "factor"), ["0.5", "1"]);
+    // One row per factor and relation.
+    assert_eq!(column(&header, &rows, "factor"), ["0.5", "0.5", "1", "1"]);
+    assert_eq!(
+        column(&header, &rows, "relation"),
+        ["intersecting", "disjoint", "intersecting", "disjoint"]
+    );
+
+    // CLM against its memory limit and its variants: positive times at every size.
+    let (header, rows) = read_csv(&dir.join("clm_limit.csv"));
+    assert_eq!(rows.len(), 2 * 2, "two sizes, two relations");
+    for name in ["clm_ns", "limit_ns", "clm_over_limit"] {
+        for v in column(&header, &rows, name) {
+            let v: f64 = v.parse().unwrap();
+            assert!(v > 0.0 && v.is_finite(), "{name}: {v}");
+        }
+    }
+    let (header, rows) = read_csv(&dir.join("clm_variants.csv"));
+    assert_eq!(rows.len(), 2 * 4, "one size, two relations, four variants");
+    for v in column(&header, &rows, "median_ns") {
+        let v: f64 = v.parse().unwrap();
+        assert!(v > 0.0 && v.is_finite(), "{v}");
+    }
 
     // Tables: every time cell carries its unit (the headers no longer promise ns).
     assert!(!report.summary.contains("median ns"), "{}", report.summary);

@@ -356,3 +356,28 @@ fn large_sets_agree_with_hull_reference() {
     assert!(checked > 250);
     let _ = Fast.orient(Point::new(0., 0.), Point::new(1., 0.), Point::new(0., 1.));
 }
+
+/// The caller-ordered variant (the LP keeps the given order, thesis 3.3.5) gives the
+/// same exact verdicts and valid bitangents, on inputs in random and in sorted order
+/// (its worst case for the work, never for the answer).
+#[test]
+fn kept_order_agrees_with_brute_force() {
+    let mut rng = SmallRng::seed_from_u64(SEED + 7);
+    let mut ws = LpWorkspace::new();
+    ws.keep_order(true);
+    let mut tally = Tally {
+        cases: 0,
+        separated: 0,
+        fast_wrong: 0,
+    };
+    for i in 0..5_000 {
+        let (mut a, mut b) = random_pair(&mut rng);
+        if i % 2 == 0 {
+            a.sort_by(|u, v| u.x.total_cmp(&v.x));
+            b.sort_by(|u, v| u.y.total_cmp(&v.y));
+        }
+        check_pair(&a, &b, &mut rng, &mut ws, &mut tally);
+    }
+    assert_eq!(ws.redone, 0, "exact results must certify themselves");
+    assert!(tally.separated > tally.cases / 5 && tally.separated < tally.cases * 4 / 5);
+}

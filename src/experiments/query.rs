@@ -2,8 +2,8 @@
 //! workspaces and an RNG, so a timed loop measures the query alone.
 
 use crate::intersect::{
-    Algorithm, ArrayIntersection, Barba, ChazelleDobkin, Clm, ClmWithFactor, ClmWorkspace, Convert,
-    ConvertWorkspace, Counts, Dobkin, Iterations, Linear, LinkedIntersection, Probe,
+    Algorithm, ArrayIntersection, Barba, ChazelleDobkin, Clm, ClmVariant, ClmWithFactor, ClmWorkspace,
+    Convert, ConvertWorkspace, Counts, Dobkin, Iterations, Linear, LinkedIntersection, Probe,
 };
 use crate::kernel::{Exact, Fast, Kernel, Precision};
 use crate::polygon::{ConvexPolygon, LinkedPolygon};
@@ -79,6 +79,31 @@ impl PreparedPair {
             Precision::Exact => self.query_probed(alg, Exact, &mut counts),
         };
         (answer, counts)
+    }
+
+    /// The linked copies the linked tests run on (shuffled arenas).
+    pub fn arenas(&self) -> (&LinkedPolygon, &LinkedPolygon) {
+        (&self.lp, &self.lq)
+    }
+
+    /// Runs a CLM variant once under the exact kernel.
+    #[inline]
+    pub fn query_clm_variant(&mut self, v: ClmVariant) -> bool {
+        v.intersects_in(Exact, &self.lp, &self.lq, &mut self.rng, &mut self.clm, &mut ())
+    }
+
+    /// Runs a CLM variant once under the exact kernel, returning its [`Counts`].
+    pub fn counts_clm_variant(&mut self, v: ClmVariant) -> Counts {
+        let mut counts = Counts::default();
+        v.intersects_in(
+            Exact,
+            &self.lp,
+            &self.lq,
+            &mut self.rng,
+            &mut self.clm,
+            &mut counts,
+        );
+        counts
     }
 
     /// Runs CLM with sample factor `c` once under the exact kernel.

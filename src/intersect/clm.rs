@@ -23,10 +23,16 @@
 //! 5. P against CH(C_Q): the LP on R_P and C_Q; intersecting hulls mean P ∩ Q ≠ ∅. Else
 //!    its line L′ gives the chain C′_P of P beyond L′ (step 3 again), and P ∩ CH(C_Q) ≠ ∅
 //!    iff CH(C′_P) ∩ CH(C_Q) ≠ ∅, one more LP. Q against CH(C_P) symmetrically.
-//!    Order of work: both sample-against-chain LPs first (either can end the query),
-//!    then C′_P and C′_Q walked together, then the two chain-against-chain LPs. Chain
-//!    walks always run in pairs, interleaved, so that their cache misses (each step is
-//!    a dependent load at a random arena position) overlap.
+//!    Order of work: chain walks run two at a time in lockstep, so that their cache
+//!    misses (each step is a dependent load at a random arena position) overlap, and
+//!    each LP runs as soon as the chain it needs is walked (either sample-against-chain
+//!    LP can end the query); the second chain its line calls for then takes the freed
+//!    walking slot (see `walk_and_decide`).
+//!
+//! The LPs' random order comes from CLM (thesis 3.3.5, [`LpOrder::Caller`]): samples
+//! drawn independently are in random order already, chains are shuffled once when
+//! walked, and the LP keeps the order given. [`ClmVariant`] also runs the LP's own
+//! shuffle and the thesis's Fisher–Yates sampling (3.3.1), for comparison.
 //!
 //! At most five LPs on O(r + n/r) points each, so the expected time is O(√n) for
 //! r = Θ(√n). The constant c = [`Clm::SAMPLE_FACTOR`] was chosen by measurement
@@ -84,6 +90,7 @@ use crate::kernel::{Kernel, Orientation, Point};
 use crate::lp::{ArenaPoints, Bitangent, LpError, LpWorkspace, Separation, WitnessPoint, separating_line};
 use crate::polygon::{LinkedPolygon, SampleWorkspace};
 use rand::Rng;
+use rand::seq::SliceRandom;
 
 /// The Chazelle–Liu–Magen sublinear test with the default sample factor
 /// [`Clm::SAMPLE_FACTOR`]; see the module docs.
@@ -118,6 +125,64 @@ impl Clm {
 #[derive(Clone, Copy, Debug)]
 pub struct ClmWithFactor(pub f64);
 
+/// How [`ClmVariant`] draws its samples.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Sampling {
+    /// Ours (the default): independent uniform draws when r ≤ n/16, else distinct
+    /// positions by rejection with marks (see the module docs, step 1).
+    #[default]
+    Independent,
+    /// The thesis's (its 3.3.1): r distinct positions by a partial Fisher–Yates shuffle
+    /// of the positions 0..n. The thesis swaps the arena's nodes themselves; here an
+    /// index array in the workspace is shuffled and restored after the draw, so the
+    /// arena is untouched (n · 4 bytes of workspace, one extra random access per draw).
+    FisherYates,
+}
+
+/// Who puts the LP's constraints in random order in [`ClmVariant`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum LpOrder {
+    /// Every LP shuffles all its points (Seidel's algorithm as written).
+    Lp,
+    /// The default, from the thesis (its 3.3.5): the caller randomises. Independent
+    /// samples come in random order and are not shuffled again (distinct samples and
+    /// whole polygons, listed in arena order, are shuffled once); each chain is
+    /// shuffled once when walked; the LP keeps the order given
+    /// ([`LpWorkspace::keep_order`]), taking A's and B's points alternately. Seidel's
+    /// bound still holds: the first i points are a uniformly random subset of ⌈i/2⌉
+    /// of A and ⌊i/2⌋ of B, and the i-th is uniform among its set's part, so it is one
+    /// of the (at most two, barring ties) points the optimum is tight on in its set
+    /// with probability O(1/i). Measured faster than [`LpOrder::Lp`] (docs/results.md):
+    /// no random swaps per point and per LP, and a sample shared by two LPs or a chain
+    /// shared by two is randomised once.
+    #[default]
+    Caller,
+}
+
+/// The test with every implementation choice explicit: the sample factor and the
+/// thesis's variants of sampling and of the LP's randomisation, for experiments that
+/// compare them (`polysect bench sqrt`, docs/thesis.md). Every variant gives the same
+/// answers; only the time changes.
+#[derive(Clone, Copy, Debug)]
+pub struct ClmVariant {
+    /// Samples of ⌈factor·√n⌉ vertices.
+    pub factor: f64,
+    /// How the samples are drawn.
+    pub sampling: Sampling,
+    /// Who randomises the LPs' order.
+    pub lp_order: LpOrder,
+}
+
+impl Default for ClmVariant {
+    fn default() -> Self {
+        ClmVariant {
+            factor: Clm::SAMPLE_FACTOR,
+            sampling: Sampling::default(),
+            lp_order: LpOrder::default(),
+        }
+    }
+}
+
 /// Reusable scratch memory for [`Clm`]: sample marks and the sample, chain and LP buffers.
 #[derive(Clone, Debug, Default)]
 pub struct ClmWorkspace {
@@ -130,6 +195,10 @@ pub struct ClmWorkspace {
     chain2: Vec<u32>,
     lp: LpWorkspace,
     walked: u64,
+    /// The index array of [`Sampling::FisherYates`] (the identity between draws) and
+    /// the swaps of one draw, to restore it.
+    perm: Vec<u32>,
+    swaps: Vec<u32>,
     /// What the last certified query found, for its certificate.
     trace: Trace,
     scratch: WitnessScratch,
@@ -214,6 +283,45 @@ impl LinkedIntersection for ClmWithFactor {
     const NAME: &'static str = "clm";
     type Workspace = ClmWorkspace;
 
+    #[inline]
+    fn intersects_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
+        &self,
+        kernel: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        rng: &mut R,
+        workspace: &mut ClmWorkspace,
+        probe: &mut P,
+    ) -> bool {
+        let v = ClmVariant {
+            factor: self.0,
+            ..ClmVariant::default()
+        };
+        v.intersects_in(kernel, p, q, rng, workspace, probe)
+    }
+
+    #[inline]
+    fn derive_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
+        &self,
+        kernel: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        rng: &mut R,
+        workspace: &mut ClmWorkspace,
+        probe: &mut P,
+    ) -> Derivation {
+        let v = ClmVariant {
+            factor: self.0,
+            ..ClmVariant::default()
+        };
+        v.derive_in(kernel, p, q, rng, workspace, probe)
+    }
+}
+
+impl LinkedIntersection for ClmVariant {
+    const NAME: &'static str = "clm";
+    type Workspace = ClmWorkspace;
+
     fn intersects_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
         &self,
         k: K,
@@ -224,7 +332,7 @@ impl LinkedIntersection for ClmWithFactor {
         probe: &mut P,
     ) -> bool {
         let work_before = ws.lp.work + ws.walked;
-        let answer = clm::<K, R, P, false>(k, self.0, p, q, rng, ws, probe);
+        let answer = clm::<K, R, P, false>(k, *self, p, q, rng, ws, probe);
         for _ in work_before..ws.lp.work + ws.walked {
             probe.iteration();
         }
@@ -242,7 +350,7 @@ impl LinkedIntersection for ClmWithFactor {
         probe: &mut P,
     ) -> Derivation {
         let work_before = ws.lp.work + ws.walked;
-        let answer = clm::<K, R, P, true>(k, self.0, p, q, rng, ws, probe);
+        let answer = clm::<K, R, P, true>(k, *self, p, q, rng, ws, probe);
         for _ in work_before..ws.lp.work + ws.walked {
             probe.iteration();
         }
@@ -345,6 +453,36 @@ fn sample<R: Rng + ?Sized>(
     }
 }
 
+/// Appends min(r, n) distinct random positions of a polygon of `n` vertices to `out`
+/// by a partial Fisher–Yates shuffle of `perm` (the identity before and after: the
+/// swaps are undone in reverse order). [`Sampling::FisherYates`].
+fn fisher_yates<R: Rng + ?Sized>(
+    n: usize,
+    r: usize,
+    rng: &mut R,
+    perm: &mut Vec<u32>,
+    swaps: &mut Vec<u32>,
+    out: &mut Vec<u32>,
+) {
+    // The identity on 0..len, of which 0..n is the identity on 0..n: one array serves
+    // polygons of every size, built once for the largest.
+    if perm.len() < n {
+        perm.clear();
+        perm.extend(0..n as u32);
+    }
+    let perm = &mut perm[..n];
+    swaps.clear();
+    for last in (n - r.min(n)..n).rev() {
+        let j = rng.random_range(0..=last);
+        perm.swap(j, last);
+        swaps.push(j as u32);
+        out.push(perm[last]);
+    }
+    for (last, &j) in (n - swaps.len()..n).zip(swaps.iter().rev()) {
+        perm.swap(j as usize, last);
+    }
+}
+
 /// ⌈c·√n⌉, at least 3.
 fn sample_size(c: f64, n: usize) -> usize {
     let r = (c * (n as f64).sqrt()).ceil();
@@ -369,7 +507,7 @@ fn counted_lp<K: Kernel, R: Rng + ?Sized, P: Probe>(
 /// The test; with `CERT` it also records in `ws.trace` what its certificate needs.
 fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     k: K,
-    c: f64,
+    v: ClmVariant,
     p: &LinkedPolygon,
     q: &LinkedPolygon,
     rng: &mut R,
@@ -381,10 +519,28 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         ws.trace.lines.clear();
     }
     ws.lp.record_witness(CERT);
+    ws.lp.keep_order(v.lp_order == LpOrder::Caller);
     ws.rp.clear();
     ws.rq.clear();
-    sample(p, sample_size(c, p.len()), rng, &mut ws.sample, &mut ws.rp);
-    sample(q, sample_size(c, q.len()), rng, &mut ws.sample, &mut ws.rq);
+    let (rp_len, rq_len) = (sample_size(v.factor, p.len()), sample_size(v.factor, q.len()));
+    match v.sampling {
+        Sampling::Independent => {
+            sample(p, rp_len, rng, &mut ws.sample, &mut ws.rp);
+            sample(q, rq_len, rng, &mut ws.sample, &mut ws.rq);
+            if v.lp_order == LpOrder::Caller {
+                // Only independent draws come in random order.
+                for (r, poly) in [(&mut ws.rp, p), (&mut ws.rq, q)] {
+                    if r.len().saturating_mul(16) > poly.len() {
+                        r.shuffle(rng);
+                    }
+                }
+            }
+        }
+        Sampling::FisherYates => {
+            fisher_yates(p.len(), rp_len, rng, &mut ws.perm, &mut ws.swaps, &mut ws.rp);
+            fisher_yates(q.len(), rq_len, rng, &mut ws.perm, &mut ws.swaps, &mut ws.rq);
+        }
+    }
     let rp = ArenaPoints {
         polygon: p,
         positions: &ws.rp,
@@ -412,139 +568,168 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         return false; // the LP saw both polygons whole
     }
     let (tp, tq) = (ws.rp[t.a] as usize, ws.rq[t.b] as usize);
-    // P lies on the right of the line, Q on the left: P's far side is the left. The two
-    // walks are interleaved so that their cache misses overlap.
-    far_chains(
-        k,
+    // P lies on the right of the line, Q on the left: P's far side is the left.
+    let first = [
         Walk::new(p, t.start, t.end, Orientation::Ccw, tp),
-        &mut ws.cp,
         Walk::new(q, t.start, t.end, Orientation::Cw, tq),
-        &mut ws.cq,
-    );
-    ws.walked += (ws.cp.len() + ws.cq.len()) as u64;
-    probe.chain_walk(&ArenaPoints {
-        polygon: p,
-        positions: &ws.cp,
-    });
-    probe.chain_walk(&ArenaPoints {
-        polygon: q,
-        positions: &ws.cq,
-    });
+    ];
+    // The chains are walked into buffers taken out of the workspace for the schedule
+    // and put back after it, whatever it answers.
+    let mut chains = Chains([
+        std::mem::take(&mut ws.cp),
+        std::mem::take(&mut ws.cq),
+        std::mem::take(&mut ws.chain),
+        std::mem::take(&mut ws.chain2),
+    ]);
+    let shuffle_chains = v.lp_order == LpOrder::Caller;
+    let answer =
+        walk_and_decide::<K, R, P, CERT>(k, p, q, first, &mut chains, shuffle_chains, rng, ws, probe);
+    let Chains([cp, cq, chain, chain2]) = chains;
+    (ws.cp, ws.cq, ws.chain, ws.chain2) = (cp, cq, chain, chain2);
+    answer
+}
+
+/// The four chain buffers, indexed by [`Set::chain_index`].
+struct Chains([Vec<u32>; 4]);
+
+impl Chains {
+    fn get(&self, s: Set) -> &[u32] {
+        &self.0[s.chain_index()]
+    }
+}
+
+impl Set {
+    /// The buffer of a chain set in [`Chains`] (samples have none).
+    fn chain_index(self) -> usize {
+        match self {
+            Set::Cp => 0,
+            Set::Cq => 1,
+            Set::Chain => 2,
+            Set::Chain2 => 3,
+            Set::Rp | Set::Rq => unreachable!("samples are not walked"),
+        }
+    }
+}
+
+/// A walk in progress in one of the lockstep slots: the chain set it fills.
+struct Active<'a> {
+    set: Set,
+    walk: Walk<'a>,
+    cursor: Cursor,
+}
+
+/// Steps 3–5 of the module docs after the first LP, as a schedule of chain walks kept
+/// two at a time in lockstep, so that their cache misses (each step is a dependent
+/// load at a random arena position) overlap for the whole query rather than only
+/// while both walks of a pair last. `first` are the walks of C_P and C_Q. When a walk
+/// ends, the LP that needed it runs at once (an intersection there ends the query),
+/// and the walk that LP's line calls for takes the freed slot:
+/// * C_Q done: LP(R_P, C_Q); its line starts C′_P.
+/// * C_P done: LP(R_Q, C_P); its line starts C′_Q.
+/// * C′_P done: LP(C′_P, C_Q). C′_Q done: LP(C′_Q, C_P).
+///
+/// The answer is the disjunction of the four LPs' verdicts, so the order in which
+/// walks end does not change it. A sample that is its whole polygon has decided its
+/// sub-test already: its second chain is not walked. With `shuffle_chains` each chain
+/// is shuffled when walked ([`LpOrder::Caller`]).
+#[allow(clippy::too_many_arguments)]
+fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
+    k: K,
+    p: &LinkedPolygon,
+    q: &LinkedPolygon,
+    first: [Walk<'_>; 2],
+    chains: &mut Chains,
+    shuffle_chains: bool,
+    rng: &mut R,
+    ws: &mut ClmWorkspace,
+    probe: &mut P,
+) -> bool {
     let ClmWorkspace {
         rp,
         rq,
-        cp,
-        cq,
-        chain,
-        chain2,
         lp,
         walked,
         trace,
         ..
     } = ws;
-    // P against CH(C_Q) and Q against CH(C_P): first each sample against the other's
-    // chain (an intersection there ends the query), then both second chains, walked
-    // together, against the first chains.
-    let lines = [(&*rp, p, &*cq, q), (&*rq, q, &*cp, p)].map(|(rx, x, cy, y)| {
-        let sample = ArenaPoints {
-            polygon: x,
-            positions: rx,
-        };
-        let far = ArenaPoints {
-            polygon: y,
-            positions: cy,
-        };
-        match counted_lp(k, &sample, &far, rng, lp, probe) {
-            Ok(Separation::Separated(t)) => Some(t),
-            _ => None,
-        }
-    });
-    if CERT {
-        // The LP workspace keeps the witness of the last LP that found intersecting
-        // hulls, so that LP's sets are recorded.
-        let sets = [(Set::Rp, Set::Cq), (Set::Rq, Set::Cp)];
-        for (line, (a, b)) in lines.iter().zip(sets) {
-            match line {
-                Some(t) => trace.lines.push((*t, a, b)),
-                None => trace.meet = Some((a, b)),
-            }
-        }
-    }
-    let [Some(lp_line), Some(lq_line)] = lines else {
-        return true;
-    };
-    // A sample that is its whole polygon has decided its sub-test already.
     let p_open = rp.len() < p.len();
     let q_open = rq.len() < q.len();
-    far_chains(
-        k,
-        Walk::new(
-            p,
-            lp_line.start,
-            lp_line.end,
-            Orientation::Ccw,
-            rp[lp_line.a] as usize,
-        )
-        .only_if(p_open),
-        chain,
-        Walk::new(
-            q,
-            lq_line.start,
-            lq_line.end,
-            Orientation::Ccw,
-            rq[lq_line.a] as usize,
-        )
-        .only_if(q_open),
-        chain2,
-    );
-    *walked += (chain.len() + chain2.len()) as u64;
-    if p_open {
-        probe.chain_walk(&ArenaPoints {
-            polygon: p,
-            positions: chain,
-        });
+    let mut slots: [Option<Active<'_>>; 2] = [None, None];
+    for (slot, (walk, set)) in slots.iter_mut().zip(first.into_iter().zip([Set::Cp, Set::Cq])) {
+        let cursor = walk.start(k, &mut chains.0[set.chain_index()]);
+        *slot = Some(Active { set, walk, cursor });
     }
-    if q_open {
-        probe.chain_walk(&ArenaPoints {
-            polygon: q,
-            positions: chain2,
-        });
-    }
-    let mut meets = |near: &[u32],
-                     x: &LinkedPolygon,
-                     far: &[u32],
-                     y: &LinkedPolygon,
-                     rng: &mut R,
-                     lp: &mut LpWorkspace,
-                     sets: (Set, Set)| {
-        let near = ArenaPoints {
-            polygon: x,
-            positions: near,
-        };
-        let far = ArenaPoints {
-            polygon: y,
-            positions: far,
-        };
-        match counted_lp(k, &near, &far, rng, lp, probe) {
-            Ok(Separation::Separated(t)) => {
-                if CERT {
-                    trace.lines.push((t, sets.0, sets.1));
-                }
-                false
-            }
-            _ => {
-                if CERT {
-                    trace.meet = Some(sets);
-                }
-                true
+    loop {
+        for a in slots.iter_mut().flatten() {
+            if !a.cursor.done {
+                a.walk
+                    .advance(k, &mut a.cursor, &mut chains.0[a.set.chain_index()]);
             }
         }
-    };
-    (p_open && meets(chain, p, cq, q, rng, lp, (Set::Chain, Set::Cq)))
-        || (q_open && meets(chain2, q, cp, p, rng, lp, (Set::Chain2, Set::Cp)))
+        for slot in &mut slots {
+            let Some(set) = slot.as_ref().filter(|a| a.cursor.done).map(|a| a.set) else {
+                continue;
+            };
+            *slot = None;
+            let len = chains.get(set).len();
+            probe.chain_walk(&ArenaPoints {
+                polygon: if set.of() == Which::P { p } else { q },
+                positions: chains.get(set),
+            });
+            if shuffle_chains {
+                chains.0[set.chain_index()].shuffle(rng);
+            }
+            *walked += len as u64;
+            // The LP this chain completes: (near set, its polygon, far chain, its polygon).
+            let (near, far) = match set {
+                Set::Cq => (Set::Rp, Set::Cq),
+                Set::Cp => (Set::Rq, Set::Cp),
+                Set::Chain => (Set::Chain, Set::Cq),
+                _ => (Set::Chain2, Set::Cp),
+            };
+            let polygon = |s: Set| if s.of() == Which::P { p } else { q };
+            let near_points = match near {
+                Set::Rp => &rp[..],
+                Set::Rq => &rq[..],
+                s => chains.get(s),
+            };
+            let a = ArenaPoints {
+                polygon: polygon(near),
+                positions: near_points,
+            };
+            let b = ArenaPoints {
+                polygon: polygon(far),
+                positions: chains.get(far),
+            };
+            let Ok(Separation::Separated(line)) = counted_lp(k, &a, &b, rng, lp, probe) else {
+                if CERT {
+                    trace.meet = Some((near, far));
+                }
+                return true;
+            };
+            if CERT {
+                trace.lines.push((line, near, far));
+            }
+            // After a first chain, the second chain of the other polygon, beyond the line
+            // (the near set is on its right: its far side is the left).
+            let next = match near {
+                Set::Rp if p_open => Some((Set::Chain, p, rp[line.a])),
+                Set::Rq if q_open => Some((Set::Chain2, q, rq[line.a])),
+                _ => None,
+            };
+            if let Some((set, poly, t)) = next {
+                let walk = Walk::new(poly, line.start, line.end, Orientation::Ccw, t as usize);
+                let cursor = walk.start(k, &mut chains.0[set.chain_index()]);
+                *slot = Some(Active { set, walk, cursor });
+            }
+        }
+        if slots.iter().all(Option::is_none) {
+            return false;
+        }
+    }
 }
 
-/// One chain walk (see [`far_chains`]): from the tangent vertex at position `t` of
+/// One chain walk (see [`walk_and_decide`]): from the tangent vertex at position `t` of
 /// `poly`, along the side where the neighbour lies strictly on the `far` side of the
 /// directed line (s, e).
 struct Walk<'a> {
@@ -553,24 +738,11 @@ struct Walk<'a> {
     e: Point,
     far: Orientation,
     t: usize,
-    enabled: bool,
 }
 
 impl<'a> Walk<'a> {
     fn new(poly: &'a LinkedPolygon, s: Point, e: Point, far: Orientation, t: usize) -> Self {
-        Walk {
-            poly,
-            s,
-            e,
-            far,
-            t,
-            enabled: true,
-        }
-    }
-
-    fn only_if(mut self, enabled: bool) -> Self {
-        self.enabled = enabled;
-        self
+        Walk { poly, s, e, far, t }
     }
 }
 
@@ -597,9 +769,6 @@ impl Walk<'_> {
             steps_left: 0,
             done: true,
         };
-        if !self.enabled {
-            return done;
-        }
         let (poly, t) = (self.poly, self.t);
         let (next, prev) = (poly.next_at(t), poly.prev_at(t));
         let forward = if self.is_far(k, next) {
@@ -641,23 +810,36 @@ impl Walk<'_> {
     }
 }
 
-/// Runs two chain walks in lockstep (their memory accesses overlap). Each writes to its
-/// `out` the positions of the run of `poly`'s vertices strictly on the `far` side of
-/// the directed line (s, e), walked from the tangent vertex at position `t` (on the
-/// line, not on the far side), including the first non-far vertex at both ends; or
-/// (prev t, t, next t) when neither neighbour of t is on the far side. A disabled walk
-/// leaves its `out` empty.
-fn far_chains<K: Kernel>(k: K, w1: Walk<'_>, out1: &mut Vec<u32>, w2: Walk<'_>, out2: &mut Vec<u32>) {
-    let mut c1 = w1.start(k, out1);
-    let mut c2 = w2.start(k, out2);
-    while !c1.done && !c2.done {
-        w1.advance(k, &mut c1, out1);
-        w2.advance(k, &mut c2, out2);
-    }
-    while !c1.done {
-        w1.advance(k, &mut c1, out1);
-    }
-    while !c2.done {
-        w2.advance(k, &mut c2, out2);
+#[cfg(test)]
+mod tests {
+    use super::fisher_yates;
+    use rand::SeedableRng;
+    use rand::rngs::SmallRng;
+
+    #[test]
+    fn fisher_yates_draws_distinct_positions_and_restores_its_array() {
+        let mut rng = SmallRng::seed_from_u64(3);
+        let (mut perm, mut swaps, mut out) = (Vec::new(), Vec::new(), Vec::new());
+        let mut hits = [0u32; 10];
+        // A larger polygon first: its array serves the smaller one.
+        fisher_yates(25, 5, &mut rng, &mut perm, &mut swaps, &mut out);
+        for r in [0, 1, 3, 9, 10, 20] {
+            for _ in 0..200 {
+                out.clear();
+                fisher_yates(10, r, &mut rng, &mut perm, &mut swaps, &mut out);
+                assert_eq!(out.len(), r.min(10));
+                let mut sorted = out.clone();
+                sorted.sort_unstable();
+                sorted.dedup();
+                assert_eq!(sorted.len(), out.len(), "distinct: {out:?}");
+                assert!(out.iter().all(|&i| i < 10));
+                assert_eq!(perm, (0..perm.len() as u32).collect::<Vec<u32>>(), "restored");
+                if r == 1 {
+                    hits[out[0] as usize] += 1;
+                }
+            }
+        }
+        // Every position is drawn (200 single draws over 10 positions).
+        assert!(hits.iter().all(|&h| h > 0), "{hits:?}");
     }
 }

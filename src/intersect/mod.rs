@@ -48,7 +48,7 @@ mod trace;
 pub use barba::Barba;
 pub use certificate::{Certificate, CertificateError, Derivation, Which, verify, verify_linked};
 pub use chazelle_dobkin::ChazelleDobkin;
-pub use clm::{Clm, ClmWithFactor, ClmWorkspace};
+pub use clm::{Clm, ClmVariant, ClmWithFactor, ClmWorkspace, LpOrder, Sampling};
 pub use counts::{Counts, CountsSummary, LpCall};
 pub use dobkin::Dobkin;
 pub use fallback::{exact_certificate, proven, proven_linked};

@@ -8,8 +8,11 @@ use std::fmt;
 
 /// A finite indexed set of points: a slice, or arena positions of a [`LinkedPolygon`].
 pub trait PointSet {
+    /// The number of points.
     fn len(&self) -> usize;
+    /// Point `i`, for `i < len()`.
     fn point(&self, i: usize) -> Point;
+    /// Whether the set has no points.
     fn is_empty(&self) -> bool {
         self.len() == 0
     }
@@ -52,7 +55,9 @@ impl<T: PointSet + ?Sized> PointSet for &T {
 /// place: point `i` of the set is `polygon.point_at(positions[i])`.
 #[derive(Clone, Copy, Debug)]
 pub struct ArenaPoints<'a> {
+    /// The polygon whose arena holds the points.
     pub polygon: &'a LinkedPolygon,
+    /// Arena positions of the points, each below `polygon.len()`.
     pub positions: &'a [u32],
 }
 
@@ -72,9 +77,13 @@ impl PointSet for ArenaPoints<'_> {
 /// `a` and `b` index the tangent points: `A[a]` and `B[b]` lie on the line.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Bitangent {
+    /// The first point defining the line (an input point).
     pub start: Point,
+    /// The second point defining the line (an input point), distinct from `start`.
     pub end: Point,
+    /// Index in A of A's tangent point.
     pub a: usize,
+    /// Index in B of B's tangent point.
     pub b: usize,
 }
 
@@ -130,6 +139,11 @@ pub struct LpWorkspace {
     items: Vec<Item>,
     /// Whether [`Separation::Intersecting`] answers record their witness.
     record: bool,
+    /// Whether the caller has put the points in random order already
+    /// ([`keep_order`](Self::keep_order)).
+    keep_order: bool,
+    /// Scratch for the interleaving of a kept order.
+    spare: Vec<Item>,
     /// The witness of the last recorded [`Separation::Intersecting`] answer.
     witness: Witness,
     /// Constraints examined (violation tests and one-dimensional steps) since creation:
@@ -141,6 +155,7 @@ pub struct LpWorkspace {
 }
 
 impl LpWorkspace {
+    /// An empty workspace (it grows to the largest input on first use).
     pub fn new() -> Self {
         Self::default()
     }
@@ -150,6 +165,19 @@ impl LpWorkspace {
     /// recorded witness costs a few stores per intersecting answer.
     pub fn record_witness(&mut self, on: bool) {
         self.record = on;
+    }
+
+    /// Whether the LP keeps the order of the points as given instead of shuffling
+    /// them (off by default). The thesis's variant (its 3.3.5): the caller randomises,
+    /// so that points it knows to be in random order already (independent samples)
+    /// are not shuffled again. After the two bounding points the LP takes A's and B's
+    /// points alternately, each set in the caller's order (A's before B's would find
+    /// intersecting hulls only after all of A). The expected-linear bound of the module
+    /// docs assumes a uniform order of all points and holds only as far as the
+    /// caller's order is random. Answers are the same either way (every decision is
+    /// exact); only the work changes.
+    pub fn keep_order(&mut self, on: bool) {
+        self.keep_order = on;
     }
 
     /// After an answer [`Separation::Intersecting`] (recorded, see
@@ -298,21 +326,32 @@ where
         work,
         redone,
         record,
+        keep_order,
+        spare,
         witness,
     } = workspace;
+    let order = if *keep_order {
+        Order::Interleave(spare)
+    } else {
+        Order::Shuffle
+    };
     // The examined prefix points into the items, which are about to change (the
     // witness points carry their own coordinates and indices).
     witness.examined = 0;
     // Recording is chosen at compile time, so the plain instance carries no trace of it.
-    let solve_as =
-        |k_exact: bool, items: &mut Vec<Item>, rng: &mut R, work: &mut u64, witness: &mut Witness| match (
-            k_exact, *record,
-        ) {
-            (false, false) => solve::<K, R, A, B, false>(kernel, &src, items, na, rng, work, witness),
-            (false, true) => solve::<K, R, A, B, true>(kernel, &src, items, na, rng, work, witness),
-            (true, false) => solve::<Exact, R, A, B, false>(Exact, &src, items, na, rng, work, witness),
-            (true, true) => solve::<Exact, R, A, B, true>(Exact, &src, items, na, rng, work, witness),
-        };
+    let mut order = order;
+    let mut solve_as = |k_exact: bool,
+                        items: &mut Vec<Item>,
+                        rng: &mut R,
+                        work: &mut u64,
+                        witness: &mut Witness| match (k_exact, *record) {
+        (false, false) => solve::<K, R, A, B, false>(kernel, &src, items, na, &mut order, rng, work, witness),
+        (false, true) => solve::<K, R, A, B, true>(kernel, &src, items, na, &mut order, rng, work, witness),
+        (true, false) => {
+            solve::<Exact, R, A, B, false>(Exact, &src, items, na, &mut order, rng, work, witness)
+        }
+        (true, true) => solve::<Exact, R, A, B, true>(Exact, &src, items, na, &mut order, rng, work, witness),
+    };
     Ok(match solve_as(false, items, rng, work, witness) {
         Some(s) => s,
         // Only an inconsistent (fast) kernel gets here: redo it exactly.
@@ -421,13 +460,25 @@ impl<A: PointSet + ?Sized, B: PointSet + ?Sized> Source<'_, A, B> {
     }
 }
 
-/// The LP on `items` (A's points first, `na` of them, then B's). Reorders `items`.
-/// `None` when the final certification fails (inconsistent kernel).
+/// How [`solve`] orders the points after the bounding pair.
+enum Order<'s> {
+    /// A uniformly random order (ours).
+    Shuffle,
+    /// A's and B's alternately, each in the given order ([`LpWorkspace::keep_order`]),
+    /// through this scratch buffer.
+    Interleave(&'s mut Vec<Item>),
+}
+
+/// The LP on `items` (A's points first, `na` of them, then B's). Reorders `items`
+/// (as `order` says). `None` when the final certification fails
+/// (inconsistent kernel).
+#[allow(clippy::too_many_arguments)]
 fn solve<K: Kernel, R: Rng + ?Sized, A: PointSet + ?Sized, B: PointSet + ?Sized, const RECORD: bool>(
     k: K,
     src: &Source<'_, A, B>,
     items: &mut [Item],
     na: usize,
+    order: &mut Order<'_>,
     rng: &mut R,
     work: &mut u64,
     witness: &mut Witness,
@@ -476,11 +527,17 @@ fn solve<K: Kernel, R: Rng + ?Sized, A: PointSet + ?Sized, B: PointSet + ?Sized,
             items.len(),
         )
     } else {
-        // The bounding constraints first, then a uniformly random order of the rest.
+        // The bounding constraints first, then a uniformly random order of the rest
+        // (or the caller's order).
         items.swap(0, il);
         items.swap(1, jr);
-        for i in (3..items.len()).rev() {
-            items.swap(i, rng.random_range(2..=i));
+        match order {
+            Order::Shuffle => {
+                for i in (3..items.len()).rev() {
+                    items.swap(i, rng.random_range(2..=i));
+                }
+            }
+            Order::Interleave(spare) => interleave(&mut items[2..], na.saturating_sub(2), spare),
         }
         match incremental::<K, A, B, RECORD>(
             k,
@@ -506,6 +563,24 @@ fn solve<K: Kernel, R: Rng + ?Sized, A: PointSet + ?Sized, B: PointSet + ?Sized,
         }
     };
     certify::<K, RECORD>(k, line, ta, tb, on_line, &items[..checked], work, witness)
+}
+
+/// Rewrites `items` as its first `split` items and the rest alternately (x₀ y₀ x₁ y₁ …,
+/// then the longer part's tail), each part in its order; `spare` is scratch.
+fn interleave(items: &mut [Item], split: usize, spare: &mut Vec<Item>) {
+    spare.clear();
+    spare.extend_from_slice(items);
+    let (x, y) = spare.split_at(split.min(spare.len()));
+    let (mut i, mut j) = (0, 0);
+    for slot in items.iter_mut() {
+        if i < x.len() && (i <= j || j == y.len()) {
+            *slot = x[i];
+            i += 1;
+        } else {
+            *slot = y[j];
+            j += 1;
+        }
+    }
 }
 
 /// The extreme points, along the current line, of each set's points found on it.
