@@ -1,0 +1,73 @@
+//! The cost of the certified calls beside the plain ones, for instruction counters:
+//! `certified_cost ALGORITHM plain|certified intersecting|disjoint LOG2 QUERIES` runs
+//! QUERIES queries of one kind on 32 Rotated pairs of 2^LOG2 vertices per polygon
+//! (cycled, exact kernel). Count with e.g. `perf stat -e instructions` and subtract a
+//! run with 0 queries (the setup): docs/certificates.md, "Cost".
+
+use polysect::generate::{self, Family, Relation};
+use polysect::intersect::{Algorithm, ArrayIntersection, Barba, ChazelleDobkin, Dobkin, Linear};
+use polysect::{ConvexPolygon, Exact};
+use rand::SeedableRng;
+use rand::rngs::SmallRng;
+use std::hint::black_box;
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let usage = "usage: certified_cost ALGORITHM plain|certified intersecting|disjoint LOG2 QUERIES";
+    let [alg, mode, relation, log2, queries] = args.as_slice() else {
+        eprintln!("{usage}");
+        std::process::exit(2);
+    };
+    let alg: Algorithm = alg.parse().unwrap_or_else(|e| {
+        eprintln!("{e}");
+        std::process::exit(2)
+    });
+    let want = match relation.as_str() {
+        "intersecting" => true,
+        "disjoint" => false,
+        _ => {
+            eprintln!("{usage}");
+            std::process::exit(2)
+        }
+    };
+    let (Ok(log2), Ok(queries)) = (log2.parse::<u32>(), queries.parse::<usize>()) else {
+        eprintln!("{usage}");
+        std::process::exit(2)
+    };
+    let certified = mode == "certified";
+    let rel = if want {
+        Relation::Intersecting
+    } else {
+        Relation::Disjoint
+    };
+    let mut rng = SmallRng::seed_from_u64(0xce47);
+    let pairs: Vec<(ConvexPolygon, ConvexPolygon)> = (0..32)
+        .map(|_| {
+            loop {
+                let (p, q) = generate::pair(Family::Rotated, 1 << log2, rel, &mut rng);
+                if Linear.intersects(&p, &q) == want {
+                    break (p, q);
+                }
+            }
+        })
+        .collect();
+    let mut hits = 0usize;
+    for i in 0..queries {
+        let (p, q) = &pairs[i % pairs.len()];
+        let (p, q) = (black_box(p), black_box(q));
+        let hit = match (alg, certified) {
+            (Algorithm::Barba, false) => Barba.intersects_with(Exact, p, q),
+            (Algorithm::Barba, true) => Barba.certified_with(Exact, p, q).intersects(),
+            (Algorithm::Dobkin, false) => Dobkin.intersects_with(Exact, p, q),
+            (Algorithm::Dobkin, true) => Dobkin.certified_with(Exact, p, q).intersects(),
+            (Algorithm::ChazelleDobkin, false) => ChazelleDobkin.intersects_with(Exact, p, q),
+            (Algorithm::ChazelleDobkin, true) => ChazelleDobkin.certified_with(Exact, p, q).intersects(),
+            (Algorithm::Linear, false) => Linear.intersects_with(Exact, p, q),
+            (Algorithm::Linear, true) => Linear.certified_with(Exact, p, q).intersects(),
+            (other, true) => other.certified_with(Exact, p, q).intersects(),
+            (other, false) => other.intersects_with(Exact, p, q),
+        };
+        hits += usize::from(hit == want);
+    }
+    assert_eq!(hits, queries, "a wrong answer");
+}
