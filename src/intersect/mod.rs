@@ -44,7 +44,7 @@ mod linear;
 mod linear_linked;
 mod linked;
 
-pub use barba::Barba;
+pub use barba::{Barba, BarbaVariant};
 pub use certificate::{Certificate, CertificateError, Derivation, Which, verify, verify_linked};
 pub use chazelle_dobkin::ChazelleDobkin;
 pub use clm::{Clm, ClmWithFactor, ClmWorkspace};
