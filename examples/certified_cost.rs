@@ -2,10 +2,14 @@
 //! `certified_cost ALGORITHM plain|certified intersecting|disjoint LOG2 QUERIES` runs
 //! QUERIES queries of one kind on 32 Rotated pairs of 2^LOG2 vertices per polygon
 //! (cycled, exact kernel). Count with e.g. `perf stat -e instructions` and subtract a
-//! run with 0 queries (the setup): docs/certificates.md, "Cost".
+//! run with 0 queries (the setup): docs/certificates.md, "Cost". ALGORITHM is an
+//! algorithm's name or one of Barba's variants (docs/thesis.md): `barba-thirds`,
+//! `barba-finish3`, `barba-p-edges-first`, `barba-thesis` (all three).
 
 use polysect::generate::{self, Family, Relation};
-use polysect::intersect::{Algorithm, ArrayIntersection, Barba, ChazelleDobkin, Dobkin, Linear};
+use polysect::intersect::{
+    Algorithm, ArrayIntersection, Barba, BarbaVariant, ChazelleDobkin, Dobkin, Linear,
+};
 use polysect::{ConvexPolygon, Exact};
 use rand::SeedableRng;
 use rand::rngs::SmallRng;
@@ -18,10 +22,21 @@ fn main() {
         eprintln!("{usage}");
         std::process::exit(2);
     };
-    let alg: Algorithm = alg.parse().unwrap_or_else(|e| {
-        eprintln!("{e}");
-        std::process::exit(2)
-    });
+    let variant = match alg.as_str() {
+        "barba-thirds" => Some(0),
+        "barba-finish3" => Some(1),
+        "barba-p-edges-first" => Some(2),
+        "barba-thesis" => Some(3),
+        _ => None,
+    };
+    let alg: Algorithm = if variant.is_some() {
+        Algorithm::Barba
+    } else {
+        alg.parse().unwrap_or_else(|e| {
+            eprintln!("{e}");
+            std::process::exit(2)
+        })
+    };
     let want = match relation.as_str() {
         "intersecting" => true,
         "disjoint" => false,
@@ -55,17 +70,35 @@ fn main() {
     for i in 0..queries {
         let (p, q) = &pairs[i % pairs.len()];
         let (p, q) = (black_box(p), black_box(q));
-        let hit = match (alg, certified) {
-            (Algorithm::Barba, false) => Barba.intersects_with(Exact, p, q),
-            (Algorithm::Barba, true) => Barba.certified_with(Exact, p, q).intersects(),
-            (Algorithm::Dobkin, false) => Dobkin.intersects_with(Exact, p, q),
-            (Algorithm::Dobkin, true) => Dobkin.certified_with(Exact, p, q).intersects(),
-            (Algorithm::ChazelleDobkin, false) => ChazelleDobkin.intersects_with(Exact, p, q),
-            (Algorithm::ChazelleDobkin, true) => ChazelleDobkin.certified_with(Exact, p, q).intersects(),
-            (Algorithm::Linear, false) => Linear.intersects_with(Exact, p, q),
-            (Algorithm::Linear, true) => Linear.certified_with(Exact, p, q).intersects(),
-            (other, true) => other.certified_with(Exact, p, q).intersects(),
-            (other, false) => other.intersects_with(Exact, p, q),
+        let hit = match (variant, certified) {
+            (Some(0), false) => BarbaVariant::<true, 7, false>.intersects_with(Exact, p, q),
+            (Some(0), true) => BarbaVariant::<true, 7, false>
+                .certified_with(Exact, p, q)
+                .intersects(),
+            (Some(1), false) => BarbaVariant::<false, 4, false>.intersects_with(Exact, p, q),
+            (Some(1), true) => BarbaVariant::<false, 4, false>
+                .certified_with(Exact, p, q)
+                .intersects(),
+            (Some(2), false) => BarbaVariant::<false, 7, true>.intersects_with(Exact, p, q),
+            (Some(2), true) => BarbaVariant::<false, 7, true>
+                .certified_with(Exact, p, q)
+                .intersects(),
+            (Some(_), false) => BarbaVariant::<true, 4, true>.intersects_with(Exact, p, q),
+            (Some(_), true) => BarbaVariant::<true, 4, true>
+                .certified_with(Exact, p, q)
+                .intersects(),
+            (None, _) => match (alg, certified) {
+                (Algorithm::Barba, false) => Barba.intersects_with(Exact, p, q),
+                (Algorithm::Barba, true) => Barba.certified_with(Exact, p, q).intersects(),
+                (Algorithm::Dobkin, false) => Dobkin.intersects_with(Exact, p, q),
+                (Algorithm::Dobkin, true) => Dobkin.certified_with(Exact, p, q).intersects(),
+                (Algorithm::ChazelleDobkin, false) => ChazelleDobkin.intersects_with(Exact, p, q),
+                (Algorithm::ChazelleDobkin, true) => ChazelleDobkin.certified_with(Exact, p, q).intersects(),
+                (Algorithm::Linear, false) => Linear.intersects_with(Exact, p, q),
+                (Algorithm::Linear, true) => Linear.certified_with(Exact, p, q).intersects(),
+                (other, true) => other.certified_with(Exact, p, q).intersects(),
+                (other, false) => other.intersects_with(Exact, p, q),
+            },
         };
         hits += usize::from(hit == want);
     }

@@ -5,7 +5,10 @@
 //! (contiguous index ranges of the arrays, never copied), with the invariant
 //! **P ∩ Q ≠ ∅ ⇔ P' ∩ Q' ≠ ∅**. Since P' ⊆ P and Q' ⊆ Q, only "no intersection is
 //! lost" has to be shown at each pruning step. Each iteration looks at
-//! * the triangle `T_P = (P[a], P[mid], P[b]) ⊆ P'`, and
+//! * the triangle `T_P = (P[a], P[mid], P[b]) ⊆ P'` (in the first iteration, while P'
+//!   is all of P, the thesis's `(P[0], P[⌊n/3⌋], P[⌊2n/3⌋])`, whose three sides all have
+//!   chains of P behind them, so the first pruning of P keeps a third; measured faster
+//!   than first/middle/last on every size, docs/thesis.md, [`BarbaVariant`]), and
 //! * the edge hull `T_Q = H(e0) ∩ H(e1) ∩ H(e2) ⊇ Q'` of the first, middle and last
 //!   edges of Q's chain (`H(e)` is the closed half-plane left of edge e); T_Q is a
 //!   triangle or unbounded and is never constructed: only its three lines are used.
@@ -165,7 +168,7 @@ impl<const T: bool, const S: usize, const E: bool> Variant for BarbaVariant<T, S
 }
 
 /// [`Barba`]'s choices.
-type Ours = BarbaVariant<false, SMALL_Q, false>;
+type Ours = BarbaVariant<true, SMALL_Q, false>;
 
 /// `pr` with its `thirds` flag known to the compiler to be off when the variant never
 /// sets it (ours), so that the choice costs nothing there.
