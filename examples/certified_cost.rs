@@ -3,8 +3,10 @@
 //! QUERIES queries of one kind on 32 Rotated pairs of 2^LOG2 vertices per polygon
 //! (cycled, exact kernel). Count with e.g. `perf stat -e instructions` and subtract a
 //! run with 0 queries (the setup): docs/certificates.md, "Cost". ALGORITHM is an
-//! algorithm's name or one of Barba's variants (docs/thesis.md): `barba-thirds`,
-//! `barba-finish3`, `barba-p-edges-first`, `barba-thesis` (all three).
+//! algorithm's name or one of Barba's variants (docs/thesis.md): `barba-halving` (first
+//! triangle at first/middle/last), `barba-thirds` (= `barba`), and with the halving
+//! triangle `barba-finish3` (finish on three edges of Q) and `barba-p-edges-first`;
+//! `barba-thesis` has all three of the thesis's choices.
 
 use polysect::generate::{self, Family, Relation};
 use polysect::intersect::{
@@ -27,6 +29,7 @@ fn main() {
         "barba-finish3" => Some(1),
         "barba-p-edges-first" => Some(2),
         "barba-thesis" => Some(3),
+        "barba-halving" => Some(4),
         _ => None,
     };
     let alg: Algorithm = if variant.is_some() {
@@ -81,6 +84,10 @@ fn main() {
                 .intersects(),
             (Some(2), false) => BarbaVariant::<false, 7, true>.intersects_with(Exact, p, q),
             (Some(2), true) => BarbaVariant::<false, 7, true>
+                .certified_with(Exact, p, q)
+                .intersects(),
+            (Some(4), false) => BarbaVariant::<false, 7, false>.intersects_with(Exact, p, q),
+            (Some(4), true) => BarbaVariant::<false, 7, false>
                 .certified_with(Exact, p, q)
                 .intersects(),
             (Some(_), false) => BarbaVariant::<true, 4, true>.intersects_with(Exact, p, q),
