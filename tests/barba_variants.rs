@@ -93,7 +93,7 @@ fn variants_on_tiny_polygons() {
 }
 
 /// The variants stay logarithmic, and `Barba` is the variant with the thesis's first
-/// triangle (the faster one, docs/thesis.md).
+/// triangle (the faster one on balance, docs/thesis.md).
 #[test]
 fn variants_iterations_are_logarithmic() {
     let mut rng = SmallRng::seed_from_u64(SEED ^ 2);

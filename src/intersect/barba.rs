@@ -7,8 +7,9 @@
 //! lost" has to be shown at each pruning step. Each iteration looks at
 //! * the triangle `T_P = (P[a], P[mid], P[b]) ⊆ P'` (in the first iteration, while P'
 //!   is all of P, the thesis's `(P[0], P[⌊n/3⌋], P[⌊2n/3⌋])`, whose three sides all have
-//!   chains of P behind them, so the first pruning of P keeps a third; measured faster
-//!   than first/middle/last on every size, docs/thesis.md, [`BarbaVariant`]), and
+//!   chains of P behind them, so the first pruning of P keeps a third; cheaper than
+//!   first/middle/last on intersecting pairs, mixed on disjoint ones, docs/thesis.md,
+//!   [`BarbaVariant`]), and
 //! * the edge hull `T_Q = H(e0) ∩ H(e1) ∩ H(e2) ⊇ Q'` of the first, middle and last
 //!   edges of Q's chain (`H(e)` is the closed half-plane left of edge e); T_Q is a
 //!   triangle or unbounded and is never constructed: only its three lines are used.
