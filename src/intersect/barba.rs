@@ -5,7 +5,11 @@
 //! (contiguous index ranges of the arrays, never copied), with the invariant
 //! **P ∩ Q ≠ ∅ ⇔ P' ∩ Q' ≠ ∅**. Since P' ⊆ P and Q' ⊆ Q, only "no intersection is
 //! lost" has to be shown at each pruning step. Each iteration looks at
-//! * the triangle `T_P = (P[a], P[mid], P[b]) ⊆ P'`, and
+//! * the triangle `T_P = (P[a], P[mid], P[b]) ⊆ P'` (in the first iteration, while P'
+//!   is all of P, the thesis's `(P[0], P[⌊n/3⌋], P[⌊2n/3⌋])`, whose three sides all have
+//!   chains of P behind them, so the first pruning of P keeps a third; cheaper than
+//!   first/middle/last on intersecting pairs, mixed on disjoint ones, docs/thesis.md,
+//!   [`BarbaVariant`]), and
 //! * the edge hull `T_Q = H(e0) ∩ H(e1) ∩ H(e2) ⊇ Q'` of the first, middle and last
 //!   edges of Q's chain (`H(e)` is the closed half-plane left of edge e); T_Q is a
 //!   triangle or unbounded and is never constructed: only its three lines are used.
@@ -122,8 +126,90 @@ use crate::polygon::ConvexPolygon;
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Barba;
 
+/// [`Barba`] with the choices the thesis makes where ours differ, one parameter each
+/// (docs/thesis.md compares them; [`Barba`] is `BarbaVariant<false, 7, false>`):
+///
+/// * `THIRDS`: the first T_P at vertices 0, ⌊n/3⌋, ⌊2n/3⌋ of P (thesis §3.1.4), so that
+///   the first pruning of P keeps one of three chains; ours (`false`) takes the first,
+///   middle and last vertex, whose third side is an edge of P.
+/// * `SMALL_Q`: the main loop hands Q' to the constant-size finish once it has fewer
+///   than this many vertices, 4 to 7: 4 is the thesis's finish on three edges of Q
+///   (§3.1.8), 7 (ours) finishes from at most six vertices.
+/// * `P_EDGES_FIRST`: look for a separating line among T_P's edges (step 5) before
+///   T_Q's (step 2), the alternative order of §3.1.10; ours (`false`) tries T_Q's first,
+///   as the thesis's implementation does.
+///
+/// Every combination gives the same answers and certificates that verify; only the
+/// path (and so the cost) differs.
+///
+/// ```
+/// use polysect::{ConvexPolygon, intersect::{ArrayIntersection, BarbaVariant}};
+/// let p = ConvexPolygon::new([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+/// let apart = ConvexPolygon::new([[2.5, 1.0], [3.0, 0.0], [3.0, 2.0]])?;
+/// assert!(!BarbaVariant::<true, 4, true>.intersects(&p, &apart));
+/// # Ok::<(), polysect::PolygonError>(())
+/// ```
+#[derive(Clone, Copy, Debug, Default)]
+pub struct BarbaVariant<const THIRDS: bool, const SMALL_Q: usize, const P_EDGES_FIRST: bool>;
+
+/// The choices of a [`BarbaVariant`], as constants the algorithm is compiled with.
+trait Variant {
+    const THIRDS: bool;
+    const SMALL_Q: usize;
+    const P_EDGES_FIRST: bool;
+}
+
+impl<const T: bool, const S: usize, const E: bool> Variant for BarbaVariant<T, S, E> {
+    const THIRDS: bool = T;
+    const SMALL_Q: usize = {
+        assert!(S >= 4 && S <= SMALL_Q, "SMALL_Q must be in 4..=7");
+        S
+    };
+    const P_EDGES_FIRST: bool = E;
+}
+
+/// [`Barba`]'s choices.
+type Ours = BarbaVariant<true, SMALL_Q, false>;
+
+/// `pr` with its `thirds` flag known to the compiler to be off when the variant never
+/// sets it (ours), so that the choice costs nothing there.
+#[inline(always)]
+fn known<V: Variant>(pr: Range) -> Range {
+    Range {
+        thirds: V::THIRDS && pr.thirds,
+        ..pr
+    }
+}
+
 impl ArrayIntersection for Barba {
     const NAME: &'static str = "barba";
+
+    #[inline]
+    fn intersects_probed<K: Kernel, P: Probe>(
+        &self,
+        k: K,
+        p: &ConvexPolygon,
+        q: &ConvexPolygon,
+        probe: &mut P,
+    ) -> bool {
+        Ours::default().intersects_probed(k, p, q, probe)
+    }
+
+    /// See the module docs' "Certificate" section.
+    #[inline]
+    fn derive_probed<K: Kernel, P: Probe>(
+        &self,
+        k: K,
+        p: &ConvexPolygon,
+        q: &ConvexPolygon,
+        probe: &mut P,
+    ) -> Derivation {
+        Ours::default().derive_probed(k, p, q, probe)
+    }
+}
+
+impl<const T: bool, const S: usize, const E: bool> ArrayIntersection for BarbaVariant<T, S, E> {
+    const NAME: &'static str = "barba-variant";
 
     fn intersects_probed<K: Kernel, P: Probe>(
         &self,
@@ -133,7 +219,7 @@ impl ArrayIntersection for Barba {
         probe: &mut P,
     ) -> bool {
         let k = k.within([p.bounding_box(), q.bounding_box()]);
-        run::<K::Within, P, Plain>(k, p.vertices(), q.vertices(), probe)
+        run::<K::Within, P, Plain, Self>(k, p.vertices(), q.vertices(), probe)
     }
 
     /// See the module docs' "Certificate" section.
@@ -146,11 +232,11 @@ impl ArrayIntersection for Barba {
     ) -> Derivation {
         let k = k.within([p.bounding_box(), q.bounding_box()]);
         let (pv, qv) = (p.vertices(), q.vertices());
-        match run::<K::Within, P, Record>(k, pv, qv, probe) {
+        match run::<K::Within, P, Record, Self>(k, pv, qv, probe) {
             Exit::Apart { pr, q, line } => lift(k, pv, qv, pr, q, line)
                 .or_else(|| {
                     // The run with the roles exchanged ends on other pieces.
-                    match run::<K::Within, (), Record>(k, qv, pv, &mut ()) {
+                    match run::<K::Within, (), Record, Self>(k, qv, pv, &mut ()) {
                         Exit::Apart { pr, q, line } => lift(k, qv, pv, pr, q, line).map(Certificate::swapped),
                         _ => None,
                     }
@@ -164,11 +250,15 @@ impl ArrayIntersection for Barba {
 
 use Orientation::{Collinear, Cw};
 
-/// `len ≥ 3` consecutive vertices of a polygon from array index `start`.
+/// `len ≥ 3` consecutive vertices of a polygon from array index `start`. For P' it may
+/// also be the whole of P with the thesis's first triangle (`thirds`, see
+/// [`BarbaVariant`]): then T_P is at positions 0, ⌊n/3⌋, ⌊2n/3⌋ and all three sides of
+/// T_P are chords with chains of P behind them.
 #[derive(Clone, Copy, Debug)]
 struct Range {
     start: usize,
     len: usize,
+    thirds: bool,
 }
 
 impl Range {
@@ -187,6 +277,7 @@ impl Range {
         Range {
             start: if s >= v.len() { s - v.len() } else { s },
             len: to - from + 1,
+            thirds: false,
         }
     }
     /// Position of T_P's middle vertex (and of the middle edge of a chain).
@@ -194,10 +285,41 @@ impl Range {
     fn mid(self) -> usize {
         (self.len - 1) / 2
     }
+    /// Positions in P' of T_P's vertices.
+    #[inline]
+    fn tri(self) -> [usize; 3] {
+        if self.thirds {
+            [0, self.len / 3, 2 * self.len / 3]
+        } else {
+            [0, self.mid(), self.len - 1]
+        }
+    }
     /// The array indices of T_P's vertices.
     #[inline]
     fn triangle(self, n: usize) -> [usize; 3] {
-        [self.idx(n, 0), self.idx(n, self.mid()), self.idx(n, self.len - 1)]
+        self.tri().map(|pos| self.idx(n, pos))
+    }
+    /// The positions of the ends of the chain of P' behind T_P's edge `c` → `c + 1`
+    /// (for P''s closing chord, edge 2 of an ordinary range, there is none).
+    #[inline]
+    fn chain_ends(self, c: usize) -> Option<(usize, usize)> {
+        let t = self.tri();
+        match c {
+            0 | 1 => Some((t[c], t[c + 1])),
+            _ if self.thirds => Some((t[2], self.len)),
+            _ => None,
+        }
+    }
+    /// T_P's edge `a` → `a + 1` as a pair of triangle vertices whose counter-clockwise
+    /// chain of P lies in P' (an ordinary range's closing edge 2 → 0 is given as 0 → 2),
+    /// so that reducing the chord to an edge searches P' only.
+    #[inline]
+    fn chord(self, a: usize) -> (usize, usize) {
+        if a == 2 && !self.thirds {
+            (0, 2)
+        } else {
+            (a, (a + 1) % 3)
+        }
     }
 }
 
@@ -316,12 +438,6 @@ enum Step {
     Stuck,
 }
 
-/// Positions in P' of T_P's vertices.
-#[inline]
-fn t_positions(pr: Range) -> [usize; 3] {
-    [0, pr.mid(), pr.len - 1]
-}
-
 /// Positions in Q' of the starts of T_Q's three edges.
 #[inline]
 fn e_positions(qr: Range) -> [usize; 3] {
@@ -335,8 +451,8 @@ struct SideCache([[Option<Orientation>; 3]; 3]);
 impl SideCache {
     fn keep_rows(&mut self, chain: usize) {
         let old = self.0;
-        // Chain 0 keeps vertices 0 and 1 as the new 0 and 2; chain 1 keeps 1 and 2.
-        self.0 = [old[chain], [None; 3], old[chain + 1]];
+        // Chain c keeps vertices c and c + 1 as the new 0 and 2.
+        self.0 = [old[chain], [None; 3], old[(chain + 1) % 3]];
     }
     fn keep_cols(&mut self, pocket: usize) {
         for row in &mut self.0 {
@@ -346,33 +462,37 @@ impl SideCache {
     }
 }
 
-/// The test, returning what mode `M` asks for.
-fn run<K: Kernel, P: Probe, M: Mode>(k: K, pv: &[Point], qv: &[Point], probe: &mut P) -> M::Out {
+/// The test, returning what mode `M` asks for, in variant `V`.
+fn run<K: Kernel, P: Probe, M: Mode, V: Variant>(k: K, pv: &[Point], qv: &[Point], probe: &mut P) -> M::Out {
     let mut pr = Range {
         start: 0,
         len: pv.len(),
+        thirds: V::THIRDS,
     };
     let mut qr = Range {
         start: 0,
         len: qv.len(),
+        thirds: false,
     };
     let mut cache = SideCache([[None; 3]; 3]);
     loop {
-        if qr.len < SMALL_Q {
+        if qr.len < V::SMALL_Q {
             let qs = SmallQ {
                 range: qr,
                 chord: false,
             };
-            return against_small::<K, P, M>(k, pv, pr, qv, qs, probe);
+            return against_small::<K, P, M, V>(k, pv, pr, qv, qs, probe);
         }
         probe.iteration();
+        pr = known::<V>(pr);
         probe.kept(super::Kept::Barba {
             p: super::Span::new(pr.start, pr.len),
+            tp: pr.tri(),
             q: super::Span::new(qr.start, qr.len),
         });
-        let decision = step(k, pv, pr, qv, qr, &mut cache);
+        let decision = step::<K, V>(k, pv, pr, qv, qr, &mut cache);
         let (n, m) = (pv.len(), qv.len());
-        let (tp, ep) = (t_positions(pr), e_positions(qr));
+        let (tp, ep) = (pr.tri(), e_positions(qr));
         let apart = |line| Exit::Apart {
             pr,
             q: SmallQ {
@@ -389,7 +509,7 @@ fn run<K: Kernel, P: Probe, M: Mode>(k: K, pv: &[Point], qv: &[Point], probe: &m
                 });
             }
             Step::Crossing(a, j) => {
-                let (a, b) = chord_in_range(a as usize);
+                let (a, b) = pr.chord(a as usize);
                 return M::done(true, || Exit::Chord {
                     a: pr.idx(n, tp[a]),
                     b: pr.idx(n, tp[b]),
@@ -400,15 +520,13 @@ fn run<K: Kernel, P: Probe, M: Mode>(k: K, pv: &[Point], qv: &[Point], probe: &m
                 let e = ep[j as usize];
                 return M::done(false, || apart(Sep::QLine(qr.idx(m, e), qr.idx(m, e + 1))));
             }
-            Step::ApartEdge(2) => return M::done(false, || apart(Sep::PChord)),
+            Step::ApartEdge(2) if !pr.thirds => return M::done(false, || apart(Sep::PChord)),
             Step::ApartEdge(a) => return M::done(false, || apart(Sep::PEdge(pr.idx(n, tp[a as usize])))),
             Step::KeepP(chain) => {
-                let mid = pr.mid();
-                pr = if chain == 0 {
-                    pr.sub(pv, 0, mid)
-                } else {
-                    pr.sub(pv, mid, pr.len - 1)
+                let Some((from, to)) = pr.chain_ends(chain) else {
+                    unreachable!("only a chain behind a triangle edge is kept")
                 };
+                pr = pr.sub(pv, from, to);
                 cache.keep_rows(chain);
             }
             Step::KeepQ(2) => {
@@ -416,7 +534,7 @@ fn run<K: Kernel, P: Probe, M: Mode>(k: K, pv: &[Point], qv: &[Point], probe: &m
                     range: qr,
                     chord: true,
                 };
-                return against_small::<K, P, M>(k, pv, pr, qv, qs, probe);
+                return against_small::<K, P, M, V>(k, pv, pr, qv, qs, probe);
             }
             Step::KeepQ(pocket) => {
                 let m1 = (qr.len - 2) / 2;
@@ -435,10 +553,18 @@ fn run<K: Kernel, P: Probe, M: Mode>(k: K, pv: &[Point], qv: &[Point], probe: &m
     }
 }
 
-/// One iteration of the main loop (steps 1–5 of the module docs).
-fn step<K: Kernel>(k: K, pv: &[Point], pr: Range, qv: &[Point], qr: Range, cache: &mut SideCache) -> Step {
-    let mid = pr.mid();
-    let t = [pr.at(pv, 0), pr.at(pv, mid), pr.at(pv, pr.len - 1)];
+/// One iteration of the main loop (steps 1–5 of the module docs; in variant `V` step 5
+/// may come before step 2).
+fn step<K: Kernel, V: Variant>(
+    k: K,
+    pv: &[Point],
+    pr: Range,
+    qv: &[Point],
+    qr: Range,
+    cache: &mut SideCache,
+) -> Step {
+    let pr = known::<V>(pr);
+    let t = pr.tri().map(|pos| pr.at(pv, pos));
     let m1 = (qr.len - 2) / 2;
     let lines = [
         (qr.at(qv, 0), qr.at(qv, 1)),
@@ -462,6 +588,15 @@ fn step<K: Kernel>(k: K, pv: &[Point], pr: Range, qv: &[Point], qr: Range, cache
             };
         }
     }
+    let kv = [
+        lines[0].0, lines[0].1, lines[1].0, lines[1].1, lines[2].0, lines[2].1,
+    ];
+    // 5 first, in the variant that tries the edges of T_P before those of T_Q.
+    if V::P_EDGES_FIRST
+        && let Some(decision) = apart_by_triangle_edge(k, pr, &t, &kv, &lines)
+    {
+        return decision;
+    }
     // 2. A line of T_Q with T_P strictly outside.
     for (j, &line) in lines.iter().enumerate() {
         if (0..3).all(|i| side(i, j) == Cw) {
@@ -472,9 +607,6 @@ fn step<K: Kernel>(k: K, pv: &[Point], pr: Range, qv: &[Point], qr: Range, cache
         }
     }
     // 3. A vertex of K inside T_P.
-    let kv = [
-        lines[0].0, lines[0].1, lines[1].0, lines[1].1, lines[2].0, lines[2].1,
-    ];
     if let Some(x) = kv
         .iter()
         .position(|&x| (0..3).all(|i| k.orient(t[i], t[(i + 1) % 3], x) != Cw))
@@ -511,34 +643,38 @@ fn step<K: Kernel>(k: K, pv: &[Point], pr: Range, qv: &[Point], qr: Range, cache
         }
     }
     // 5. T_P and T_Q are disjoint: find the edge of T_P whose line misses T_Q.
-    for a in 0..3 {
-        let b = (a + 1) % 3;
-        if kv.iter().all(|&x| k.orient(t[a], t[b], x) == Cw) && line_misses_hull(k, (t[a], t[b]), &lines) {
-            if a == 2 {
-                return Step::ApartEdge(2);
-            }
-            return match keep_chain(pr, a) {
-                Some(chain) => Step::KeepP(chain),
-                None => Step::ApartEdge(a as u8),
-            };
-        }
+    if V::P_EDGES_FIRST {
+        return Step::Stuck;
     }
-    Step::Stuck
+    apart_by_triangle_edge(k, pr, &t, &kv, &lines).unwrap_or(Step::Stuck)
 }
 
-/// T_P's edge `a` → `a + 1` as a pair of triangle vertices whose counter-clockwise chain
-/// of P lies in P' (the closing edge 2 → 0 is given as 0 → 2), so that reducing the
-/// chord to an edge searches P' only.
+/// Step 5: an edge of T_P whose line has K strictly outside and misses T_Q, and what
+/// it prunes (`None`: no edge of T_P separates T_P from T_Q).
 #[inline]
-fn chord_in_range(a: usize) -> (usize, usize) {
-    if a == 2 { (0, 2) } else { (a, a + 1) }
+fn apart_by_triangle_edge<K: Kernel>(
+    k: K,
+    pr: Range,
+    t: &[Point; 3],
+    kv: &[Point; 6],
+    lines: &[(Point, Point); 3],
+) -> Option<Step> {
+    (0..3).find_map(|a| {
+        let b = (a + 1) % 3;
+        (kv.iter().all(|&x| k.orient(t[a], t[b], x) == Cw) && line_misses_hull(k, (t[a], t[b]), lines)).then(
+            || match keep_chain(pr, a) {
+                Some(chain) => Step::KeepP(chain),
+                None => Step::ApartEdge(a as u8),
+            },
+        )
+    })
 }
 
 /// Chain `c` of P' if it has an interior vertex; otherwise (`None`) P' ∩ Q' = ∅.
+#[inline]
 fn keep_chain(pr: Range, c: usize) -> Option<usize> {
-    let mid = pr.mid();
-    let interior = if c == 0 { mid >= 2 } else { pr.len - 1 - mid >= 2 };
-    interior.then_some(c)
+    let (from, to) = pr.chain_ends(c)?;
+    (to - from >= 2).then_some(c)
 }
 
 /// T_P lies strictly right of the line s→u and Q' on or left of it: the chain of P'
@@ -549,18 +685,20 @@ fn keep_chain(pr: Range, c: usize) -> Option<usize> {
 /// turn monotonically), so chain c holds it strictly inside iff u→s is turned
 /// strictly beyond the chain's first edge and strictly before its last edge.
 /// Otherwise the farthest point is a triangle vertex, strictly right of the line.
+#[inline]
 fn prune_by_line<K: Kernel>(k: K, pv: &[Point], pr: Range, (s, u): (Point, Point)) -> Option<usize> {
-    let mid = pr.mid();
-    let last = pr.len - 1;
     let at = |i: usize| pr.at(pv, i);
     let holds_peak = |from: usize, to: usize| {
         let (first, end) = ((at(from), at(from + 1)), (at(to - 1), at(to)));
         !same_direction(k, first, (u, s)) && turn_gt(k, first, end, (u, s))
     };
-    if mid >= 2 && holds_peak(0, mid) {
+    let t = pr.tri();
+    if t[1] - t[0] >= 2 && holds_peak(t[0], t[1]) {
         Some(0)
-    } else if last - mid >= 2 && holds_peak(mid, last) {
+    } else if t[2] - t[1] >= 2 && holds_peak(t[1], t[2]) {
         Some(1)
+    } else if pr.thirds && pr.len - t[2] >= 2 && holds_peak(t[2], pr.len) {
+        Some(2)
     } else {
         None
     }
@@ -590,7 +728,7 @@ fn line_misses_hull<K: Kernel>(k: K, l: (Point, Point), lines: &[(Point, Point);
 }
 
 /// Prunes P' against a Q' of at most six vertices (or a segment) given explicitly.
-fn against_small<K: Kernel, P: Probe, M: Mode>(
+fn against_small<K: Kernel, P: Probe, M: Mode, V: Variant>(
     k: K,
     pv: &[Point],
     mut pr: Range,
@@ -607,34 +745,29 @@ fn against_small<K: Kernel, P: Probe, M: Mode>(
     let n = pv.len();
     loop {
         probe.iteration();
+        pr = known::<V>(pr);
         probe.kept(super::Kept::BarbaSmall {
             p: super::Span::new(pr.start, pr.len),
+            tp: pr.tri(),
             q: &idx[..len],
         });
-        let mid = pr.mid();
-        let t = [pr.at(pv, 0), pr.at(pv, mid), pr.at(pv, pr.len - 1)];
+        let tp = pr.tri();
+        let t = tp.map(|pos| pr.at(pv, pos));
         let Some(axis) = separating_axis(k, &t, qs) else {
             return M::done(true, || Exit::Small { pr, qs: small });
         };
         let keep = match axis {
             Axis::OfQ(i, j) => prune_by_line(k, pv, pr, (qs[i], qs[j])),
-            Axis::OfTriangle(2) => None,
             Axis::OfTriangle(c) => keep_chain(pr, c),
         };
-        match keep {
-            Some(c) => {
-                pr = if c == 0 {
-                    pr.sub(pv, 0, mid)
-                } else {
-                    pr.sub(pv, mid, pr.len - 1)
-                }
-            }
+        match keep.and_then(|c| pr.chain_ends(c)) {
+            Some((from, to)) => pr = pr.sub(pv, from, to),
             None => {
                 return M::done(false, || {
                     let line = match axis {
                         Axis::OfQ(i, j) => Sep::QLine(idx[i], idx[j]),
-                        Axis::OfTriangle(2) => Sep::PChord,
-                        Axis::OfTriangle(c) => Sep::PEdge(pr.idx(n, [0, mid][c])),
+                        Axis::OfTriangle(2) if !pr.thirds => Sep::PChord,
+                        Axis::OfTriangle(c) => Sep::PEdge(pr.idx(n, tp[c])),
                     };
                     Exit::Apart { pr, q: small, line }
                 });
@@ -681,7 +814,7 @@ fn fallback<K: Kernel>(k: K, pv: &[Point], pr: Range, qv: &[Point], qr: Range) -
 /// the pair disjoint (or an inconsistent kernel gets stuck): what [`Linear`]'s and
 /// [`Dobkin`](super::Dobkin)'s certified calls use for intersecting pairs.
 pub(crate) fn meeting_certificate<K: Kernel>(k: K, pv: &[Point], qv: &[Point]) -> Option<Certificate> {
-    meet_certificate(k, pv, qv, run::<K, (), Record>(k, pv, qv, &mut ()))
+    meet_certificate(k, pv, qv, run::<K, (), Record, Ours>(k, pv, qv, &mut ()))
 }
 
 /// The certificate of a meeting exit (`None` for the others).
@@ -733,7 +866,7 @@ fn small_witness<K: Kernel>(
             });
         }
         let a = (0..3).find(|&a| segments_intersect(k, tp[a], tp[(a + 1) % 3], qp[0], qp[1]))?;
-        let (a, b) = chord_in_range(a);
+        let (a, b) = pr.chord(a);
         return resolve_chords(k, pv, (t[a], t[b]), qv, (qi[0], qi[1]));
     }
     let mut t_side = [[Collinear; SMALL_Q]; 3];
@@ -771,7 +904,7 @@ fn small_witness<K: Kernel>(
             })
             .map(|a| (a, e))
     })?;
-    let (a, b) = chord_in_range(a);
+    let (a, b) = pr.chord(a);
     resolve_chords(k, pv, (t[a], t[b]), qv, (qi[e], qi[(e + 1) % len]))
 }
 
@@ -815,6 +948,7 @@ fn lift<K: Kernel>(k: K, pv: &[Point], qv: &[Point], pr: Range, q: SmallQ, line:
         }
         Sep::PEdge(e) => {
             let (s, u) = (pv[e], pv[(e + 1) % n]);
+            // Candidates only (each is checked): a Q' of at most six vertices whole.
             let (idx, len) = if q.range.len < SMALL_Q || q.chord {
                 q.indices(m)
             } else {

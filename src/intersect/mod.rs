@@ -45,7 +45,7 @@ mod linear_linked;
 mod linked;
 mod trace;
 
-pub use barba::Barba;
+pub use barba::{Barba, BarbaVariant};
 pub use certificate::{Certificate, CertificateError, Derivation, Which, verify, verify_linked};
 pub use chazelle_dobkin::ChazelleDobkin;
 pub use clm::{Clm, ClmVariant, ClmWithFactor, ClmWorkspace, LpOrder, Sampling};

@@ -73,12 +73,15 @@ impl Span {
 #[derive(Clone, Copy, Debug)]
 pub enum Kept<'a> {
     /// Barba–Langerman's main loop: P' (vertices `p` of P) and Q' (vertices `q` of
-    /// Q). T_P is P''s vertices at positions 0, (len − 1)/2 and len − 1; T_Q's edges
-    /// start at Q''s positions 0, (len − 2)/2 and len − 2. Invariant: P and Q intersect
-    /// if and only if CH(P') and CH(Q') do.
+    /// Q). T_P is P''s vertices at positions `tp`; T_Q's edges start at Q''s positions
+    /// 0, (len − 2)/2 and len − 2. Invariant: P and Q intersect if and only if CH(P')
+    /// and CH(Q') do.
     Barba {
         /// P'.
         p: Span,
+        /// T_P's vertices, as positions in P' (0, len/3, 2·len/3 on the first step and
+        /// along chains that started there, else 0, (len − 1)/2, len − 1).
+        tp: [usize; 3],
         /// Q'.
         q: Span,
     },
@@ -87,6 +90,8 @@ pub enum Kept<'a> {
     BarbaSmall {
         /// P'.
         p: Span,
+        /// T_P's vertices, as positions in P'.
+        tp: [usize; 3],
         /// Q''s vertices.
         q: &'a [usize],
     },
@@ -528,9 +533,8 @@ impl Probe for Tracer<'_> {
         }
         let (p, q) = (self.p, self.q);
         match kept {
-            Kept::Barba { p: pr, q: qr } => {
-                let mid = (pr.len - 1) / 2;
-                let t = vec![at(p, pr, 0), at(p, pr, mid), at(p, pr, pr.len - 1)];
+            Kept::Barba { p: pr, tp, q: qr } => {
+                let t = tp.iter().map(|&i| at(p, pr, i)).collect();
                 let m1 = (qr.len.max(2) - 2) / 2;
                 let mut marks = vec![Mark {
                     role: Role::Triangle,
@@ -550,9 +554,8 @@ impl Probe for Tracer<'_> {
                 );
                 self.step(text, [Some(vec![pr]), Some(vec![qr])], marks);
             }
-            Kept::BarbaSmall { p: pr, q: qs } => {
-                let mid = (pr.len - 1) / 2;
-                let t = vec![at(p, pr, 0), at(p, pr, mid), at(p, pr, pr.len - 1)];
+            Kept::BarbaSmall { p: pr, tp, q: qs } => {
+                let t = tp.iter().map(|&i| at(p, pr, i)).collect();
                 let marks = vec![
                     Mark {
                         role: Role::Triangle,
