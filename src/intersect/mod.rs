@@ -53,6 +53,7 @@ pub use dobkin::Dobkin;
 pub use fallback::{exact_certificate, proven, proven_linked};
 pub use linear::{Linear, brute_force};
 pub use linear_linked::LinearLinked;
+pub(crate) use linear_linked::separating_edge_at;
 pub(crate) use linked::fresh_rng;
 pub use linked::{Convert, ConvertWorkspace, LinkedIntersection};
 
