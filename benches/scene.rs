@@ -61,7 +61,9 @@ enum Motion {
     Rigid,
     /// Every polygon teleported to a random place each frame (no coherence).
     Teleport,
-    Deform { moves: usize },
+    Deform {
+        moves: usize,
+    },
     Static,
 }
 

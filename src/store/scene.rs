@@ -255,6 +255,8 @@ impl<K: Kernel> Scene<K> {
         self.rng = SmallRng::seed_from_u64(seed);
     }
 
+    /// How queries are answered (the planner unless [`set_strategy`](Self::set_strategy)
+    /// chose otherwise).
     pub fn strategy(&self) -> Strategy {
         self.strategy
     }
@@ -264,10 +266,13 @@ impl<K: Kernel> Scene<K> {
         self.strategy = strategy;
     }
 
+    /// The cost model the planner uses.
     pub fn costs(&self) -> CostModel {
         self.costs
     }
 
+    /// Replaces the cost model (for example one measured by [`calibrate`](Self::calibrate)
+    /// elsewhere and stored).
     pub fn set_costs(&mut self, costs: CostModel) {
         self.costs = costs;
     }
@@ -283,6 +288,7 @@ impl<K: Kernel> Scene<K> {
         self.stats
     }
 
+    /// Zeroes the planner's and the warm starts' counters.
     pub fn reset_stats(&mut self) {
         self.stats = PlannerStats::default();
         self.warm.stats = WarmStats::default();
@@ -313,6 +319,7 @@ impl<K: Kernel> Scene<K> {
         self.entries.len()
     }
 
+    /// True when the scene holds no polygon.
     pub fn is_empty(&self) -> bool {
         self.entries.is_empty()
     }
@@ -355,7 +362,10 @@ impl<K: Kernel> Scene<K> {
             + self.warm.heap_bytes()
     }
 
-    /// Adds a polygon.
+    /// Adds a polygon. O(n) for its bounding box.
+    ///
+    /// # Panics
+    /// Never: a [`LinkedPolygon`] always has vertices.
     pub fn insert(&mut self, polygon: LinkedPolygon) -> PolygonId {
         let bbox = BoundingBox::of(polygon.iter().map(|(_, p)| p)).expect("a polygon has vertices");
         let generation = self.next_generation;
@@ -380,6 +390,9 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Validates `points` ([`ConvexPolygon::new`]) and adds the polygon.
+    ///
+    /// # Errors
+    /// [`SceneError::Polygon`] when the points are not a valid convex polygon.
     pub fn insert_points<I, P>(&mut self, points: I) -> Result<PolygonId, SceneError>
     where
         I: IntoIterator<Item = P>,
@@ -427,16 +440,25 @@ impl<K: Kernel> Scene<K> {
 
     /// The polygon's bounding box: it always contains the polygon, and is the tightest
     /// box unless an edit since the last conversion may have shrunk the polygon.
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`.
     pub fn bounding_box(&self, id: PolygonId) -> Result<BoundingBox, SceneError> {
         self.key(id).map(|k| self.entries[k].bbox)
     }
 
     /// Number of edits the polygon has had.
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`.
     pub fn version(&self, id: PolygonId) -> Result<u64, SceneError> {
         self.key(id).map(|k| self.entries[k].version)
     }
 
     /// True while the polygon holds a valid array snapshot.
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`.
     pub fn has_snapshot(&self, id: PolygonId) -> Result<bool, SceneError> {
         self.key(id).map(|k| self.entries[k].snapshot.is_some())
     }
@@ -513,6 +535,9 @@ impl<K: Kernel> Scene<K> {
     /// `StalePolygon`, `ForeignPolygon`; [`EditError::NonFinite`] when `dx` or `dy` is not finite or a
     /// coordinate would overflow; [`EditError::RoundingBreaksConvexity`] when rounding
     /// would leave the polygon not strictly convex. Nothing changes on error.
+    ///
+    /// # Panics
+    /// Never: a polygon always has vertices for its box.
     ///
     /// ```
     /// use polysect::store::Scene;
@@ -1143,6 +1168,12 @@ impl<K: Kernel> Scene<K> {
 
     /// Checks every invariant: each polygon's own, boxes contain their polygons (and equal
     /// them when marked tight), snapshots equal their polygons.
+    ///
+    /// # Errors
+    /// The first invariant found broken, with the polygon's slot.
+    ///
+    /// # Panics
+    /// Never: a polygon always has vertices for its box.
     pub fn debug_validate(&self) -> Result<(), String> {
         for (k, e) in &self.entries {
             e.polygon
