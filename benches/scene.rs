@@ -15,7 +15,14 @@
 //! - `deform-500x256`, `deform-100x4096`, `deform-20x65536`: 8 vertex moves per polygon
 //!   per frame (each vertex pushed in or out along its position relative to the chord of
 //!   its neighbours, only moves that keep the polygon strictly convex);
-//! - `static-1000x64`: nothing moves, all pairs every frame (parry keeps its tree).
+//! - `static-1000x64`: nothing moves, all pairs every frame (parry keeps its tree);
+//! - `rigid-20000x16`, `rigid-2000x1024`: larger rigid scenes;
+//! - `teleport-2000x16`, `teleport-2000x256`: every polygon translated to a random place
+//!   each frame (no coherence: the worst case for warm starts).
+//!
+//! Three sides run every frame, in an order rotating with the frame: `polysect-warm`
+//! (warm starts on), `polysect` (the scene as it comes: warm starts off) and `parry2d`;
+//! all three counts must agree.
 //!
 //! Both sides see the same coordinates bit for bit: vertices, positions and steps lie
 //! on a grid of 2^-40 well inside 2^12, so every translation is exact and parry's pose
@@ -416,16 +423,16 @@ impl Parry {
     }
 }
 
-/// The three sides criterion times: polysect with warm starts (the default), polysect
-/// without them, parry2d.
-const SIDES: [&str; 3] = ["polysect", "polysect-cold", "parry2d"];
+/// The three sides criterion times: polysect with warm starts, polysect as it comes
+/// (without them), parry2d.
+const SIDES: [&str; 3] = ["polysect-warm", "polysect", "parry2d"];
 
 /// Every side and the mirror; every frame is applied to each in turn.
 struct World {
     workload: Workload,
     mirror: Mirror,
     ours: Ours,
-    /// The same scene with warm starts off.
+    /// The same scene as it comes: warm starts off.
     cold: Ours,
     parry: Parry,
     frames: u64,
@@ -437,12 +444,12 @@ struct World {
 impl World {
     fn new(workload: Workload, costs: CostModel) -> World {
         let mirror = Mirror::new(&workload, 0x5ce4e ^ workload.count as u64);
-        let mut cold = Ours::new(&mirror, costs);
-        cold.scene.set_warm_starts(false);
+        let mut ours = Ours::new(&mirror, costs);
+        ours.scene.set_warm_starts(true);
         let mut world = World {
             workload,
-            ours: Ours::new(&mirror, costs),
-            cold,
+            ours,
+            cold: Ours::new(&mirror, costs),
             parry: Parry::new(&mirror),
             mirror,
             frames: 0,
@@ -456,8 +463,8 @@ impl World {
             world.parry.frame(&frame),
         );
         let want = world.mirror.brute_force_pairs();
-        assert_eq!(a, want, "{}: polysect against brute force", workload.name);
-        assert_eq!(b, want, "{}: polysect (cold) against brute force", workload.name);
+        assert_eq!(a, want, "{}: polysect (warm) against brute force", workload.name);
+        assert_eq!(b, want, "{}: polysect against brute force", workload.name);
         assert_eq!(c, want, "{}: parry2d against brute force", workload.name);
         eprintln!("{}: {want} intersecting pairs on the first frame", workload.name);
         world
@@ -520,9 +527,9 @@ impl World {
         let ws = self.ours.scene.warm_stats();
         let per = |x: u64| x as f64 / (self.frames + 1) as f64;
         format!(
-            "{}: polysect routes per frame: {:.0} box rejects, {:.0} array, {:.0} linear, {:.0} sampled tests, {:.1} conversions; warm starts {:.0} hits, {:.1} misses, {:.1} fills\n\
-             {}: paired over {} frames: polysect {:.3} ms, polysect-cold {:.3} ms, parry2d {:.3} ms per frame; \
-             warm/cold {:.3} (median per frame {:.3}), polysect/parry2d {:.2} (median {:.2}), cold/parry2d {:.2} (median {:.2})",
+            "{}: polysect-warm routes per frame: {:.0} box rejects, {:.0} array, {:.0} linear, {:.0} sampled tests, {:.1} conversions; warm starts {:.0} hits, {:.1} misses, {:.1} fills\n\
+             {}: paired over {} frames: polysect-warm {:.3} ms, polysect {:.3} ms, parry2d {:.3} ms per frame; \
+             warm/polysect {:.3} (median per frame {:.3}), warm/parry2d {:.2} (median {:.2}), polysect/parry2d {:.2} (median {:.2})",
             self.workload.name,
             per(st.box_rejects),
             per(st.array_tests),
@@ -558,9 +565,15 @@ fn scene(c: &mut Criterion) {
     // A workload is built (and its first frame brute-forced) only when criterion's
     // filter, the first free argument, may select it: a plain filter (names and `|`) is
     // matched here as criterion would; any other regex builds every workload.
-    let filter: Option<String> = std::env::args()
-        .skip(1)
-        .find(|a| !a.starts_with('-'))
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let takes_value = |o: &str| {
+        o.starts_with("--")
+            && !o.contains('=')
+            && !["--bench", "--test", "--list", "--exact", "--quick"].contains(&o)
+    };
+    let filter: Option<String> = (0..args.len())
+        .find(|&i| !args[i].starts_with('-') && (i == 0 || !takes_value(&args[i - 1])))
+        .map(|i| args[i].clone())
         .filter(|f| f.chars().all(|c| c.is_ascii_alphanumeric() || "-_/|".contains(c)));
     for workload in WORKLOADS {
         let wanted = |side: &str| {

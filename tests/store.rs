@@ -592,7 +592,7 @@ fn certified_scene_queries_verify_on_every_route() {
 }
 
 /// Warm starts across frames never change an answer. Two scenes built alike, one with
-/// warm starts (the default) and one without, follow the same frames: coherent
+/// warm starts and one without (the default), follow the same frames: coherent
 /// translations, vertex edits (moves, inserts, removals: cached handles die or their
 /// edges change), teleports, polygons removed and new ones inserted in the freed slots
 /// (same keys, new generations); every frame both report their intersecting pairs (every
@@ -655,8 +655,8 @@ fn warm_starts_never_change_an_answer() {
             }
         };
         let (mut warm, mut cold) = (build(), build());
-        assert!(warm.warm_starts());
-        cold.set_warm_starts(false);
+        assert!(!cold.warm_starts());
+        warm.set_warm_starts(true);
         for s in [&mut warm, &mut cold] {
             s.set_strategy(strategy);
             s.seed(seed);

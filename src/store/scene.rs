@@ -241,7 +241,7 @@ impl<K: Kernel> Scene<K> {
             stats: PlannerStats::default(),
             workspace: QueryWorkspace::default(),
             rng: crate::intersect::fresh_rng(),
-            warm_starts: true,
+            warm_starts: false,
             warm: WarmCache::default(),
         }
     }
@@ -295,7 +295,7 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Whether [`intersecting_pairs`](Self::intersecting_pairs) uses warm starts across
-    /// frames (on by default; the [module docs](super) and docs/store.md).
+    /// frames (off by default; the [module docs](super) and docs/store.md).
     pub fn warm_starts(&self) -> bool {
         self.warm_starts
     }
@@ -1085,7 +1085,7 @@ impl<K: Kernel> Scene<K> {
 
     /// All intersecting pairs `(a, b)` with `a` before `b` in slot order, sorted.
     ///
-    /// With warm starts (the default, [`set_warm_starts`](Self::set_warm_starts)), a
+    /// With warm starts ([`set_warm_starts`](Self::set_warm_starts), off by default), a
     /// pair found separated by the last call is first checked against the separating
     /// edge found then; the answer is the same, only its cost differs.
     pub fn intersecting_pairs(&mut self) -> Vec<(PolygonId, PolygonId)> {
