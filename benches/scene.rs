@@ -15,7 +15,14 @@
 //! - `deform-500x256`, `deform-100x4096`, `deform-20x65536`: 8 vertex moves per polygon
 //!   per frame (each vertex pushed in or out along its position relative to the chord of
 //!   its neighbours, only moves that keep the polygon strictly convex);
-//! - `static-1000x64`: nothing moves, all pairs every frame (parry keeps its tree).
+//! - `static-1000x64`: nothing moves, all pairs every frame (parry keeps its tree);
+//! - `rigid-20000x16`, `rigid-2000x1024`: larger rigid scenes;
+//! - `teleport-2000x16`, `teleport-2000x256`: every polygon translated to a random place
+//!   each frame (no coherence: the worst case for warm starts).
+//!
+//! Three sides run every frame, in an order rotating with the frame: `polysect-warm`
+//! (warm starts on), `polysect` (the scene as it comes: warm starts off) and `parry2d`;
+//! all three counts must agree.
 //!
 //! Both sides see the same coordinates bit for bit: vertices, positions and steps lie
 //! on a grid of 2^-40 well inside 2^12, so every translation is exact and parry's pose
@@ -59,7 +66,11 @@ fn snap(x: f64) -> f64 {
 #[derive(Clone, Copy, Debug)]
 enum Motion {
     Rigid,
-    Deform { moves: usize },
+    /// Every polygon teleported to a random place each frame (no coherence).
+    Teleport,
+    Deform {
+        moves: usize,
+    },
     Static,
 }
 
@@ -71,7 +82,7 @@ struct Workload {
     motion: Motion,
 }
 
-const WORKLOADS: [Workload; 6] = [
+const WORKLOADS: [Workload; 10] = [
     Workload {
         name: "rigid-2000x16",
         count: 2000,
@@ -83,6 +94,30 @@ const WORKLOADS: [Workload; 6] = [
         count: 2000,
         vertices: 256,
         motion: Motion::Rigid,
+    },
+    Workload {
+        name: "rigid-20000x16",
+        count: 20000,
+        vertices: 16,
+        motion: Motion::Rigid,
+    },
+    Workload {
+        name: "rigid-2000x1024",
+        count: 2000,
+        vertices: 1024,
+        motion: Motion::Rigid,
+    },
+    Workload {
+        name: "teleport-2000x16",
+        count: 2000,
+        vertices: 16,
+        motion: Motion::Teleport,
+    },
+    Workload {
+        name: "teleport-2000x256",
+        count: 2000,
+        vertices: 256,
+        motion: Motion::Teleport,
     },
     Workload {
         name: "deform-500x256",
@@ -188,6 +223,22 @@ impl Mirror {
                         *q = Point::new(q.x + v.0, q.y + v.1);
                     }
                     steps.push(*v);
+                }
+                Frame::Translate(steps)
+            }
+            Motion::Teleport => {
+                let mut steps = Vec::with_capacity(self.points.len());
+                for pts in &mut self.points {
+                    let p = pts[0];
+                    let to = (
+                        snap(self.rng.random_range(1.0..self.side - 1.0)),
+                        snap(self.rng.random_range(1.0..self.side - 1.0)),
+                    );
+                    let v = (to.0 - p.x, to.1 - p.y);
+                    for q in pts.iter_mut() {
+                        *q = Point::new(q.x + v.0, q.y + v.1);
+                    }
+                    steps.push(v);
                 }
                 Frame::Translate(steps)
             }
@@ -372,24 +423,33 @@ impl Parry {
     }
 }
 
-/// Both sides and the mirror; every frame is applied to both in turn.
+/// The three sides criterion times: polysect with warm starts, polysect as it comes
+/// (without them), parry2d.
+const SIDES: [&str; 3] = ["polysect-warm", "polysect", "parry2d"];
+
+/// Every side and the mirror; every frame is applied to each in turn.
 struct World {
     workload: Workload,
     mirror: Mirror,
     ours: Ours,
+    /// The same scene as it comes: warm starts off.
+    cold: Ours,
     parry: Parry,
     frames: u64,
-    /// Per frame, both sides' times (polysect, parry2d), whichever side criterion timed:
+    /// Per frame, each side's time (in [`SIDES`] order), whichever side criterion timed:
     /// the paired comparison printed after each workload.
-    paired: Vec<(Duration, Duration)>,
+    paired: Vec<[Duration; 3]>,
 }
 
 impl World {
     fn new(workload: Workload, costs: CostModel) -> World {
         let mirror = Mirror::new(&workload, 0x5ce4e ^ workload.count as u64);
+        let mut ours = Ours::new(&mirror, costs);
+        ours.scene.set_warm_starts(true);
         let mut world = World {
             workload,
-            ours: Ours::new(&mirror, costs),
+            ours,
+            cold: Ours::new(&mirror, costs),
             parry: Parry::new(&mirror),
             mirror,
             frames: 0,
@@ -397,81 +457,99 @@ impl World {
         };
         // The first frame, checked against brute force.
         let frame = world.mirror.step(workload.motion);
-        let (a, b) = (world.ours.frame(&frame), world.parry.frame(&frame));
+        let (a, b, c) = (
+            world.ours.frame(&frame),
+            world.cold.frame(&frame),
+            world.parry.frame(&frame),
+        );
         let want = world.mirror.brute_force_pairs();
-        assert_eq!(a, want, "{}: polysect against brute force", workload.name);
-        assert_eq!(b, want, "{}: parry2d against brute force", workload.name);
+        assert_eq!(a, want, "{}: polysect (warm) against brute force", workload.name);
+        assert_eq!(b, want, "{}: polysect against brute force", workload.name);
+        assert_eq!(c, want, "{}: parry2d against brute force", workload.name);
         eprintln!("{}: {want} intersecting pairs on the first frame", workload.name);
         world
     }
 
-    /// Runs `iters` frames timing one side for criterion; the other follows (timed only
-    /// for the paired comparison) and the counts are compared.
-    fn run(&mut self, iters: u64, time_ours: bool) -> Duration {
+    fn side_frame(&mut self, side: usize, frame: &Frame) -> usize {
+        match side {
+            0 => self.ours.frame(frame),
+            1 => self.cold.frame(frame),
+            _ => self.parry.frame(frame),
+        }
+    }
+
+    /// Runs `iters` frames, every side on each (in an order rotating with the frame, so
+    /// that none always runs after the same other); returns side `timed`'s total for
+    /// criterion, keeps every side's time for the paired comparison and compares the
+    /// counts.
+    fn run(&mut self, iters: u64, timed: usize) -> Duration {
         let mut total = Duration::ZERO;
         for _ in 0..iters {
             let frame = self.mirror.step(self.workload.motion);
-            let start = Instant::now();
-            let first = if time_ours {
-                self.ours.frame(&frame)
-            } else {
-                self.parry.frame(&frame)
-            };
-            let t_first = start.elapsed();
-            total += t_first;
-            let start = Instant::now();
-            let second = if time_ours {
-                self.parry.frame(&frame)
-            } else {
-                self.ours.frame(&frame)
-            };
-            let t_second = start.elapsed();
-            self.paired.push(if time_ours {
-                (t_first, t_second)
-            } else {
-                (t_second, t_first)
-            });
+            let mut times = [Duration::ZERO; 3];
+            let mut counts = [0; 3];
+            for i in 0..3 {
+                let side = (i + self.frames as usize) % 3;
+                let start = Instant::now();
+                counts[side] = self.side_frame(side, &frame);
+                times[side] = start.elapsed().max(Duration::from_nanos(1));
+            }
+            total += times[timed];
+            self.paired.push(times);
             self.frames += 1;
-            assert_eq!(
-                first, second,
-                "{} frame {}: pair counts differ (first side polysect: {time_ours})",
-                self.workload.name, self.frames
+            assert!(
+                counts[0] == counts[1] && counts[1] == counts[2],
+                "{} frame {}: pair counts differ: {counts:?} ({SIDES:?})",
+                self.workload.name,
+                self.frames
             );
         }
         total
     }
 
-    /// The paired comparison over every frame run so far: total time of each side over
-    /// the same frames, and the median of the per-frame ratios.
+    /// The paired comparison over every frame run so far: each side's mean time per
+    /// frame over the same frames, ratios of the totals and medians of the per-frame
+    /// ratios.
     fn paired_report(&self) -> String {
-        let (ours, parry): (Duration, Duration) = self
-            .paired
-            .iter()
-            .fold((Duration::ZERO, Duration::ZERO), |(a, b), &(x, y)| (a + x, b + y));
-        let mut ratios: Vec<f64> = self
-            .paired
-            .iter()
-            .map(|(x, y)| x.as_secs_f64() / y.as_secs_f64().max(1e-12))
-            .collect();
-        ratios.sort_by(f64::total_cmp);
         let frames = self.paired.len().max(1) as f64;
+        let ms = |i: usize| self.paired.iter().map(|t| t[i].as_secs_f64()).sum::<f64>() * 1e3 / frames;
+        let median = |i: usize, j: usize| {
+            let mut r: Vec<f64> = self
+                .paired
+                .iter()
+                .map(|t| t[i].as_secs_f64() / t[j].as_secs_f64())
+                .collect();
+            r.sort_by(f64::total_cmp);
+            r.get(r.len() / 2).copied().unwrap_or(f64::NAN)
+        };
+        let (warm, cold, parry) = (ms(0), ms(1), ms(2));
         let st = self.ours.scene.stats();
+        let ws = self.ours.scene.warm_stats();
         let per = |x: u64| x as f64 / (self.frames + 1) as f64;
         format!(
-            "{}: polysect routes per frame: {:.0} box rejects, {:.0} array, {:.0} linear, {:.0} sampled tests, {:.1} conversions\n\
-             {}: paired over {} frames: polysect {:.3} ms, parry2d {:.3} ms per frame, ratio of totals {:.2}, median per-frame ratio {:.2}",
+            "{}: polysect-warm routes per frame: {:.0} box rejects, {:.0} array, {:.0} linear, {:.0} sampled tests, {:.1} conversions; warm starts {:.0} hits, {:.1} misses, {:.1} fills\n\
+             {}: paired over {} frames: polysect-warm {:.3} ms, polysect {:.3} ms, parry2d {:.3} ms per frame; \
+             warm/polysect {:.3} (median per frame {:.3}), warm/parry2d {:.2} (median {:.2}), polysect/parry2d {:.2} (median {:.2})",
             self.workload.name,
             per(st.box_rejects),
             per(st.array_tests),
             per(st.linear_tests),
             per(st.sampled_tests),
             per(st.conversions),
+            per(ws.hits),
+            per(ws.misses),
+            per(ws.fills),
             self.workload.name,
             self.paired.len(),
-            ours.as_secs_f64() * 1e3 / frames,
-            parry.as_secs_f64() * 1e3 / frames,
-            ours.as_secs_f64() / parry.as_secs_f64().max(1e-12),
-            ratios.get(ratios.len() / 2).copied().unwrap_or(f64::NAN),
+            warm,
+            cold,
+            parry,
+            warm / cold,
+            median(0, 1),
+            warm / parry,
+            median(0, 2),
+            cold / parry,
+            median(1, 2),
         )
     }
 }
@@ -484,16 +562,37 @@ fn scene(c: &mut Criterion) {
         Scene::new().calibrate()
     };
     eprintln!("cost model: {costs:?}");
+    // A workload is built (and its first frame brute-forced) only when criterion's
+    // filter, the first free argument, may select it: a plain filter (names and `|`) is
+    // matched here as criterion would; any other regex builds every workload.
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let takes_value = |o: &str| {
+        o.starts_with("--")
+            && !o.contains('=')
+            && !["--bench", "--test", "--list", "--exact", "--quick"].contains(&o)
+    };
+    let filter: Option<String> = (0..args.len())
+        .find(|&i| !args[i].starts_with('-') && (i == 0 || !takes_value(&args[i - 1])))
+        .map(|i| args[i].clone())
+        .filter(|f| f.chars().all(|c| c.is_ascii_alphanumeric() || "-_/|".contains(c)));
     for workload in WORKLOADS {
+        let wanted = |side: &str| {
+            let id = format!("scene/{}/{side}", workload.name);
+            filter
+                .as_deref()
+                .is_none_or(|f| f.split('|').any(|alt| id.contains(alt)))
+        };
+        if !SIDES.iter().any(|s| wanted(s)) {
+            continue;
+        }
         let world = RefCell::new(World::new(workload, costs));
         let mut group = c.benchmark_group(format!("scene/{}", workload.name));
         group.sample_size(10);
-        group.bench_function(BenchmarkId::from_parameter("polysect"), |b| {
-            b.iter_custom(|iters| world.borrow_mut().run(iters, true))
-        });
-        group.bench_function(BenchmarkId::from_parameter("parry2d"), |b| {
-            b.iter_custom(|iters| world.borrow_mut().run(iters, false))
-        });
+        for (i, side) in SIDES.iter().enumerate() {
+            group.bench_function(BenchmarkId::from_parameter(side), |b| {
+                b.iter_custom(|iters| world.borrow_mut().run(iters, i))
+            });
+        }
         group.finish();
         // A workload filtered out on the command line ran no frame: nothing to pair.
         if !world.borrow().paired.is_empty() {

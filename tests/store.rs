@@ -590,3 +590,189 @@ fn certified_scene_queries_verify_on_every_route() {
         }
     }
 }
+
+/// Warm starts across frames never change an answer. Two scenes built alike, one with
+/// warm starts and one without (the default), follow the same frames: coherent
+/// translations, vertex edits (moves, inserts, removals: cached handles die or their
+/// edges change), teleports, polygons removed and new ones inserted in the freed slots
+/// (same keys, new generations); every frame both report their intersecting pairs (every
+/// third frame the certified call, each certificate verified), which must be equal, and
+/// every tenth frame equal to the exact reference on every pair. Every path of the warm
+/// start is taken: kept certificates that still hold, ones that fail, linear walks that
+/// fill the cache. The cache stays O(candidate pairs).
+///
+/// Half the runs are on a grid (integer vertices, steps of 1/4): there polygons touch
+/// at vertices and along edges all the time, where "strictly outside" matters.
+///
+/// Size: `POLYSECT_WARM_FRAMES` frames (default 150) per seed, strategy and layout.
+#[test]
+fn warm_starts_never_change_an_answer() {
+    use polysect::intersect::verify_linked;
+    use polysect::store::PolygonId;
+    let frames: usize = std::env::var("POLYSECT_WARM_FRAMES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(150);
+    let mut totals = polysect::store::WarmStats::default();
+    let runs = SEEDS
+        .iter()
+        .zip([Strategy::Planner, Strategy::Sampled, Strategy::Cached]);
+    for ((&seed, strategy), grid) in runs.flat_map(|r| [(r, false), (r, true)]) {
+        // A small convex polygon with integer vertices, or a scattered float one.
+        let shape = |rng: &mut SmallRng| {
+            let (cx, cy) = (rng.random_range(0..10) as f64, rng.random_range(0..10) as f64);
+            let points: Vec<Point> = (0..6)
+                .map(|_| {
+                    Point::new(
+                        cx + rng.random_range(0..4) as f64,
+                        cy + rng.random_range(0..4) as f64,
+                    )
+                })
+                .collect();
+            polysect::polygon::convex_hull(&points)
+        };
+        let build = || {
+            let mut rng = SmallRng::seed_from_u64(seed);
+            if !grid {
+                return scattered_scene(&mut rng, 40, 7);
+            }
+            let mut scene = Scene::new();
+            while scene.len() < 40 {
+                if let Ok(p) = shape(&mut rng) {
+                    scene.insert(LinkedPolygon::from_convex(&p));
+                }
+            }
+            scene
+        };
+        let step = |rng: &mut SmallRng| {
+            if grid {
+                (
+                    rng.random_range(-1..=1) as f64 * 0.25,
+                    rng.random_range(-1..=1) as f64 * 0.25,
+                )
+            } else {
+                (rng.random_range(-0.05..0.05), rng.random_range(-0.05..0.05))
+            }
+        };
+        let (mut warm, mut cold) = (build(), build());
+        assert!(!cold.warm_starts());
+        warm.set_warm_starts(true);
+        for s in [&mut warm, &mut cold] {
+            s.set_strategy(strategy);
+            s.seed(seed);
+        }
+        let mut ids: Vec<(PolygonId, PolygonId)> = warm.ids().zip(cold.ids()).collect();
+        let mut rng = SmallRng::seed_from_u64(seed ^ 0x3a77);
+        let mut velocity: Vec<(f64, f64)> = (0..ids.len()).map(|_| step(&mut rng)).collect();
+        for frame in 0..frames {
+            for (i, &(w, c)) in ids.clone().iter().enumerate() {
+                let r: f64 = rng.random();
+                if r < 0.7 {
+                    let (dx, dy) = velocity[i];
+                    assert_eq!(
+                        warm.translate(w, dx, dy).is_ok(),
+                        cold.translate(c, dx, dy).is_ok()
+                    );
+                } else if r < 0.85 {
+                    // The same random edit on both (same polygon, same generator state).
+                    let mut twin = rng.clone();
+                    let a = random_edit(&mut warm, w, &mut rng).is_ok();
+                    assert_eq!(a, random_edit(&mut cold, c, &mut twin).is_ok());
+                } else if r < 0.88 {
+                    let (dx, dy) = (rng.random_range(-6..=6) as f64, rng.random_range(-6..=6) as f64);
+                    assert_eq!(
+                        warm.translate(w, dx, dy).is_ok(),
+                        cold.translate(c, dx, dy).is_ok()
+                    );
+                } else if r < 0.9 {
+                    // Removed, and a new polygon takes the freed slot.
+                    warm.remove(w).unwrap();
+                    cold.remove(c).unwrap();
+                    let p = if grid {
+                        let mut p = shape(&mut rng);
+                        while p.is_err() {
+                            p = shape(&mut rng);
+                        }
+                        p.unwrap()
+                    } else {
+                        let n = 1usize << rng.random_range(2..=6);
+                        let p = regular_polygon(n, rng.random_range(0.3..1.5));
+                        let (dx, dy) = (rng.random_range(-4.0..4.0), rng.random_range(-4.0..4.0));
+                        p.map(|v| Point::new(v.x + dx, v.y + dy)).unwrap()
+                    };
+                    let (nw, nc) = (
+                        warm.insert(LinkedPolygon::from_convex(&p)),
+                        cold.insert(LinkedPolygon::from_convex(&p)),
+                    );
+                    ids[i] = (nw, nc);
+                    velocity[i] = step(&mut rng);
+                }
+            }
+            // Pairs as indices into `ids`, comparable across the two scenes.
+            let index = |scene: usize, x: PolygonId| {
+                ids.iter()
+                    .position(|p| if scene == 0 { p.0 == x } else { p.1 == x })
+                    .unwrap()
+            };
+            let got: Vec<(usize, usize)> = if frame % 3 == 0 {
+                let certified = warm.intersecting_pairs_certified();
+                for (a, b, c) in &certified {
+                    let (p, q) = (warm.polygon(*a).unwrap(), warm.polygon(*b).unwrap());
+                    assert_eq!(verify_linked(p, q, c), Ok(()), "frame {frame}: {c:?}");
+                }
+                certified
+                    .iter()
+                    .map(|&(a, b, _)| (index(0, a), index(0, b)))
+                    .collect()
+            } else {
+                warm.intersecting_pairs()
+                    .into_iter()
+                    .map(|(a, b)| (index(0, a), index(0, b)))
+                    .collect()
+            };
+            let want: Vec<(usize, usize)> = cold
+                .intersecting_pairs()
+                .into_iter()
+                .map(|(a, b)| (index(1, a), index(1, b)))
+                .collect();
+            assert_eq!(got, want, "{strategy:?} seed {seed:x} grid {grid} frame {frame}");
+            if frame % 10 == 0 {
+                let mut truth_pairs = Vec::new();
+                for (i, &(a, _)) in ids.iter().enumerate() {
+                    for (j, &(b, _)) in ids.iter().enumerate().skip(i + 1) {
+                        if truth(&warm, a, b) {
+                            truth_pairs.push((i.min(j), i.max(j)));
+                        }
+                    }
+                }
+                let mut sorted: Vec<(usize, usize)> =
+                    got.iter().map(|&(a, b)| (a.min(b), a.max(b))).collect();
+                sorted.sort_unstable();
+                truth_pairs.sort_unstable();
+                assert_eq!(
+                    sorted, truth_pairs,
+                    "{strategy:?} seed {seed:x} frame {frame}: reference"
+                );
+            }
+        }
+        // The kept states: one per candidate pair of the last frame, no more.
+        let candidates = warm.candidate_pairs().len();
+        let with = warm.heap_bytes();
+        warm.set_warm_starts(false);
+        let kept = with - warm.heap_bytes();
+        assert!(
+            kept > 0 && kept <= 96 * candidates,
+            "{kept} bytes kept for {candidates} candidates"
+        );
+        let s = warm.warm_stats();
+        totals.hits += s.hits;
+        totals.misses += s.misses;
+        totals.fills += s.fills;
+        assert_eq!(cold.warm_stats(), polysect::store::WarmStats::default());
+    }
+    eprintln!("warm starts: {totals:?}");
+    assert!(
+        totals.hits > 1_000 && totals.misses > 10 && totals.fills > 100,
+        "{totals:?}"
+    );
+}

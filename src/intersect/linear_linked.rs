@@ -28,7 +28,7 @@
 
 use super::linked::LinkedIntersection;
 use super::{Certificate, Derivation, Probe, Which};
-use crate::kernel::{Kernel, Orientation, Point};
+use crate::kernel::{Kernel, Orientation};
 use crate::polygon::LinkedPolygon;
 use rand::Rng;
 
@@ -61,7 +61,7 @@ impl LinkedIntersection for LinearLinked {
         _workspace: &mut (),
         probe: &mut P,
     ) -> bool {
-        separating_edge(kernel, p, q, probe).is_none() && separating_edge(kernel, q, p, probe).is_none()
+        separating_edge_at(kernel, p, q, probe).is_none() && separating_edge_at(kernel, q, p, probe).is_none()
     }
 
     /// A separated pair is certified by the edge the walk found; an intersecting one
@@ -78,7 +78,8 @@ impl LinkedIntersection for LinearLinked {
         probe: &mut P,
     ) -> Derivation {
         for (of, a, b) in [(Which::P, p, q), (Which::Q, q, p)] {
-            if let Some((from, to)) = separating_edge(kernel, a, b, probe) {
+            if let Some((from, to, _)) = separating_edge_at(kernel, a, b, probe) {
+                let (from, to) = (a.point_at(from), a.point_at(to));
                 return Derivation::Certified(Certificate::Separated { of, from, to });
             }
         }
@@ -87,13 +88,14 @@ impl LinkedIntersection for LinearLinked {
 }
 
 /// An edge of `a` (counter-clockwise) with every vertex of `b` strictly on its outer
-/// (right) side, if there is one.
-fn separating_edge<K: Kernel, P: Probe>(
+/// (right) side, if there is one: the arena positions of the edge's ends in `a` and of
+/// the vertex of `b` deepest on the edge's inner side (the one nearest the edge).
+pub(crate) fn separating_edge_at<K: Kernel, P: Probe>(
     k: K,
     a: &LinkedPolygon,
     b: &LinkedPolygon,
     probe: &mut P,
-) -> Option<(Point, Point)> {
+) -> Option<(usize, usize, usize)> {
     let (n, m) = (a.len(), b.len());
     let (s0, t0) = (a.point_at(0), a.point_at(a.next_at(0)));
     // Deepest vertex of b for edge 0: w is deeper than v iff (t0 − s0) × (w − v) > 0.
@@ -130,7 +132,7 @@ fn separating_edge<K: Kernel, P: Probe>(
         }
         probe.iteration();
         if k.orient(s, t, bj) == Orientation::Cw {
-            return Some((s, t));
+            return Some((pos, next, j));
         }
         (pos, s) = (next, t);
     }

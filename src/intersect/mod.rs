@@ -54,6 +54,7 @@ pub use dobkin::Dobkin;
 pub use fallback::{exact_certificate, proven, proven_linked};
 pub use linear::{Linear, brute_force};
 pub use linear_linked::LinearLinked;
+pub(crate) use linear_linked::separating_edge_at;
 pub(crate) use linked::fresh_rng;
 pub use linked::{Convert, ConvertWorkspace, LinkedIntersection};
 pub use trace::{Kept, Mark, Role, Shape, Span, Trace, TraceStep, Tracer, trace, trace_rng};

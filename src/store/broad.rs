@@ -28,7 +28,9 @@ use crate::kernel::Point;
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct BoundingBox {
+    /// The lower-left corner: the smallest x and the smallest y.
     pub min: Point,
+    /// The upper-right corner: the largest x and the largest y.
     pub max: Point,
 }
 

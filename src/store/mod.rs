@@ -53,6 +53,15 @@
 //! order by insertion sort (or sorts again when most moved far); the last sweep's pairs
 //! are reused while nothing changes.
 //!
+//! # Warm starts across frames
+//! [`Scene::intersecting_pairs`] keeps, per candidate pair, what its test learnt (`warm.rs`):
+//! a pair separated last frame is first checked against the separating edge it had
+//! (vertex handles, the other polygon's deepest vertex hill-climbed along the links),
+//! O(1) under coherent motion; only when that fails does the planner's route answer.
+//! Memory is O(candidate pairs of the last frame). Off by default (measured: it does not
+//! pay where translations keep snapshots and the array test is already cheap;
+//! docs/store.md); [`Scene::set_warm_starts`] turns it on.
+//!
 //! # Parallel batches
 //! [`Scene::intersects_batch`] and [`Scene::intersecting_pairs`] plan sequentially,
 //! convert the chosen snapshots in parallel, then answer the pairs in parallel on
@@ -65,6 +74,7 @@ mod interop;
 mod planner;
 mod route;
 mod scene;
+mod warm;
 // The demo's and the benches' workloads: the tool's, not an API to build on.
 #[doc(hidden)]
 pub mod workload;
@@ -72,3 +82,4 @@ pub mod workload;
 pub use broad::BoundingBox;
 pub use planner::{Arena, CostModel, PlannerStats, Strategy};
 pub use scene::{PolygonId, Scene, SceneError};
+pub use warm::WarmStats;

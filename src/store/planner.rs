@@ -27,6 +27,7 @@ pub enum Strategy {
 }
 
 impl Strategy {
+    /// Every strategy, for comparisons.
     pub const ALL: [Strategy; 4] = [
         Strategy::Sampled,
         Strategy::Convert,
@@ -34,6 +35,7 @@ impl Strategy {
         Strategy::Planner,
     ];
 
+    /// The strategy's name, as the CLI and the benches print it.
     pub fn name(self) -> &'static str {
         match self {
             Strategy::Sampled => "sampled",
@@ -91,7 +93,9 @@ pub struct CostModel {
 /// arena is from boundary order (0 in order, 1 shuffled).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Arena {
+    /// Number of vertices.
     pub vertices: usize,
+    /// How far the arena is from boundary order: 0 in order, 1 shuffled.
     pub disorder: f64,
 }
 

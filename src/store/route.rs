@@ -3,9 +3,9 @@
 //! scene; both the cost model (which times these tests) and the scene use it.
 
 use crate::intersect::{
-    ArrayIntersection, Barba, Certificate, Clm, ClmWorkspace, Linear, LinearLinked, LinkedIntersection,
+    ArrayIntersection, Barba, Certificate, Clm, ClmWorkspace, Linear, LinearLinked, LinkedIntersection, Which,
 };
-use crate::kernel::Kernel;
+use crate::kernel::{Kernel, Point};
 use crate::polygon::{ConvexPolygon, LinkedPolygon};
 use rand::SeedableRng;
 use rand::rngs::SmallRng;
@@ -89,7 +89,7 @@ pub(crate) fn array_certified<K: Kernel>(
 }
 
 /// How one planned query will be answered; keys are the scene's slots.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Route {
     /// Decided without a test (bounding boxes, or a polygon against itself).
     Known(bool),
@@ -102,4 +102,8 @@ pub(crate) enum Route {
     /// Both polygons converted for this query only, then an array test (linear when
     /// `true`).
     Throwaway(usize, usize, bool),
+    /// Separated, proved while planning by a warm start (`warm.rs`): the edge `from` →
+    /// `to` of polygon `of` (P is the query's first polygon) has the other strictly
+    /// outside.
+    Warm { of: Which, from: Point, to: Point },
 }

@@ -6,6 +6,7 @@ use super::route::{
     QueryWorkspace, Route, array_certified, array_test, linear_certified, linear_test, sampled_certified,
     sampled_test,
 };
+use super::warm::{self, Warm, WarmCache, WarmStats};
 use crate::intersect::{Certificate, Which};
 use crate::kernel::{Exact, Kernel, Point};
 use crate::polygon::{ConvexPolygon, EditError, Identity, LinkedPolygon, PolygonError, VertexId};
@@ -208,6 +209,9 @@ pub struct Scene<K: Kernel = Exact> {
     stats: PlannerStats,
     workspace: QueryWorkspace,
     rng: SmallRng,
+    /// Warm starts across frames: on/off, and the last frame's pairs.
+    warm_starts: bool,
+    warm: WarmCache,
 }
 
 impl Default for Scene<Exact> {
@@ -237,6 +241,8 @@ impl<K: Kernel> Scene<K> {
             stats: PlannerStats::default(),
             workspace: QueryWorkspace::default(),
             rng: crate::intersect::fresh_rng(),
+            warm_starts: false,
+            warm: WarmCache::default(),
         }
     }
 
@@ -249,6 +255,8 @@ impl<K: Kernel> Scene<K> {
         self.rng = SmallRng::seed_from_u64(seed);
     }
 
+    /// How queries are answered (the planner unless [`set_strategy`](Self::set_strategy)
+    /// chose otherwise).
     pub fn strategy(&self) -> Strategy {
         self.strategy
     }
@@ -258,10 +266,13 @@ impl<K: Kernel> Scene<K> {
         self.strategy = strategy;
     }
 
+    /// The cost model the planner uses.
     pub fn costs(&self) -> CostModel {
         self.costs
     }
 
+    /// Replaces the cost model (for example one measured by [`calibrate`](Self::calibrate)
+    /// elsewhere and stored).
     pub fn set_costs(&mut self, costs: CostModel) {
         self.costs = costs;
     }
@@ -277,8 +288,30 @@ impl<K: Kernel> Scene<K> {
         self.stats
     }
 
+    /// Zeroes the planner's and the warm starts' counters.
     pub fn reset_stats(&mut self) {
         self.stats = PlannerStats::default();
+        self.warm.stats = WarmStats::default();
+    }
+
+    /// Whether [`intersecting_pairs`](Self::intersecting_pairs) uses warm starts across
+    /// frames (off by default; the [module docs](super) and docs/store.md).
+    pub fn warm_starts(&self) -> bool {
+        self.warm_starts
+    }
+
+    /// Turns warm starts across frames on or off (off drops what was kept). Answers
+    /// are the same either way; only their cost differs.
+    pub fn set_warm_starts(&mut self, on: bool) {
+        self.warm_starts = on;
+        if !on {
+            self.warm.clear();
+        }
+    }
+
+    /// Counters of the warm starts (cleared by [`reset_stats`](Self::reset_stats)).
+    pub fn warm_stats(&self) -> WarmStats {
+        self.warm.stats
     }
 
     /// Number of polygons.
@@ -286,6 +319,7 @@ impl<K: Kernel> Scene<K> {
         self.entries.len()
     }
 
+    /// True when the scene holds no polygon.
     pub fn is_empty(&self) -> bool {
         self.entries.is_empty()
     }
@@ -306,9 +340,10 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Heap memory held by the scene's structures, in bytes: the polygons' arenas, the
-    /// snapshots, the slots and the broad phase (per-query scratch memory, bounded by
-    /// the largest polygon queried, is not counted). It is O(slots + vertices) whatever
-    /// the sequence of calls: no structure grows with the number of edits or queries.
+    /// snapshots, the slots, the broad phase and the warm starts' pairs (per-query
+    /// scratch memory, bounded by the largest polygon queried, is not counted). It is
+    /// O(slots + vertices + candidate pairs of the last frame) whatever the sequence of
+    /// calls: no structure grows with the number of edits or queries.
     /// Slots are the largest number of polygons the scene has held at once.
     pub fn heap_bytes(&self) -> usize {
         let polygons: usize = self
@@ -321,10 +356,16 @@ impl<K: Kernel> Scene<K> {
                         .map_or(0, |s| std::mem::size_of_val(s.vertices()))
             })
             .sum();
-        polygons + self.entries.capacity() * std::mem::size_of::<Entry>() + self.broad.heap_bytes()
+        polygons
+            + self.entries.capacity() * std::mem::size_of::<Entry>()
+            + self.broad.heap_bytes()
+            + self.warm.heap_bytes()
     }
 
-    /// Adds a polygon.
+    /// Adds a polygon. O(n) for its bounding box.
+    ///
+    /// # Panics
+    /// Never: a [`LinkedPolygon`] always has vertices.
     pub fn insert(&mut self, polygon: LinkedPolygon) -> PolygonId {
         let bbox = BoundingBox::of(polygon.iter().map(|(_, p)| p)).expect("a polygon has vertices");
         let generation = self.next_generation;
@@ -349,6 +390,9 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Validates `points` ([`ConvexPolygon::new`]) and adds the polygon.
+    ///
+    /// # Errors
+    /// [`SceneError::Polygon`] when the points are not a valid convex polygon.
     pub fn insert_points<I, P>(&mut self, points: I) -> Result<PolygonId, SceneError>
     where
         I: IntoIterator<Item = P>,
@@ -396,16 +440,25 @@ impl<K: Kernel> Scene<K> {
 
     /// The polygon's bounding box: it always contains the polygon, and is the tightest
     /// box unless an edit since the last conversion may have shrunk the polygon.
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`.
     pub fn bounding_box(&self, id: PolygonId) -> Result<BoundingBox, SceneError> {
         self.key(id).map(|k| self.entries[k].bbox)
     }
 
     /// Number of edits the polygon has had.
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`.
     pub fn version(&self, id: PolygonId) -> Result<u64, SceneError> {
         self.key(id).map(|k| self.entries[k].version)
     }
 
     /// True while the polygon holds a valid array snapshot.
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`.
     pub fn has_snapshot(&self, id: PolygonId) -> Result<bool, SceneError> {
         self.key(id).map(|k| self.entries[k].snapshot.is_some())
     }
@@ -482,6 +535,9 @@ impl<K: Kernel> Scene<K> {
     /// `StalePolygon`, `ForeignPolygon`; [`EditError::NonFinite`] when `dx` or `dy` is not finite or a
     /// coordinate would overflow; [`EditError::RoundingBreaksConvexity`] when rounding
     /// would leave the polygon not strictly convex. Nothing changes on error.
+    ///
+    /// # Panics
+    /// Never: a polygon always has vertices for its box.
     ///
     /// ```
     /// use polysect::store::Scene;
@@ -579,12 +635,27 @@ impl<K: Kernel> Scene<K> {
     /// and is converted when [`Account::should_convert`] says so for the batch's total.
     /// Polygons whose partners were chosen are then offered the other half once more.
     fn plan(&mut self, pairs: impl Iterator<Item = Result<(usize, usize), SceneError>>) -> Plan {
+        self.plan_warm(pairs, &mut [])
+    }
+
+    /// [`plan`](Self::plan) with the last frame's state of each pair (an empty slice
+    /// for none): a pair its warm start decides gets [`Route::Warm`] (or the linear walk)
+    /// and is left out of the planner's accounts; each state is left as this frame's
+    /// where planning decided it, `None` where the answer will.
+    fn plan_warm(
+        &mut self,
+        pairs: impl Iterator<Item = Result<(usize, usize), SceneError>>,
+        warm: &mut [Option<Warm>],
+    ) -> Plan {
         let mut routes: Vec<Result<Route, SceneError>> = Vec::with_capacity(pairs.size_hint().0);
         let mut touched = Vec::new();
         let mut keys = Vec::with_capacity(routes.capacity());
-        for pair in pairs {
+        for (i, pair) in pairs.enumerate() {
             keys.push(*pair.as_ref().unwrap_or(&(0, 0)));
-            let route = pair.map(|(a, b)| self.plan_boxes(a, b, &mut touched));
+            let route = pair.map(|(a, b)| {
+                let decided = warm.get_mut(i).and_then(|w| self.warm_route(a, b, w));
+                decided.unwrap_or_else(|| self.plan_boxes(a, b, &mut touched))
+            });
             routes.push(route);
         }
         let mut chosen = Vec::new();
@@ -637,6 +708,42 @@ impl<K: Kernel> Scene<K> {
         }
     }
 
+    /// The warm start of pair (a, b), whose last-frame state is `w`: the route when it
+    /// decides the pair, with `w` set to this frame's state; `None` (and `w` cleared)
+    /// when the planner must. A kept certificate is checked (O(1) plus the climb); a pair
+    /// separated without one is walked linearly, which answers it and finds one.
+    fn warm_route(&mut self, a: usize, b: usize, w: &mut Option<Warm>) -> Option<Route> {
+        let (p, q) = (&self.entries[a].polygon, &self.entries[b].polygon);
+        let found = match w.take()? {
+            Warm::Intersecting => return None,
+            Warm::Certified { of, from, deep } => {
+                let kept = warm::check(self.kernel, p, q, of, from, deep);
+                let counter = match kept {
+                    Some(_) => &mut self.warm.stats.hits,
+                    None => &mut self.warm.stats.misses,
+                };
+                *counter += 1;
+                kept?
+            }
+            Warm::Separated => {
+                self.warm.stats.fills += 1;
+                let Some(found) = warm::fill(self.kernel, p, q) else {
+                    // They met since: the answer is `true`, proved by the (certified)
+                    // linear walk again, only on this frame.
+                    *w = Some(Warm::Intersecting);
+                    return Some(Route::Linear(a, b));
+                };
+                found
+            }
+        };
+        *w = Some(found.warm);
+        Some(Route::Warm {
+            of: found.of,
+            from: found.from,
+            to: found.to,
+        })
+    }
+
     /// The box test; a live pair is left as `Sampled` for now, its polygons marked and
     /// credited with the saving a snapshot would bring.
     fn plan_boxes(&mut self, a: usize, b: usize, touched: &mut Vec<usize>) -> Route {
@@ -686,9 +793,6 @@ impl<K: Kernel> Scene<K> {
 
     /// The route of a live pair once conversions are chosen, and its estimated cost;
     /// unconverted polygons pay their rent.
-    ///
-    /// Warm starts across frames (a certificate kept from the last test of this pair,
-    /// checked before any other route) would be decided here, first, as one more route.
     fn finish_route(&mut self, a: usize, b: usize) -> (Route, f64) {
         let (pa, pb) = (
             Arena::of(&self.entries[a].polygon),
@@ -733,6 +837,7 @@ impl<K: Kernel> Scene<K> {
         let snapshot = |k: usize| e(k).snapshot.as_ref().expect("planned snapshot");
         match route {
             Route::Known(v) => v,
+            Route::Warm { .. } => false,
             Route::Arrays(a, b, linear) => array_test(self.kernel, snapshot(a), snapshot(b), linear),
             Route::Linear(a, b) => linear_test(self.kernel, &e(a).polygon, &e(b).polygon),
             Route::Sampled(a, b) => {
@@ -775,6 +880,7 @@ impl<K: Kernel> Scene<K> {
                     sampled_certified(Exact, &e(a).polygon, &e(b).polygon, ws, &mut rng)
                 }
             },
+            Route::Warm { of, from, to } => Certificate::Separated { of, from, to },
             Route::Arrays(a, b, linear) => array_certified(self.kernel, snapshot(a), snapshot(b), linear),
             Route::Linear(a, b) => linear_certified(self.kernel, &e(a).polygon, &e(b).polygon),
             Route::Sampled(a, b) => {
@@ -978,11 +1084,18 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// All intersecting pairs `(a, b)` with `a` before `b` in slot order, sorted.
+    ///
+    /// With warm starts ([`set_warm_starts`](Self::set_warm_starts), off by default), a
+    /// pair found separated by the last call is first checked against the separating
+    /// edge found then; the answer is the same, only its cost differs.
     pub fn intersecting_pairs(&mut self) -> Vec<(PolygonId, PolygonId)> {
-        self.flush_broad_phase();
-        let candidates = self.broad.overlapping_pairs();
-        let plan = self.plan(candidates.iter().map(|&pair| Ok(pair)));
+        let (candidates, plan, warm) = self.plan_frame();
         let answers = self.run_plan(plan);
+        self.keep_frame(
+            &candidates,
+            warm,
+            answers.iter().map(|hit| matches!(hit, Ok(true))),
+        );
         candidates
             .into_iter()
             .zip(answers)
@@ -991,14 +1104,48 @@ impl<K: Kernel> Scene<K> {
             .collect()
     }
 
+    /// The candidate pairs of a frame, their plan, and (with warm starts) each pair's
+    /// state as far as planning decided it.
+    fn plan_frame(&mut self) -> (Vec<(usize, usize)>, Plan, Vec<Option<Warm>>) {
+        self.flush_broad_phase();
+        let candidates = self.broad.overlapping_pairs();
+        let mut warm = if self.warm_starts {
+            let entries = &self.entries;
+            self.warm.take(&candidates, |k| entries[k].generation)
+        } else {
+            Vec::new()
+        };
+        let plan = self.plan_warm(candidates.iter().map(|&pair| Ok(pair)), &mut warm);
+        (candidates, plan, warm)
+    }
+
+    /// Keeps this frame's state of every candidate pair: what planning decided, else
+    /// what the answer was.
+    fn keep_frame(
+        &mut self,
+        candidates: &[(usize, usize)],
+        warm: Vec<Option<Warm>>,
+        hits: impl Iterator<Item = bool>,
+    ) {
+        if !self.warm_starts {
+            return;
+        }
+        let states = warm
+            .into_iter()
+            .zip(hits)
+            .map(|(w, hit)| w.unwrap_or(if hit { Warm::Intersecting } else { Warm::Separated }));
+        let entries = &self.entries;
+        self.warm.keep(candidates, states, |k| entries[k].generation);
+    }
+
     /// [`intersecting_pairs`](Self::intersecting_pairs), each with the certificate of
     /// its intersection (`a` is the certificate's P). Pairs the broad phase rejects get
     /// none: they are not in the answer.
     pub fn intersecting_pairs_certified(&mut self) -> Vec<(PolygonId, PolygonId, Certificate)> {
-        self.flush_broad_phase();
-        let candidates = self.broad.overlapping_pairs();
-        let plan = self.plan(candidates.iter().map(|&pair| Ok(pair)));
+        let (candidates, plan, warm) = self.plan_frame();
         let answers = self.run_plan_certified(plan);
+        let hits = answers.iter().map(|c| matches!(c, Ok(c) if c.intersects()));
+        self.keep_frame(&candidates, warm, hits);
         candidates
             .into_iter()
             .zip(answers)
@@ -1021,6 +1168,12 @@ impl<K: Kernel> Scene<K> {
 
     /// Checks every invariant: each polygon's own, boxes contain their polygons (and equal
     /// them when marked tight), snapshots equal their polygons.
+    ///
+    /// # Errors
+    /// The first invariant found broken, with the polygon's slot.
+    ///
+    /// # Panics
+    /// Never: a polygon always has vertices for its box.
     pub fn debug_validate(&self) -> Result<(), String> {
         for (k, e) in &self.entries {
             e.polygon
