@@ -64,7 +64,9 @@ use Orientation::{Ccw, Collinear, Cw};
 /// One of the two polygons of a query: `P` is the first argument, `Q` the second.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Which {
+    /// The first polygon of the query.
     P,
+    /// The second polygon of the query.
     Q,
 }
 
@@ -120,13 +122,30 @@ pub enum Certificate {
     /// The polygons are disjoint: `from` → `to` is an edge of polygon `of` (consecutive
     /// vertices, counter-clockwise) and the other polygon lies strictly on its outer
     /// (right) side.
-    Separated { of: Which, from: Point, to: Point },
+    Separated {
+        /// The polygon the edge belongs to.
+        of: Which,
+        /// The edge's first vertex.
+        from: Point,
+        /// The edge's second vertex (the counter-clockwise successor of `from`).
+        to: Point,
+    },
     /// The polygons intersect: `point` is a vertex of polygon `of` lying in the other
     /// polygon, boundary included.
-    VertexInside { of: Which, point: Point },
+    VertexInside {
+        /// The polygon the vertex belongs to.
+        of: Which,
+        /// The vertex.
+        point: Point,
+    },
     /// The polygons intersect: `p` is an edge of P and `q` an edge of Q (consecutive
     /// vertices, counter-clockwise) and the two closed segments share a point.
-    CrossingEdges { p: [Point; 2], q: [Point; 2] },
+    CrossingEdges {
+        /// An edge of P, from a vertex to its counter-clockwise successor.
+        p: [Point; 2],
+        /// An edge of Q, from a vertex to its counter-clockwise successor.
+        q: [Point; 2],
+    },
 }
 
 impl Certificate {
@@ -180,36 +199,66 @@ pub enum Derivation {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum CertificateError {
     /// A certificate coordinate is not a vertex of the polygon it names.
-    NotAVertex { of: Which, point: Point },
+    NotAVertex {
+        /// The polygon the certificate names.
+        of: Which,
+        /// The coordinate that is not one of its vertices.
+        point: Point,
+    },
     /// `from` and `to` are vertices but not consecutive: `from`'s counter-clockwise
     /// successor is `next`.
     NotAnEdge {
+        /// The polygon the certificate names.
         of: Which,
+        /// The edge's claimed first vertex.
         from: Point,
+        /// The edge's claimed second vertex.
         to: Point,
+        /// `from`'s actual counter-clockwise successor.
         next: Point,
     },
     /// `from` → `to` is an edge walked clockwise (`to` precedes `from`); edges are given
     /// counter-clockwise, so that their outer side is their right side.
-    Clockwise { of: Which, from: Point, to: Point },
+    Clockwise {
+        /// The polygon the certificate names.
+        of: Which,
+        /// The edge's claimed first vertex.
+        from: Point,
+        /// The edge's claimed second vertex (in fact `from`'s predecessor).
+        to: Point,
+    },
     /// A vertex of the other polygon is not strictly on the outer side of the edge.
     NotSeparating {
+        /// The polygon the edge belongs to.
         of: Which,
+        /// The edge's first vertex.
         from: Point,
+        /// The edge's second vertex.
         to: Point,
+        /// A vertex of the other polygon not strictly outside.
         vertex: Point,
+        /// Where that vertex is: on the edge's line (`Collinear`) or inside (`Ccw`).
         side: Orientation,
     },
     /// The vertex lies strictly outside the other polygon: strictly right of its edge
     /// `from` → `to`.
     Outside {
+        /// The polygon the vertex belongs to.
         of: Which,
+        /// The vertex.
         point: Point,
+        /// The first vertex of the other polygon's edge it is outside of.
         from: Point,
+        /// That edge's second vertex.
         to: Point,
     },
     /// The two edges have no common point.
-    EdgesDisjoint { p: [Point; 2], q: [Point; 2] },
+    EdgesDisjoint {
+        /// The edge of P.
+        p: [Point; 2],
+        /// The edge of Q.
+        q: [Point; 2],
+    },
 }
 
 impl fmt::Display for CertificateError {
