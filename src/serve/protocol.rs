@@ -31,7 +31,7 @@
 //! - `{"type":"edit", ...}`: an accepted [`Edit`](super::sim::Edit).
 //! - `{"type":"refused","op":..,"polygon":I,"reason":"..."}`: the store refused an edit;
 //!   the reason is the store error's text.
-//! - `{"type":"trace", ...}`: a trace ([`trace_json`](super::trace::trace_json)): the
+//! - `{"type":"trace", ...}`: a trace ([`super::trace::trace_json`]): the
 //!   two polygons' vertices, the steps (kept and pruned index ranges, marks, text), the
 //!   answer and the certificate; the last step carries the answer.
 //! - `{"type":"error","message":"..."}`: the message was malformed or named nothing.
