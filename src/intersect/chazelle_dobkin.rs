@@ -164,17 +164,17 @@ impl ArrayIntersection for ChazelleDobkin {
                 g,
                 hit: None,
                 tangents,
-            } => {
-                let face_f = [f.index(f.lo), f.index(f.lo + 1), f.index(f.hi), 0];
-                let face_g = [g.index(g.lo), g.index(g.lo + 1), g.index(g.hi)];
-                from_faces(k, pv, &face_f, qv, &face_g)
-                    .or_else(|| from_final_edges(k, pv, qv, &f, &g, tangents))
-                    .or_else(|| {
-                        tangents
-                            .into_iter()
-                            .find_map(|t| from_support(k, (pv[0], qv[t]), pv, 0, qv, t))
-                    })
-            }
+            } => from_final_edges(k, pv, qv, &f, &g, tangents)
+                .or_else(|| {
+                    let face_f = [f.index(f.lo), f.index(f.lo + 1), f.index(f.hi), 0];
+                    let face_g = [g.index(g.lo), g.index(g.lo + 1), g.index(g.hi)];
+                    from_faces(k, pv, &face_f, qv, &face_g)
+                })
+                .or_else(|| {
+                    tangents
+                        .into_iter()
+                        .find_map(|t| from_support(k, (pv[0], qv[t]), pv, 0, qv, t))
+                }),
         };
         found.map_or(Derivation::Answer(exit.meets()), Derivation::Certified)
     }
