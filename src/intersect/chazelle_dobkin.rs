@@ -67,12 +67,21 @@
 //! * The finish found a vertex z of F on or beyond G: the segment from A to z (a chord of
 //!   P) meets G's edge there, resolved into a vertex inside or two crossing edges by at
 //!   most two binary searches.
-//! * The pencil misses P: a pencil line through A supports both polygons, and an edge
-//!   at A or at the tangent point separates (O(1)).
-//! * The finish found h < 0 on the window: edges at the final chains' vertices are
-//!   tried (O(1)); but the maximum of h in the projective frame need not be where the
-//!   polygons are closest, and then only the answer is returned (completed by
-//!   [`Dobkin`](super::Dobkin)'s separation).
+//! * The pencil misses P: an edge of P at A whose open outer side holds both tangent
+//!   points holds the whole wedge W(A) ⊇ Q (a half-plane bounded by a line through A,
+//!   and A ∉ Q), so it separates (two orientations per edge). Else a pencil line
+//!   through A supports both polygons, and an edge at A or at the tangent point may
+//!   separate (O(1)).
+//! * The finish found h < 0 on the window: the final chains' edges (≤ 2 of F, ≤ 2 of G)
+//!   and Q's edges just outside G at the tangent points are candidates when the other
+//!   final chain lies strictly on their outer side (≤ 3 orientations); a candidate is
+//!   accepted when the other polygon's vertex extreme against it (one O(log) binary
+//!   search) is strictly outside and extreme, so every accepted edge separates the
+//!   whole polygons. Then the faces at the final chains' vertices and the pencil lines
+//!   (O(1)). The maximum of h in the projective frame need not be where the polygons
+//!   are closest, so all of these can fail; then only the answer is returned
+//!   (completed by [`Dobkin`](super::Dobkin)'s separation, which tests/certificates.rs
+//!   counts: 0 of 2,700 disjoint queries on the generator families).
 //!
 //! # Complexity
 //! O(log n + log m) time, O(1) memory, on every input: three binary searches on Q,
