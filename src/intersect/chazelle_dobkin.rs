@@ -223,6 +223,20 @@ fn from_final_edges<K: Kernel>(
 ) -> Option<Certificate> {
     let outside = |c: &Chain<'_>, s: Point, u: Point| (c.lo..=c.hi).all(|i| k.orient(s, u, c.at(i)) == Cw);
     let (n, m) = (pv.len(), qv.len());
+    // F runs forward along P; then P's edges at the pivot.
+    let p_edges = (f.lo..f.hi)
+        .map(|i| (f.index(i), f.index(i + 1)))
+        .chain([(0, 1), (n - 1, 0)]);
+    for (s, u) in p_edges {
+        let (s, u) = (pv[s], pv[u]);
+        if outside(g, s, u) && separates(k, s, u, qv, extreme_left(k, qv, (s, u))) {
+            return Some(Certificate::Separated {
+                of: Which::P,
+                from: s,
+                to: u,
+            });
+        }
+    }
     // G runs backward along Q: Q's counter-clockwise edge is at(e + 1) → at(e). Then
     // the edges of Q just outside G's ends (at the tangent points).
     let q_edges = (g.lo..g.hi)
@@ -233,20 +247,6 @@ fn from_final_edges<K: Kernel>(
         if outside(f, s, u) && separates(k, s, u, pv, extreme_left(k, pv, (s, u))) {
             return Some(Certificate::Separated {
                 of: Which::Q,
-                from: s,
-                to: u,
-            });
-        }
-    }
-    // F runs forward along P; then P's edges at the pivot.
-    let p_edges = (f.lo..f.hi)
-        .map(|i| (f.index(i), f.index(i + 1)))
-        .chain([(0, 1), (n - 1, 0)]);
-    for (s, u) in p_edges {
-        let (s, u) = (pv[s], pv[u]);
-        if outside(g, s, u) && separates(k, s, u, qv, extreme_left(k, qv, (s, u))) {
-            return Some(Certificate::Separated {
-                of: Which::P,
                 from: s,
                 to: u,
             });
