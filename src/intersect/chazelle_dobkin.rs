@@ -73,7 +73,7 @@
 //!   through A supports both polygons, and an edge at A or at the tangent point may
 //!   separate (O(1)).
 //! * The finish found h < 0 on the window: the final chains' edges (≤ 2 of F, ≤ 2 of G)
-//!   and Q's edges just outside G at the tangent points are candidates when the other
+//!   P's edges at A and Q's edges just outside G at the tangent points are candidates when the other
 //!   final chain lies strictly on their outer side (≤ 3 orientations); a candidate is
 //!   accepted when the other polygon's vertex extreme against it (one O(log) binary
 //!   search) is strictly outside and extreme, so every accepted edge separates the
@@ -153,7 +153,7 @@ impl ArrayIntersection for ChazelleDobkin {
                 of: Which::P,
                 point: pv[0],
             }),
-            // A pencil line through A supports both polygons.
+            // An edge of P at A with the wedge outside, else a pencil line supporting both.
             Exit::Misses { ql, qr } => pivot_edge_apart(k, pv, qv[ql], qv[qr]).or_else(|| {
                 [ql, qr]
                     .into_iter()
@@ -207,7 +207,8 @@ fn pivot_edge_apart<K: Kernel>(k: K, pv: &[Point], ql: Point, qr: Point) -> Opti
         })
 }
 
-/// A separating edge among the final chains' edges (at most two of F, two of G), for a
+/// A separating edge among the final chains' edges (at most two of F, two of G), P's
+/// edges at the pivot and Q's edges just outside G at the tangent points, for a
 /// disjoint finish. An edge qualifies as a candidate when the other final chain lies
 /// strictly on its outer side (at most three orientations); a candidate is accepted
 /// only if the other polygon's vertex deepest towards it, found by an O(log) binary
