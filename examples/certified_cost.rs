@@ -6,11 +6,13 @@
 //! algorithm's name or one of Barba's variants (docs/thesis.md): `barba-halving` (first
 //! triangle at first/middle/last), `barba-thirds` (= `barba`), and with the halving
 //! triangle `barba-finish3` (finish on three edges of Q) and `barba-p-edges-first`;
-//! `barba-thesis` has all three of the thesis's choices.
+//! `barba-thesis` has all three of the thesis's choices. `dobkin-lemmas` is Dobkin's
+//! variant with every pruning rule by its own `if` (the thesis's Code 3.1 form),
+//! `dobkin-compact` ours (= `dobkin`).
 
 use polysect::generate::{self, Family, Relation};
 use polysect::intersect::{
-    Algorithm, ArrayIntersection, Barba, BarbaVariant, ChazelleDobkin, Dobkin, Linear,
+    Algorithm, ArrayIntersection, Barba, BarbaVariant, ChazelleDobkin, Dobkin, DobkinVariant, Linear,
 };
 use polysect::{ConvexPolygon, Exact};
 use rand::SeedableRng;
@@ -30,6 +32,8 @@ fn main() {
         "barba-p-edges-first" => Some(2),
         "barba-thesis" => Some(3),
         "barba-halving" => Some(4),
+        "dobkin-compact" => Some(5),
+        "dobkin-lemmas" => Some(6),
         _ => None,
     };
     let alg: Algorithm = if variant.is_some() {
@@ -90,6 +94,10 @@ fn main() {
             (Some(4), true) => BarbaVariant::<false, 7, false>
                 .certified_with(Exact, p, q)
                 .intersects(),
+            (Some(5), false) => DobkinVariant::<false>.intersects_with(Exact, p, q),
+            (Some(5), true) => DobkinVariant::<false>.certified_with(Exact, p, q).intersects(),
+            (Some(6), false) => DobkinVariant::<true>.intersects_with(Exact, p, q),
+            (Some(6), true) => DobkinVariant::<true>.certified_with(Exact, p, q).intersects(),
             (Some(_), false) => BarbaVariant::<true, 4, true>.intersects_with(Exact, p, q),
             (Some(_), true) => BarbaVariant::<true, 4, true>
                 .certified_with(Exact, p, q)

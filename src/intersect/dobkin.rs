@@ -37,7 +37,12 @@
 //!
 //!    When the cut would empty I, the maximum lies at the end of I and a single
 //!    height is tested. Each iteration halves one chain, so once both have one
-//!    edge left g is linear on I and its two ends are tested.
+//!    edge left g is linear on I and its two ends are tested. These rules are
+//!    applied as one nested decision (the compact form, like the thesis's Code 3.2);
+//!    [`DobkinVariant<true>`] tests each rule and its symmetric version by its own
+//!    `if` (the thesis's Code 3.1 form) and also cuts the other chain where its median
+//!    edge reaches past the new end of I: same predicates, closed tests and
+//!    certificates, 7.5–9.8% more instructions per query (docs/results.md).
 //! 5. **Height test.** Every end of I is the height of a vertex w of one of the
 //!    chains (both ranges always cover I and every cut is at a vertex), so "is
 //!    `x_L ≤ x_R` at that height" is one `orient` of w against the other chain's
@@ -100,8 +105,65 @@ use crate::polygon::ConvexPolygon;
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Dobkin;
 
+/// [`Dobkin`] with the pruning rules applied the other way (docs/thesis.md compares
+/// them; [`Dobkin`] is `DobkinVariant<false>`):
+///
+/// * `LEMMA_BY_LEMMA = false` (ours): one nested decision per iteration over the slope
+///   comparison and the medians' heights, which cuts one chain, the compact form of the
+///   thesis's Code 3.2.
+/// * `LEMMA_BY_LEMMA = true`: each pruning rule of step 4 and its symmetric version is
+///   tested by its own `if` and every rule that holds is applied, as in the thesis's
+///   Code 3.1: besides the cut of the chain whose median ends lower (rises higher), the
+///   other chain loses the part below (above) its median edge when that edge reaches
+///   past the new end of I, so one iteration may halve both chains.
+///
+/// Both give the same answers and certificates that verify, with the same predicates
+/// and the same closed tests; only the path (and so the cost) differs.
+///
+/// ```
+/// use polysect::{ConvexPolygon, intersect::{ArrayIntersection, DobkinVariant}};
+/// let p = ConvexPolygon::new([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+/// let touching = ConvexPolygon::new([[2.0, 1.0], [3.0, 0.0], [3.0, 2.0]])?;
+/// let apart = ConvexPolygon::new([[2.5, 1.0], [3.0, 0.0], [3.0, 2.0]])?;
+/// assert!(DobkinVariant::<true>.intersects(&p, &touching));
+/// assert!(!DobkinVariant::<true>.intersects(&p, &apart));
+/// # Ok::<(), polysect::PolygonError>(())
+/// ```
+#[derive(Clone, Copy, Debug, Default)]
+pub struct DobkinVariant<const LEMMA_BY_LEMMA: bool>;
+
+/// [`Dobkin`]'s choice.
+type Ours = DobkinVariant<false>;
+
 impl ArrayIntersection for Dobkin {
     const NAME: &'static str = "dobkin";
+
+    #[inline]
+    fn intersects_probed<K: Kernel, P: Probe>(
+        &self,
+        k: K,
+        p: &ConvexPolygon,
+        q: &ConvexPolygon,
+        probe: &mut P,
+    ) -> bool {
+        Ours::default().intersects_probed(k, p, q, probe)
+    }
+
+    /// See the module docs' "Certificate" section.
+    #[inline]
+    fn derive_probed<K: Kernel, P: Probe>(
+        &self,
+        k: K,
+        p: &ConvexPolygon,
+        q: &ConvexPolygon,
+        probe: &mut P,
+    ) -> Derivation {
+        Ours::default().derive_probed(k, p, q, probe)
+    }
+}
+
+impl<const LEMMA_BY_LEMMA: bool> ArrayIntersection for DobkinVariant<LEMMA_BY_LEMMA> {
+    const NAME: &'static str = "dobkin-variant";
 
     fn intersects_probed<K: Kernel, P: Probe>(
         &self,
@@ -111,7 +173,7 @@ impl ArrayIntersection for Dobkin {
         probe: &mut P,
     ) -> bool {
         let k = k.within([p.bounding_box(), q.bounding_box()]);
-        run(k, p.vertices(), q.vertices(), probe, |outcome, _| {
+        run::<_, _, _, LEMMA_BY_LEMMA>(k, p.vertices(), q.vertices(), probe, |outcome, _| {
             outcome == Outcome::Meet
         })
     }
@@ -126,7 +188,7 @@ impl ArrayIntersection for Dobkin {
     ) -> Derivation {
         let k = k.within([p.bounding_box(), q.bounding_box()]);
         let (pv, qv) = (p.vertices(), q.vertices());
-        run(k, pv, qv, probe, |outcome, searches| {
+        run::<_, _, _, LEMMA_BY_LEMMA>(k, pv, qv, probe, |outcome, searches| {
             let found = match outcome {
                 Outcome::Apart(s) => separation(k, searches, s),
                 Outcome::Meet => (0..2).find_map(|s| match searches[s].verdict() {
@@ -191,7 +253,7 @@ const SEARCH_A: [Which; 2] = [Which::P, Which::Q];
 /// are disjoint) or both meet.
 /// Then hands the outcome and the searches to `then` (so that they stay on this frame).
 #[inline]
-fn run<K: Kernel, P: Probe, T>(
+fn run<K: Kernel, P: Probe, T, const LEMMA_BY_LEMMA: bool>(
     k: K,
     pv: &[Point],
     qv: &[Point],
@@ -208,13 +270,13 @@ fn run<K: Kernel, P: Probe, T>(
     let (mut ra, mut rb) = (None, None);
     let outcome = loop {
         if ra.is_none() {
-            ra = a.step(k, probe);
+            ra = a.step::<K, P, LEMMA_BY_LEMMA>(k, probe);
             if ra == Some(false) {
                 break Outcome::Apart(0);
             }
         }
         if rb.is_none() {
-            rb = b.step(k, probe);
+            rb = b.step::<K, P, LEMMA_BY_LEMMA>(k, probe);
             if rb == Some(false) {
                 break Outcome::Apart(1);
             }
@@ -230,7 +292,7 @@ fn run<K: Kernel, P: Probe, T>(
 /// the test finds them intersecting: [`Barba`](super::Barba)'s certified call falls
 /// back on this when its last separating line does not lift to the whole polygons.
 pub(crate) fn separating_certificate<K: Kernel>(k: K, pv: &[Point], qv: &[Point]) -> Option<Certificate> {
-    run(k, pv, qv, &mut (), |outcome, searches| match outcome {
+    run::<_, _, _, false>(k, pv, qv, &mut (), |outcome, searches| match outcome {
         Outcome::Apart(s) => separation(k, searches, s),
         Outcome::Meet => None,
     })
@@ -526,7 +588,7 @@ impl<'a> PairSearch<'a> {
 
     /// One pruning iteration; `Some(answer)` once the search is decided (then
     /// `verdict` says why).
-    fn step<K: Kernel, P: Probe>(&mut self, k: K, probe: &mut P) -> Option<bool> {
+    fn step<K: Kernel, P: Probe, const LEMMA_BY_LEMMA: bool>(&mut self, k: K, probe: &mut P) -> Option<bool> {
         // Only the heights are read on the way: copying the bounds costs more.
         let (lo_y, hi_y) = (self.lo.p.y, self.hi.p.y);
         if lo_y > hi_y {
@@ -556,7 +618,11 @@ impl<'a> PairSearch<'a> {
         let (f_bot, f_top) = (self.rp(kf), self.rp(kf + 1));
         let left = |p| Bound { side: Side::Left, p };
         let right = |p| Bound { side: Side::Right, p };
-        if k.cross(f_bot, f_top, e_bot, e_top) != Orientation::Cw {
+        let up = k.cross(f_bot, f_top, e_bot, e_top) != Orientation::Cw;
+        if LEMMA_BY_LEMMA {
+            return self.lemma_by_lemma(k, up, [ke, kf], [e_top, e_bot, f_bot, f_top]);
+        }
+        if up {
             // s_R ≥ s_L: g is non-decreasing below min(top(e), top(f)).
             if e_top.y <= f_top.y {
                 if e_top.y >= hi_y {
@@ -591,6 +657,80 @@ impl<'a> PairSearch<'a> {
             self.j1 = kf;
             if f_bot.y < hi_y {
                 self.hi = right(f_bot);
+            }
+        }
+        None
+    }
+
+    /// One iteration of [`DobkinVariant<true>`]: every pruning rule tested by its own
+    /// `if` (the thesis's Code 3.1 form), given the slope comparison `up` (s_R ≥ s_L),
+    /// the medians' positions `[ke, kf]` and their points `[e_top, e_bot, f_bot, f_top]`.
+    #[inline]
+    fn lemma_by_lemma<K: Kernel>(
+        &mut self,
+        k: K,
+        up: bool,
+        [ke, kf]: [usize; 2],
+        [e_top, e_bot, f_bot, f_top]: [Point; 4],
+    ) -> Option<bool> {
+        let (lo_y, hi_y) = (self.lo.p.y, self.hi.p.y);
+        let left = |p| Bound { side: Side::Left, p };
+        let right = |p| Bound { side: Side::Right, p };
+        if up {
+            // g is non-decreasing below min(top(e), top(f)): if that is at or above the
+            // top of I, the maximum is there.
+            if e_top.y.min(f_top.y) >= hi_y {
+                return Some(self.at_height(k, false));
+            }
+            // e ends no higher than f: L below e is pruned and I starts at top(e).
+            if e_top.y <= f_top.y {
+                self.i1 = ke;
+                if e_top.y > lo_y {
+                    self.lo = left(e_top);
+                }
+            }
+            // Its symmetric version: f ends lower, R below f is pruned.
+            if f_top.y < e_top.y {
+                self.j0 = kf + 1;
+                if f_top.y > lo_y {
+                    self.lo = right(f_top);
+                }
+            }
+            // f starts at or below the start of I: R below f is pruned (f covers it).
+            if f_bot.y <= self.lo.p.y {
+                self.j0 = self.j0.max(kf);
+            }
+            // Its symmetric version: L below e is pruned.
+            if e_bot.y <= self.lo.p.y {
+                self.i1 = self.i1.min(ke + 1);
+            }
+        } else {
+            // g is decreasing above max(bottom(e), bottom(f)): if that is at or below
+            // the bottom of I, the maximum is there.
+            if e_bot.y.max(f_bot.y) <= lo_y {
+                return Some(self.at_height(k, true));
+            }
+            // e starts no lower than f: L above e is pruned and I ends at bottom(e).
+            if e_bot.y >= f_bot.y {
+                self.i0 = ke + 1;
+                if e_bot.y < hi_y {
+                    self.hi = left(e_bot);
+                }
+            }
+            // Its symmetric version: f starts higher, R above f is pruned.
+            if f_bot.y > e_bot.y {
+                self.j1 = kf;
+                if f_bot.y < hi_y {
+                    self.hi = right(f_bot);
+                }
+            }
+            // f ends at or above the end of I: R above f is pruned (f covers it).
+            if f_top.y >= self.hi.p.y {
+                self.j1 = self.j1.min(kf + 1);
+            }
+            // Its symmetric version: L above e is pruned.
+            if e_top.y >= self.hi.p.y {
+                self.i0 = self.i0.max(ke);
             }
         }
         None

@@ -50,7 +50,7 @@ pub use certificate::{Certificate, CertificateError, Derivation, Which, verify, 
 pub use chazelle_dobkin::ChazelleDobkin;
 pub use clm::{Clm, ClmVariant, ClmWithFactor, ClmWorkspace, LpOrder, Sampling};
 pub use counts::{Counts, CountsSummary, LpCall};
-pub use dobkin::Dobkin;
+pub use dobkin::{Dobkin, DobkinVariant};
 pub use fallback::{exact_certificate, proven, proven_linked};
 pub use linear::{Linear, brute_force};
 pub use linear_linked::LinearLinked;
