@@ -578,6 +578,29 @@ fn certified_scene_queries_verify_on_every_route() {
             let (p, q) = (scene.polygon(*a).unwrap(), scene.polygon(*b).unwrap());
             assert_eq!(verify_linked(p, q, c), Ok(()));
         }
+        // Every candidate pair with its certificate: the same candidates as the broad
+        // phase, each proved, the intersecting ones exactly the batch's pairs.
+        let candidates = scene.candidate_pairs();
+        let answered = scene.candidate_pairs_certified();
+        assert_eq!(
+            candidates,
+            answered.iter().map(|&(a, b, _)| (a, b)).collect::<Vec<_>>()
+        );
+        for (a, b, c) in &answered {
+            let c = c.as_ref().unwrap();
+            let (p, q) = (scene.polygon(*a).unwrap(), scene.polygon(*b).unwrap());
+            assert_eq!(verify_linked(p, q, c), Ok(()));
+            assert_eq!(c.intersects(), truth(&scene, *a, *b));
+        }
+        assert_eq!(
+            plain,
+            answered
+                .iter()
+                .filter(|(_, _, c)| c.as_ref().unwrap().intersects())
+                .map(|&(a, b, _)| (a, b))
+                .collect::<Vec<_>>()
+        );
+        assert!(answered.iter().any(|(_, _, c)| !c.as_ref().unwrap().intersects()));
         let pairs: Vec<_> = ids
             .iter()
             .flat_map(|&a| ids.iter().map(move |&b| (a, b)))

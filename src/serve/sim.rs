@@ -9,13 +9,13 @@
 //!    first.
 //! 2. **Broad phase**: [`Scene::candidate_pairs`], the pairs whose boxes overlap (timed
 //!    on its own and reported as the candidate count).
-//! 3. **Narrow phase**: [`Scene::intersecting_pairs_certified`], the store's own
-//!    answer with a certificate per intersecting pair, planned per pair (sampled,
-//!    converted, cached) as the chosen strategy says. It flushes the already-flushed
-//!    broad phase once more; that repeat is counted in this phase.
-//! 4. **Response**: the candidate pairs found disjoint are asked once more, certified
-//!    ([`Scene::intersects_batch_certified`]; timed here, not counted in the frame's
-//!    queries), and each one's separating edge is kept. Each intersecting pair takes
+//! 3. **Narrow phase**: [`Scene::candidate_pairs_certified`], the store's own answer
+//!    with a certificate per candidate pair (an intersection witness, or the separating
+//!    edge of a pair found disjoint), planned per pair (sampled, converted, cached) as
+//!    the chosen strategy says. It flushes the already-flushed broad phase once more;
+//!    that repeat is counted in this phase.
+//! 4. **Response**: each disjoint candidate's separating edge is kept (no second
+//!    query). Each intersecting pair takes
 //!    its contact normal from the separating edge of its last disjoint frame
 //!    ([`separation_normal`]), or, when it has none (it was never seen disjoint with
 //!    overlapping boxes), from its intersection certificate ([`witness_normal`]); a
@@ -45,7 +45,7 @@ use crate::polygon::{ConvexPolygon, LinkedPolygon, VertexId, convex_hull};
 use crate::store::{PlannerStats, PolygonId, Scene, SceneError, Strategy};
 use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};
-use std::collections::{HashMap, HashSet};
+use std::collections::HashMap;
 use std::f64::consts::TAU;
 use std::time::Instant;
 
@@ -202,9 +202,9 @@ pub struct Timing {
     pub update_ms: f64,
     /// The broad phase (candidate pairs).
     pub broad_ms: f64,
-    /// The narrow phase (intersecting pairs with certificates).
+    /// The narrow phase (every candidate pair answered with its certificate).
     pub narrow_ms: f64,
-    /// Contact normals and bounces (with the certified queries on disjoint candidates).
+    /// Contact normals and bounces.
     pub response_ms: f64,
 }
 
@@ -434,12 +434,16 @@ impl Simulation {
         let before = on_scene!(&self.store, s => s.stats());
         let candidates = on_scene!(&mut self.store, s => s.candidate_pairs());
         let t2 = Instant::now();
-        let found = on_scene!(&mut self.store, s => s.intersecting_pairs_certified());
+        let answered = on_scene!(&mut self.store, s => s.candidate_pairs_certified());
+        let (found, apart): (Vec<_>, Vec<_>) = answered
+            .into_iter()
+            .filter_map(|(a, b, c)| Some((a, b, c.ok()?)))
+            .partition(|(_, _, c)| c.intersects());
         let hits = self.index_certified(found);
         let pairs: Vec<[usize; 2]> = hits.iter().map(|h| h.0).collect();
         let t3 = Instant::now();
         let after = on_scene!(&self.store, s => s.stats());
-        let normals = self.respond(&candidates, &hits, advance);
+        let normals = self.respond(&self.index_certified(apart), &hits, advance);
         let t4 = Instant::now();
         let stats = stats_delta(after, before);
         let ms = |a: Instant, b: Instant| (b - a).as_secs_f64() * 1e3;
@@ -496,7 +500,7 @@ impl Simulation {
         }
     }
 
-    /// The store's certified intersecting pairs as sorted index pairs `[i, j]`, `i < j`,
+    /// Certified store pairs as sorted index pairs `[i, j]`, `i < j`,
     /// each certificate turned so that its P is polygon `i`.
     fn index_certified(
         &self,
@@ -516,30 +520,18 @@ impl Simulation {
     /// Contact normals for the intersecting pairs `hits` (module docs, "Contact
     /// normals"); when the frame advanced, the elastic bounce of every pair approaching
     /// along its normal. Records the separating edge of every candidate pair found
-    /// disjoint, for its next contact.
+    /// disjoint (`apart`, with the certificates the narrow phase gave), for its next
+    /// contact.
     fn respond(
         &mut self,
-        candidates: &[(PolygonId, PolygonId)],
+        apart: &[([usize; 2], Certificate)],
         hits: &[([usize; 2], Certificate)],
         bounce: bool,
     ) -> Vec<Option<[f64; 2]>> {
-        // Candidates the narrow phase found disjoint: their separating edges.
-        let hit_set: HashSet<[usize; 2]> = hits.iter().map(|h| h.0).collect();
-        let disjoint: Vec<(PolygonId, PolygonId)> = candidates
-            .iter()
-            .copied()
-            .filter(|(a, b)| {
-                let (i, j) = (self.index[a], self.index[b]);
-                !hit_set.contains(&[i.min(j), i.max(j)])
-            })
-            .collect();
-        let certificates = on_scene!(&mut self.store, s => s.intersects_batch_certified(&disjoint));
-        let mut separators = HashMap::with_capacity(disjoint.len() + hits.len());
-        for ((a, b), certificate) in disjoint.iter().zip(certificates) {
-            let (i, j) = (self.index[a], self.index[b]);
-            if let Some(n) = certificate.ok().as_ref().and_then(separation_normal) {
-                let n = if i < j { n } else { [-n[0], -n[1]] };
-                separators.insert([i.min(j), i.max(j)], n);
+        let mut separators = HashMap::with_capacity(apart.len() + hits.len());
+        for (pair, certificate) in apart {
+            if let Some(n) = separation_normal(certificate) {
+                separators.insert(*pair, n);
             }
         }
         let mut walked: HashMap<usize, Vec<Point>> = HashMap::new();

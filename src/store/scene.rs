@@ -1142,6 +1142,19 @@ impl<K: Kernel> Scene<K> {
     /// its intersection (`a` is the certificate's P). Pairs the broad phase rejects get
     /// none: they are not in the answer.
     pub fn intersecting_pairs_certified(&mut self) -> Vec<(PolygonId, PolygonId, Certificate)> {
+        self.candidate_pairs_certified()
+            .into_iter()
+            .filter_map(|(a, b, c)| Some((a, b, c.ok().filter(Certificate::intersects)?)))
+            .collect()
+    }
+
+    /// Every candidate pair (boxes overlap) with the certificate of its answer, in one
+    /// planned pass: an intersection witness, or for a pair found disjoint its separating
+    /// edge (`a` is the certificate's P). What a caller needs that keeps separating
+    /// edges for later contacts without asking the disjoint pairs a second time.
+    pub fn candidate_pairs_certified(
+        &mut self,
+    ) -> Vec<(PolygonId, PolygonId, Result<Certificate, SceneError>)> {
         let (candidates, plan, warm) = self.plan_frame();
         let answers = self.run_plan_certified(plan);
         let hits = answers.iter().map(|c| matches!(c, Ok(c) if c.intersects()));
@@ -1149,10 +1162,7 @@ impl<K: Kernel> Scene<K> {
         candidates
             .into_iter()
             .zip(answers)
-            .filter_map(|((a, b), c)| {
-                let c = c.ok().filter(Certificate::intersects)?;
-                Some((self.id_of(a), self.id_of(b), c))
-            })
+            .map(|((a, b), c)| (self.id_of(a), self.id_of(b), c))
             .collect()
     }
 
