@@ -300,17 +300,31 @@ impl Kernel for ExactWithin {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn cross_products_sign(self, factors: [[Point; 4]; 4]) -> Sign {
-        let cross = |[ux, uy, vx, vy]: [f64; 4]| ux * vy - uy * vx;
-        let [d0, d1, d2, d3] = factors.map(factor_differences);
-        let s = cross(d0) * cross(d1) + cross(d2) * cross(d3);
+        // `s` is the fast kernel's value; the static filter's bound and validity are
+        // only needed (and, being used on that path only, only computed) when the
+        // semi-static bound cannot decide: at large n most calls of Chazelle–Dobkin's
+        // slope comparison, whose factors are short edges times long vectors.
+        let (s, bound, valid) = cross_products_from_differences(factors.map(factor_differences));
         if s > self.four {
             Sign::Positive
         } else if s < -self.four {
             Sign::Negative
+        } else if valid && s.abs() > bound {
+            nonzero_sign(s)
         } else {
-            cross_products_within_slow(factors)
+            // The points go to the cold function one by one (registers and the
+            // argument area, written on this path only): passed as an array, the
+            // array had to be in memory before the comparison, which cost the
+            // algorithms' hot paths sixteen stores per call.
+            let [
+                [a0, b0, c0, d0],
+                [a1, b1, c1, d1],
+                [a2, b2, c2, d2],
+                [a3, b3, c3, d3],
+            ] = factors;
+            cross_products_within_slow(a0, b0, c0, d0, a1, b1, c1, d1, a2, b2, c2, d2, a3, b3, c3, d3)
         }
     }
 }
@@ -343,10 +357,35 @@ fn dot_within_slow(a: Point, b: Point, c: Point, d: Point) -> Sign {
     Exact.dot(a, b, c, d)
 }
 
+/// [`ExactWithin::cross_products_sign`]'s undecided calls, the sixteen points of its
+/// factors in order: [`Exact`]'s static filter and what follows it.
 #[cold]
 #[inline(never)]
-fn cross_products_within_slow(factors: [[Point; 4]; 4]) -> Sign {
-    Exact.cross_products_sign(factors)
+#[allow(clippy::too_many_arguments)]
+fn cross_products_within_slow(
+    a0: Point,
+    b0: Point,
+    c0: Point,
+    d0: Point,
+    a1: Point,
+    b1: Point,
+    c1: Point,
+    d1: Point,
+    a2: Point,
+    b2: Point,
+    c2: Point,
+    d2: Point,
+    a3: Point,
+    b3: Point,
+    c3: Point,
+    d3: Point,
+) -> Sign {
+    Exact.cross_products_sign([
+        [a0, b0, c0, d0],
+        [a1, b1, c1, d1],
+        [a2, b2, c2, d2],
+        [a3, b3, c3, d3],
+    ])
 }
 
 /// The static filter for `det = l − r` or `det = l + r`, `l` and `r` each a product of
