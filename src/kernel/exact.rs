@@ -302,16 +302,21 @@ impl Kernel for ExactWithin {
 
     #[inline(always)]
     fn cross_products_sign(self, factors: [[Point; 4]; 4]) -> Sign {
-        // `s` is the fast kernel's value; the static filter's bound and validity are
-        // only needed (and, being used on that path only, only computed) when the
-        // semi-static bound cannot decide: at large n most calls of Chazelle–Dobkin's
-        // slope comparison, whose factors are short edges times long vectors.
-        let (s, bound, valid) = cross_products_from_differences(factors.map(factor_differences));
+        let cross = |[ux, uy, vx, vy]: [f64; 4]| ux * vy - uy * vx;
+        let d = factors.map(factor_differences);
+        let s = cross(d[0]) * cross(d[1]) + cross(d[2]) * cross(d[3]);
         if s > self.four {
-            Sign::Positive
+            return Sign::Positive;
         } else if s < -self.four {
-            Sign::Negative
-        } else if valid && s.abs() > bound {
+            return Sign::Negative;
+        }
+        // The static filter, inline: at large n the semi-static bound cannot decide
+        // most calls of Chazelle–Dobkin's slope comparison, whose factors are short
+        // edges times long vectors. Its magnitudes are computed here, on this path
+        // only (computed beside `s`, they cost every call a dozen instructions); its
+        // value is `s` again, the same operations on the same differences.
+        let (s, bound, valid) = cross_products_from_differences(d);
+        if valid && s.abs() > bound {
             nonzero_sign(s)
         } else {
             // The points go to the cold function one by one (registers and the
