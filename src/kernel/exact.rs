@@ -179,6 +179,9 @@ pub struct ExactWithin {
     two: f64,
     /// `B₄`, or `+∞` when not valid.
     four: f64,
+    /// `−B₂` and `−B₄`, kept so that a call compares without negating.
+    neg_two: f64,
+    neg_four: f64,
 }
 
 impl Default for ExactWithin {
@@ -186,6 +189,8 @@ impl Default for ExactWithin {
         ExactWithin {
             two: f64::INFINITY,
             four: f64::INFINITY,
+            neg_two: f64::NEG_INFINITY,
+            neg_four: f64::NEG_INFINITY,
         }
     }
 }
@@ -233,7 +238,12 @@ impl ExactWithin {
         } else {
             f64::INFINITY
         };
-        ExactWithin { two, four }
+        ExactWithin {
+            two,
+            four,
+            neg_two: -two,
+            neg_four: -four,
+        }
     }
 
     /// The two-product bound `B₂` (`+∞` when not valid).
@@ -262,7 +272,7 @@ impl Kernel for ExactWithin {
         let det = left - right;
         if det > self.two {
             Orientation::Ccw
-        } else if det < -self.two {
+        } else if det < self.neg_two {
             Orientation::Cw
         } else {
             orient_within_slow(a, b, c)
@@ -280,7 +290,7 @@ impl Kernel for ExactWithin {
         let det = left - right;
         if det > self.two {
             Orientation::Ccw
-        } else if det < -self.two {
+        } else if det < self.neg_two {
             Orientation::Cw
         } else {
             cross_within_slow(a, b, c, d)
@@ -293,7 +303,7 @@ impl Kernel for ExactWithin {
         let det = left + right;
         if det > self.two {
             Sign::Positive
-        } else if det < -self.two {
+        } else if det < self.neg_two {
             Sign::Negative
         } else {
             dot_within_slow(a, b, c, d)
@@ -307,7 +317,7 @@ impl Kernel for ExactWithin {
         let s = cross(d[0]) * cross(d[1]) + cross(d[2]) * cross(d[3]);
         if s > self.four {
             return Sign::Positive;
-        } else if s < -self.four {
+        } else if s < self.neg_four {
             return Sign::Negative;
         }
         // The static filter, inline: at large n the semi-static bound cannot decide
