@@ -833,3 +833,33 @@ fn fixed_rescale_is_exact_where_it_decides() {
     }
     assert!(decided > 20_000, "decided {decided}");
 }
+
+/// [`ExactWithin`]'s degree-4 calls that its semi-static bound cannot decide go to the
+/// static filter inline, which must refuse what it cannot vouch for. Here one factor's
+/// products underflow to zero (2^-1100) while the other term is tiny but normal
+/// (−2^-510): the computed value has the wrong sign and is far outside the bound
+/// computed from the magnitudes, so only the filter's range check (every factor's
+/// magnitude at least 2^-480) sends the call on to the exact layers. The boxes span
+/// 2^300, beyond the semi-static bound's range.
+#[test]
+fn degree_four_inline_filter_refuses_underflow() {
+    let p = Point::new;
+    let o = p(0.0, 0.0);
+    let (h, t) = (2f64.powi(300), 2f64.powi(-550));
+    let (s1, s2) = (2f64.powi(-128), 2f64.powi(-127));
+    let factors = [
+        [o, p(h, 0.0), o, p(0.0, h)],
+        [o, p(t, 0.0), o, p(0.0, t)],
+        [o, p(s1, 0.0), o, p(0.0, -s2)],
+        [o, p(s1, 0.0), o, p(0.0, s2)],
+    ];
+    // 2^600 · 2^-1100 − 2^-255 · 2^-255 > 0.
+    assert_eq!(exact_products(factors), Sign::Positive);
+    let b = (o, p(h, h));
+    let k = ExactWithin::new([b, b]);
+    assert_eq!(k.four, f64::INFINITY);
+    assert_eq!(k.cross_products_sign(factors), Sign::Positive);
+    assert_eq!(Exact.cross_products_sign(factors), Sign::Positive);
+    // The fast kernel's value has the other sign.
+    assert_eq!(super::super::Fast.cross_products_sign(factors), Sign::Negative);
+}
