@@ -58,9 +58,9 @@
 //! # Cost
 //! Measured in docs/results.md ("The exact kernel's overhead", "At extreme scales"),
 //! in instructions (callgrind) and time: with the semi-static filter the O(log n)
-//! algorithms spend 1.10–1.26× the fast kernel's instructions at n = 2^10 and 2^14
-//! (Chazelle–Dobkin 1.21×) and 1.18–1.43× at 2^18, where more calls are nearly
-//! degenerate relative to the polygons' size and go on to the static filter (before:
+//! algorithms spend 1.11–1.19× the fast kernel's instructions at n = 2^10 and 2^14
+//! and 1.19–1.24× at 2^18, where more calls are nearly degenerate relative to the
+//! polygons' size and go on to the static filter (before the semi-static filter:
 //! 1.3–1.6×). Validation plus the crossings sweep at 2^±600 and 2^1016 cost 1.38–1.46×
 //! the instructions of the same input at scale 1 (before the fixed rescaling: 1.65×).
 //! Predicates that mix magnitudes more than 2^1022 apart within one call fall to big
@@ -171,7 +171,13 @@ impl Kernel for Exact {
 /// A predicate whose computed value `v` satisfies `v > B` or `v < −B` is decided by
 /// that sign: the same two comparisons the [`Fast`](super::Fast) kernel makes against
 /// zero. Anything else (a value within the bound, NaN, a bound out of its range,
-/// which is `+∞`) goes to [`Exact`]'s own layers, out of line. The default value has
+/// which is `+∞`) goes to [`Exact`]'s own layers, out of line, except that a degree-4
+/// call first tries [`Exact`]'s static filter inline (its derivation at
+/// `cross_products_filtered`; it refuses what it cannot vouch for, including
+/// overflow and underflow, and those calls go on out of line): at large n the
+/// semi-static bound decides few of Chazelle–Dobkin's slope comparisons, whose
+/// factors are short edges times long vectors, and the out-of-line call cost more
+/// than the filter. The default value has
 /// infinite bounds: every call goes to [`Exact`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ExactWithin {
