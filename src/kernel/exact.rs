@@ -177,8 +177,8 @@ impl Kernel for Exact {
 /// overflow and underflow, and those calls go on out of line): at large n the
 /// semi-static bound decides few of Chazelle–Dobkin's slope comparisons, whose
 /// factors are short edges times long vectors, and the out-of-line call cost more
-/// than the filter. The default value has
-/// infinite bounds: every call goes to [`Exact`].
+/// than the filter. The default value has infinite bounds: every call goes to
+/// [`Exact`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ExactWithin {
     /// `B₂`, or `+∞` when not valid.
