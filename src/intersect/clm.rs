@@ -901,6 +901,8 @@ impl Walk<'_> {
 mod tests {
     use super::{below, fisher_yates, shuffle};
     use crate::kernel::Point;
+    use rand::SeedableRng;
+    use rand::rngs::SmallRng;
 
     #[test]
     fn below_is_in_range_and_uniform() {
@@ -935,12 +937,13 @@ mod tests {
             first[positions[0] as usize] += 1;
             // Positions alone.
             shuffle(&mut positions, &mut [], &mut rng);
+            sorted.clone_from(&positions);
+            sorted.sort_unstable();
+            assert_eq!(sorted, [0, 1, 2, 3, 4]);
         }
         // Every position comes first about 2000/5 times.
         assert!(first.iter().all(|&h| (300..500).contains(&h)), "{first:?}");
     }
-    use rand::SeedableRng;
-    use rand::rngs::SmallRng;
 
     #[test]
     fn fisher_yates_draws_distinct_positions_and_restores_its_array() {
