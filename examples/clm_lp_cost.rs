@@ -1,10 +1,11 @@
 //! CLM's LP cost per constraint, for instruction counters and profilers:
 //! `clm_lp_cost intersecting|disjoint LOG2 QUERIES` runs QUERIES CLM queries (exact
 //! kernel, default variant) on 16 Rotated pairs of 2^LOG2 vertices per polygon in
-//! shuffled arena order, cycled, and prints the wall time per query, the LP's
-//! constraints and examined points per query, and the time per constraint. Count
-//! instructions with `valgrind --tool=callgrind` and subtract a run with 0 queries
-//! (the setup): docs/sublinear.md, "The LP's cost per constraint".
+//! shuffled arena order, cycled, and prints the wall time per query (timed pass), and
+//! the LPs' constraints, examined points and walked chain vertices per query (a
+//! separate counted pass over the same queries). Count instructions with `valgrind
+//! --tool=callgrind` (both passes run: 2 × QUERIES queries) and subtract a run with 0
+//! queries (the setup): docs/results.md, "The LP's cost per constraint".
 
 use polysect::generate::{self, Family, Relation};
 use polysect::intersect::{ArrayIntersection, Clm, ClmWorkspace, Counts, Linear, LinkedIntersection};
