@@ -7,6 +7,7 @@ use polysect::kernel::{Kernel, segments_intersect};
 use polysect::lp::{LpError, LpWorkspace, Separation, separating_line};
 use polysect::{Exact, Fast, Orientation, Point};
 use rand::rngs::SmallRng;
+use rand::seq::SliceRandom;
 use rand::{Rng, SeedableRng};
 
 const SEED: u64 = 0x5e1de1;
@@ -380,4 +381,69 @@ fn kept_order_agrees_with_brute_force() {
     }
     assert_eq!(ws.redone, 0, "exact results must certify themselves");
     assert!(tally.separated > tally.cases / 5 && tally.separated < tally.cases * 4 / 5);
+}
+
+/// The one-dimensional step tests each earlier point against the line through the
+/// violating point and the tightest bound so far, and classifies only the violators:
+/// sets with many points exactly on a common line (ties between bounds, the partner
+/// of the other set preferred) and points one ulp to either side of it (the filter's
+/// undecided calls, and bounds tighter or looser by one ulp), at an offset of 2^30
+/// where an ulp is a visible step, in random and kept order, against the brute force.
+#[test]
+fn one_ulp_off_the_shared_line_agrees_with_brute_force() {
+    let mut rng = SmallRng::seed_from_u64(SEED + 11);
+    let mut ws = LpWorkspace::new();
+    let mut tally = Tally {
+        cases: 0,
+        separated: 0,
+        fast_wrong: 0,
+    };
+    let base = 2f64.powi(30);
+    for i in 0..4_000 {
+        ws.keep_order(i % 2 == 0);
+        // The line y = base + s·(x − base) for a small integer slope s, exact at integers.
+        let s = rng.random_range(-2..=2) as f64;
+        let on = |x: f64| Point::new(base + x, base + s * x);
+        let nudge = |q: Point, up: bool| Point::new(q.x, if up { q.y.next_up() } else { q.y.next_down() });
+        let split = rng.random_range(-2..=2) as f64;
+        let (mut a, mut b) = (Vec::new(), Vec::new());
+        for _ in 0..rng.random_range(1..=6) {
+            a.push(on(rng.random_range(-6..=0) as f64 + split));
+        }
+        for _ in 0..rng.random_range(1..=6) {
+            b.push(on(rng.random_range(0..=6) as f64 - split.min(0.0)));
+        }
+        // A mostly below the line, B mostly above, by one ulp or by a unit; now and
+        // then a point on the wrong side.
+        for _ in 0..rng.random_range(0..=5) {
+            let q = on(rng.random_range(-8..=8) as f64);
+            let wrong = rng.random_range(0..8) == 0;
+            a.push(if rng.random_bool(0.5) {
+                nudge(q, wrong)
+            } else {
+                Point::new(q.x, q.y + if wrong { 1.0 } else { -1.0 })
+            });
+        }
+        for _ in 0..rng.random_range(0..=5) {
+            let q = on(rng.random_range(-8..=8) as f64);
+            let wrong = rng.random_range(0..8) == 0;
+            b.push(if rng.random_bool(0.5) {
+                nudge(q, !wrong)
+            } else {
+                Point::new(q.x, q.y + if wrong { -1.0 } else { 1.0 })
+            });
+        }
+        a.shuffle(&mut rng);
+        b.shuffle(&mut rng);
+        check_pair(&a, &b, &mut rng, &mut ws, &mut tally);
+    }
+    assert_eq!(ws.redone, 0, "exact results must certify themselves");
+    println!(
+        "lp one-ulp: {} pairs, {} separable, fast kernel wrong {} of {} calls",
+        tally.cases,
+        tally.separated,
+        tally.fast_wrong,
+        3 * tally.cases
+    );
+    assert!(tally.separated > tally.cases / 10 && tally.separated < tally.cases * 9 / 10);
 }

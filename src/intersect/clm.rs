@@ -29,9 +29,15 @@
 //!    LP can end the query); the second chain its line calls for then takes the freed
 //!    walking slot (see `walk_and_decide`).
 //!
+//! The LPs never read the arenas: each sample's points are read once right after the
+//! draw, in one pass of independent reads whose cache misses overlap, and each walk
+//! records the points it reads for its side tests, so every LP runs on contiguous
+//! copies (16 bytes per point of workspace), however often a set is used.
+//!
 //! The LPs' random order comes from CLM (thesis 3.3.5, [`LpOrder::Caller`]): samples
 //! drawn independently are in random order already, chains are shuffled once when
-//! walked, and the LP keeps the order given. [`ClmVariant`] also runs the LP's own
+//! walked (Fisher–Yates with Lemire's bounded draws from 32 random bits), and the LP
+//! keeps the order given. [`ClmVariant`] also runs the LP's own
 //! shuffle and the thesis's Fisher–Yates sampling (3.3.1), for comparison.
 //!
 //! At most five LPs on O(r + n/r) points each, so the expected time is O(√n) for
@@ -90,7 +96,6 @@ use crate::kernel::{Kernel, Orientation, Point};
 use crate::lp::{ArenaPoints, Bitangent, LpError, LpWorkspace, Separation, WitnessPoint, separating_line};
 use crate::polygon::{LinkedPolygon, SampleWorkspace};
 use rand::Rng;
-use rand::seq::SliceRandom;
 
 /// The Chazelle–Liu–Magen sublinear test with the default sample factor
 /// [`Clm::SAMPLE_FACTOR`]; see the module docs.
@@ -194,6 +199,13 @@ pub struct ClmWorkspace {
     chain: Vec<u32>,
     chain2: Vec<u32>,
     lp: LpWorkspace,
+    /// The points of the samples, in the order of `rp` and `rq`, read from the arenas
+    /// once (the LPs read them again and again).
+    rp_points: Vec<Point>,
+    rq_points: Vec<Point>,
+    /// The points of the chains, in the order of `cp`, `cq`, `chain`, `chain2`,
+    /// recorded by the walks as they read them.
+    chain_points: [Vec<Point>; 4],
     walked: u64,
     /// The index array of [`Sampling::FisherYates`] (the identity between draws) and
     /// the swaps of one draw, to restore it.
@@ -447,9 +459,45 @@ fn sample<R: Rng + ?Sized>(
 ) {
     let n = poly.len();
     if r.saturating_mul(16) <= n {
-        out.extend((0..r).map(|_| rng.random_range(0..n as u32)));
+        out.extend((0..r).map(|_| below(rng, n as u32)));
     } else {
         poly.sample_positions(r, rng, marks, out);
+    }
+}
+
+/// Replaces `out` by the points of `poly` at `positions`, in order.
+fn gather(poly: &LinkedPolygon, positions: &[u32], out: &mut Vec<Point>) {
+    out.clear();
+    out.extend(positions.iter().map(|&i| poly.point_at(i as usize)));
+}
+
+/// A uniform integer in `0..n` (`n > 0`) from 32 random bits, by Lemire's
+/// multiply-and-reject method: one multiplication, and a division only in the rare
+/// round that may need a rejection. (`Rng::random_range` does the same with more
+/// bookkeeping; this runs for every sampled vertex and every chain vertex.)
+#[inline]
+fn below<R: Rng + ?Sized>(rng: &mut R, n: u32) -> u32 {
+    let mut m = u64::from(rng.next_u32()) * u64::from(n);
+    if (m as u32) < n {
+        let threshold = n.wrapping_neg() % n;
+        while (m as u32) < threshold {
+            m = u64::from(rng.next_u32()) * u64::from(n);
+        }
+    }
+    (m >> 32) as u32
+}
+
+/// Shuffles `positions` uniformly (Fisher–Yates), and `points` the same way when it is
+/// not empty (then it has the same length).
+fn shuffle<R: Rng + ?Sized>(positions: &mut [u32], points: &mut [Point], rng: &mut R) {
+    let with_points = !points.is_empty();
+    debug_assert!(!with_points || points.len() == positions.len());
+    for i in (1..positions.len()).rev() {
+        let j = below(rng, i as u32 + 1) as usize;
+        positions.swap(i, j);
+        if with_points {
+            points.swap(i, j);
+        }
     }
 }
 
@@ -489,17 +537,19 @@ fn sample_size(c: f64, n: usize) -> usize {
     if r.is_finite() && r >= 3.0 { r as usize } else { 3 }
 }
 
-/// [`separating_line`], reporting the call to `probe` (constraints and work).
+/// [`separating_line`] on the gathered points of two sets (the points at their arena
+/// positions, index for index), reporting the call to `probe` (constraints and work).
 fn counted_lp<K: Kernel, R: Rng + ?Sized, P: Probe>(
     k: K,
-    a: &ArenaPoints<'_>,
-    b: &ArenaPoints<'_>,
+    (a, a_points): (&ArenaPoints<'_>, &[Point]),
+    (b, b_points): (&ArenaPoints<'_>, &[Point]),
     rng: &mut R,
     lp: &mut LpWorkspace,
     probe: &mut P,
 ) -> Result<Separation, LpError> {
+    debug_assert!(a_points.len() == a.positions.len() && b_points.len() == b.positions.len());
     let before = lp.work;
-    let result = separating_line(k, a, b, rng, lp);
+    let result = separating_line(k, a_points, b_points, rng, lp);
     probe.lp_call(a, b, lp.work - before, &result);
     result
 }
@@ -531,7 +581,7 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
                 // Only independent draws come in random order.
                 for (r, poly) in [(&mut ws.rp, p), (&mut ws.rq, q)] {
                     if r.len().saturating_mul(16) > poly.len() {
-                        r.shuffle(rng);
+                        shuffle(r, &mut [], rng);
                     }
                 }
             }
@@ -541,6 +591,10 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
             fisher_yates(q.len(), rq_len, rng, &mut ws.perm, &mut ws.swaps, &mut ws.rq);
         }
     }
+    // One pass of independent reads per sample (their cache misses overlap), so the
+    // LPs that use a sample read contiguous memory.
+    gather(p, &ws.rp, &mut ws.rp_points);
+    gather(q, &ws.rq, &mut ws.rq_points);
     let rp = ArenaPoints {
         polygon: p,
         positions: &ws.rp,
@@ -550,7 +604,14 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         positions: &ws.rq,
     };
     probe.samples(&rp, &rq);
-    let t = match counted_lp(k, &rp, &rq, rng, &mut ws.lp, probe) {
+    let t = match counted_lp(
+        k,
+        (&rp, &ws.rp_points),
+        (&rq, &ws.rq_points),
+        rng,
+        &mut ws.lp,
+        probe,
+    ) {
         Ok(Separation::Separated(t)) => t,
         // Samples are never empty (polygons have ≥ 3 vertices), so only a real
         // intersection of the sample hulls gets here.
@@ -575,26 +636,41 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     ];
     // The chains are walked into buffers taken out of the workspace for the schedule
     // and put back after it, whatever it answers.
-    let mut chains = Chains([
-        std::mem::take(&mut ws.cp),
-        std::mem::take(&mut ws.cq),
-        std::mem::take(&mut ws.chain),
-        std::mem::take(&mut ws.chain2),
-    ]);
+    let mut chains = Chains(
+        [
+            std::mem::take(&mut ws.cp),
+            std::mem::take(&mut ws.cq),
+            std::mem::take(&mut ws.chain),
+            std::mem::take(&mut ws.chain2),
+        ],
+        std::mem::take(&mut ws.chain_points),
+    );
     let shuffle_chains = v.lp_order == LpOrder::Caller;
     let answer =
         walk_and_decide::<K, R, P, CERT>(k, p, q, first, &mut chains, shuffle_chains, rng, ws, probe);
-    let Chains([cp, cq, chain, chain2]) = chains;
+    let Chains([cp, cq, chain, chain2], points) = chains;
     (ws.cp, ws.cq, ws.chain, ws.chain2) = (cp, cq, chain, chain2);
+    ws.chain_points = points;
     answer
 }
 
-/// The four chain buffers, indexed by [`Set::chain_index`].
-struct Chains([Vec<u32>; 4]);
+/// The four chain buffers (positions, and the points at them), indexed by
+/// [`Set::chain_index`].
+struct Chains([Vec<u32>; 4], [Vec<Point>; 4]);
 
 impl Chains {
     fn get(&self, s: Set) -> &[u32] {
         &self.0[s.chain_index()]
+    }
+
+    fn points(&self, s: Set) -> &[Point] {
+        &self.1[s.chain_index()]
+    }
+
+    /// Both buffers of a chain, to be written.
+    fn buffers(&mut self, s: Set) -> (&mut Vec<u32>, &mut Vec<Point>) {
+        let i = s.chain_index();
+        (&mut self.0[i], &mut self.1[i])
     }
 }
 
@@ -647,6 +723,8 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     let ClmWorkspace {
         rp,
         rq,
+        rp_points,
+        rq_points,
         lp,
         walked,
         trace,
@@ -656,14 +734,13 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     let q_open = rq.len() < q.len();
     let mut slots: [Option<Active<'_>>; 2] = [None, None];
     for (slot, (walk, set)) in slots.iter_mut().zip(first.into_iter().zip([Set::Cp, Set::Cq])) {
-        let cursor = walk.start(k, &mut chains.0[set.chain_index()]);
+        let cursor = walk.start(k, chains.buffers(set));
         *slot = Some(Active { set, walk, cursor });
     }
     loop {
         for a in slots.iter_mut().flatten() {
             if !a.cursor.done {
-                a.walk
-                    .advance(k, &mut a.cursor, &mut chains.0[a.set.chain_index()]);
+                a.walk.advance(k, &mut a.cursor, chains.buffers(a.set));
             }
         }
         for slot in &mut slots {
@@ -677,7 +754,8 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
                 positions: chains.get(set),
             });
             if shuffle_chains {
-                chains.0[set.chain_index()].shuffle(rng);
+                let (positions, points) = chains.buffers(set);
+                shuffle(positions, points, rng);
             }
             *walked += len as u64;
             // The LP this chain completes: (near set, its polygon, far chain, its polygon).
@@ -688,20 +766,22 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
                 _ => (Set::Chain2, Set::Cp),
             };
             let polygon = |s: Set| if s.of() == Which::P { p } else { q };
-            let near_points = match near {
-                Set::Rp => &rp[..],
-                Set::Rq => &rq[..],
-                s => chains.get(s),
+            let (near_positions, near_points) = match near {
+                Set::Rp => (&rp[..], &rp_points[..]),
+                Set::Rq => (&rq[..], &rq_points[..]),
+                s => (chains.get(s), chains.points(s)),
             };
             let a = ArenaPoints {
                 polygon: polygon(near),
-                positions: near_points,
+                positions: near_positions,
             };
             let b = ArenaPoints {
                 polygon: polygon(far),
                 positions: chains.get(far),
             };
-            let Ok(Separation::Separated(line)) = counted_lp(k, &a, &b, rng, lp, probe) else {
+            let Ok(Separation::Separated(line)) =
+                counted_lp(k, (&a, near_points), (&b, chains.points(far)), rng, lp, probe)
+            else {
                 if CERT {
                     trace.meet = Some((near, far));
                 }
@@ -719,7 +799,7 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
             };
             if let Some((set, poly, t)) = next {
                 let walk = Walk::new(poly, line.start, line.end, Orientation::Ccw, t as usize);
-                let cursor = walk.start(k, &mut chains.0[set.chain_index()]);
+                let cursor = walk.start(k, chains.buffers(set));
                 *slot = Some(Active { set, walk, cursor });
             }
         }
@@ -756,13 +836,14 @@ struct Cursor {
 
 impl Walk<'_> {
     #[inline]
-    fn is_far<K: Kernel>(&self, k: K, pos: usize) -> bool {
-        k.orient(self.s, self.e, self.poly.point_at(pos)) == self.far
+    fn is_far<K: Kernel>(&self, k: K, x: Point) -> bool {
+        k.orient(self.s, self.e, x) == self.far
     }
 
-    /// Starts the walk, writing its first vertices to `out`.
-    fn start<K: Kernel>(&self, k: K, out: &mut Vec<u32>) -> Cursor {
+    /// Starts the walk, writing its first vertices and their points to `out`.
+    fn start<K: Kernel>(&self, k: K, (out, points): (&mut Vec<u32>, &mut Vec<Point>)) -> Cursor {
         out.clear();
+        points.clear();
         let done = Cursor {
             v: 0,
             forward: true,
@@ -771,15 +852,18 @@ impl Walk<'_> {
         };
         let (poly, t) = (self.poly, self.t);
         let (next, prev) = (poly.next_at(t), poly.prev_at(t));
-        let forward = if self.is_far(k, next) {
+        let (next_point, prev_point) = (poly.point_at(next), poly.point_at(prev));
+        let forward = if self.is_far(k, next_point) {
             true
-        } else if self.is_far(k, prev) {
+        } else if self.is_far(k, prev_point) {
             false
         } else {
             out.extend([prev as u32, t as u32, next as u32]);
+            points.extend([prev_point, poly.point_at(t), next_point]);
             return done;
         };
         out.push(t as u32);
+        points.push(poly.point_at(t));
         Cursor {
             v: if forward { next } else { prev },
             forward,
@@ -790,12 +874,15 @@ impl Walk<'_> {
         }
     }
 
-    /// One step: records the current vertex and moves on unless it closes the chain.
+    /// One step: records the current vertex and its point, and moves on unless it
+    /// closes the chain.
     #[inline]
-    fn advance<K: Kernel>(&self, k: K, c: &mut Cursor, out: &mut Vec<u32>) {
+    fn advance<K: Kernel>(&self, k: K, c: &mut Cursor, (out, points): (&mut Vec<u32>, &mut Vec<Point>)) {
+        let x = self.poly.point_at(c.v);
         out.push(c.v as u32);
+        points.push(x);
         c.steps_left -= 1;
-        if !self.is_far(k, c.v) || c.steps_left == 0 {
+        if !self.is_far(k, x) || c.steps_left == 0 {
             c.done = true;
             return;
         }
@@ -812,9 +899,51 @@ impl Walk<'_> {
 
 #[cfg(test)]
 mod tests {
-    use super::fisher_yates;
+    use super::{below, fisher_yates, shuffle};
+    use crate::kernel::Point;
     use rand::SeedableRng;
     use rand::rngs::SmallRng;
+
+    #[test]
+    fn below_is_in_range_and_uniform() {
+        let mut rng = SmallRng::seed_from_u64(11);
+        for n in [1u32, 2, 3, 7, 1000, u32::MAX] {
+            for _ in 0..1000 {
+                assert!(below(&mut rng, n) < n);
+            }
+        }
+        // n = 3: a rejection threshold above zero (2^32 mod 3 = 1); each value ~1/3.
+        let mut hits = [0u32; 3];
+        for _ in 0..30_000 {
+            hits[below(&mut rng, 3) as usize] += 1;
+        }
+        assert!(hits.iter().all(|&h| (9_400..10_600).contains(&h)), "{hits:?}");
+    }
+
+    #[test]
+    fn shuffle_keeps_positions_and_points_together() {
+        let mut rng = SmallRng::seed_from_u64(12);
+        let mut first = [0u32; 5];
+        for _ in 0..2000 {
+            let mut positions: Vec<u32> = (0..5).collect();
+            let mut points: Vec<Point> = (0..5).map(|i| Point::new(i as f64, -(i as f64))).collect();
+            shuffle(&mut positions, &mut points, &mut rng);
+            for (&i, x) in positions.iter().zip(&points) {
+                assert_eq!(*x, Point::new(i as f64, -(i as f64)));
+            }
+            let mut sorted = positions.clone();
+            sorted.sort_unstable();
+            assert_eq!(sorted, [0, 1, 2, 3, 4]);
+            first[positions[0] as usize] += 1;
+            // Positions alone.
+            shuffle(&mut positions, &mut [], &mut rng);
+            sorted.clone_from(&positions);
+            sorted.sort_unstable();
+            assert_eq!(sorted, [0, 1, 2, 3, 4]);
+        }
+        // Every position comes first about 2000/5 times.
+        assert!(first.iter().all(|&h| (300..500).contains(&h)), "{first:?}");
+    }
 
     #[test]
     fn fisher_yates_draws_distinct_positions_and_restores_its_array() {

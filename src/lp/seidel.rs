@@ -389,9 +389,8 @@ enum Step {
     /// The new optimum, tight on the violating point and on `partner`.
     Line(Line, Item),
     /// The constraints seen so far admit no separator: the hulls intersect. No line
-    /// through the violating point satisfies the earlier points at these one or two
-    /// indices.
-    Infeasible(usize, usize),
+    /// through the violating point satisfies these one or two earlier points.
+    Infeasible(Item, Item),
     /// The kernel contradicted itself (fast kernel only).
     Inconsistent,
 }
@@ -665,7 +664,13 @@ fn incremental<K: Kernel, A: PointSet + ?Sized, B: PointSet + ?Sized, const RECO
             continue;
         }
         w += t as u64;
-        match step(k, p, in_b, &items[..t], a0, b0) {
+        let guess = if in_b { ta } else { tb };
+        let guess = Item {
+            p: guess.1,
+            enc: guess.0,
+            loaded: true,
+        };
+        match step(k, p, in_b, &items[..t], a0, b0, guess, &mut w) {
             Step::Line(l, partner) => {
                 line = l;
                 let partner_in_b = partner.enc & B_BIT != 0;
@@ -689,9 +694,7 @@ fn incremental<K: Kernel, A: PointSet + ?Sized, B: PointSet + ?Sized, const RECO
                     let item = |(enc, p)| Item { p, enc, loaded: true };
                     let (a, b) = (item(ta), item(tb));
                     let frame = [item((0, a0)), item((B_BIT, b0)), al, br];
-                    let points = [
-                        items[t], items[q], items[q2], a, b, frame[0], frame[1], frame[2], frame[3],
-                    ];
+                    let points = [items[t], q, q2, a, b, frame[0], frame[1], frame[2], frame[3]];
                     witness.set(&points.map(WitnessPoint::of), t + 1);
                 }
                 return StepOut::Infeasible;
@@ -712,88 +715,168 @@ fn incremental<K: Kernel, A: PointSet + ?Sized, B: PointSet + ?Sized, const RECO
     }
 }
 
+/// Where an earlier point q puts the slope of a line through the violating point p
+/// (see [`step`]).
+enum Bound {
+    /// An upper bound: the line through p and q, directed into H (`from` x′-left).
+    Upper(Point, Point),
+    /// A lower bound (q ∈ A x′-right of p, or q ∈ B x′-left of p).
+    Lower,
+    /// No bound: q and p have the same x′ and q is on its side of every such line.
+    Free,
+    /// q and p have the same x′ and q is on the wrong side of every such line.
+    Blocked,
+}
+
+/// Classifies an earlier point `q` (≠ `p`) for the one-dimensional LP through `p`.
+#[inline(always)]
+fn bound<K: Kernel>(k: K, p: Point, q: Point, q_in_b: bool, a0: Point, b0: Point) -> Bound {
+    // Sign of x′(q − p); q − p = ±d₀ (p, q = a₀, b₀) is answered without the kernel.
+    let sx = if (p == a0 && q == b0) || (p == b0 && q == a0) {
+        Orientation::Collinear
+    } else {
+        k.cross(a0, b0, p, q)
+    };
+    // u × (q − p) must be ≥ 0 for q in B, ≤ 0 for q in A; with u = (1, s) that is
+    // y′(q − p) − s·x′(q − p): upper bounds are B's points x′-right of p and A's
+    // points x′-left of it.
+    match sx {
+        Orientation::Collinear => {
+            let sy = k.dot(a0, b0, p, q);
+            let ok = if q_in_b {
+                sy != Sign::Negative
+            } else {
+                sy != Sign::Positive
+            };
+            if ok { Bound::Free } else { Bound::Blocked }
+        }
+        // x′(q − p) > 0
+        Orientation::Cw if q_in_b => Bound::Upper(p, q),
+        Orientation::Ccw if !q_in_b => Bound::Upper(q, p),
+        _ => Bound::Lower,
+    }
+}
+
+/// Whether `q` (of B if `q_in_b`) is strictly on the wrong side of the directed line
+/// (`from`, `to`), and whether it is on the line.
+#[inline(always)]
+fn violates<K: Kernel>(k: K, from: Point, to: Point, q: Point, q_in_b: bool) -> (bool, bool) {
+    let o = k.orient(from, to, q);
+    let wrong = if q_in_b { Orientation::Cw } else { Orientation::Ccw };
+    (o == wrong, o == Orientation::Collinear)
+}
+
 /// The one-dimensional LP: the most counter-clockwise direction in H of a line through
 /// `p` that keeps every earlier point on its side. (Inlined into each instance of the
-/// incremental loop, as it always was before the loop had a recording instance.)
+/// incremental loop.)
+///
+/// The optimum is the tightest upper bound, i.e. the line through p and the earlier
+/// point it first meets when turned clockwise from the previous optimum's direction.
+/// Rather than classifying every earlier point (upper or lower bound: one `cross`) and
+/// comparing it with the tightest bound of its kind (a second one), each point is
+/// tested against the line through p and the tightest upper bound so far, one
+/// `orient`, which almost every point satisfies: only a violating point is
+/// classified, and it is either a tighter upper bound (the line turns) or a lower
+/// bound above the tightest upper bound (infeasible). A lower bound satisfied by an
+/// earlier, steeper line may violate the final one, so the points before the last
+/// turn are tested once more against the final line. `guess`, the previous optimum's
+/// tangent point in the other set than p's, is usually the final bound or close to
+/// it, so that pass is short. Adds the points tested again to `work`. Among points on the final line, one of the other set
+/// than p is preferred as the partner (the tangent points must be one of each set).
 #[inline(always)]
-fn step<K: Kernel>(k: K, p: Point, p_in_b: bool, earlier: &[Item], a0: Point, b0: Point) -> Step {
-    // The tightest bounds so far, as (index into `earlier`, direction from → to); plain
-    // locals rather than an `Option<struct>` keep this hot loop free of memory traffic.
-    const NONE: usize = usize::MAX;
-    let (mut up, mut up_from, mut up_to, mut up_opp) = (NONE, p, p, false);
-    let (mut lo, mut lo_from, mut lo_to, mut lo_opp) = (NONE, p, p, false);
-    for (i, &Item { p: q, enc, .. }) in earlier.iter().enumerate() {
-        let q_in_b = enc & B_BIT != 0;
+#[allow(clippy::too_many_arguments)]
+fn step<K: Kernel>(
+    k: K,
+    p: Point,
+    p_in_b: bool,
+    earlier: &[Item],
+    a0: Point,
+    b0: Point,
+    guess: Item,
+    work: &mut u64,
+) -> Step {
+    // The tightest upper bound so far: its line (from, to) and the point; plain locals
+    // keep the hot loop free of memory traffic.
+    let mut best: Option<(Point, Point, Item)> = None;
+    let g_in_b = guess.enc & B_BIT != 0;
+    if guess.p != p
+        && let Bound::Upper(from, to) = bound(k, p, guess.p, g_in_b, a0, b0)
+    {
+        best = Some((from, to, guess));
+    }
+    // A point of the other set than the bound's on the current line, if any.
+    let mut partner: Option<Item> = None;
+    // The points before this index were tested against an older line, or none.
+    let mut recheck = 0;
+    for (i, it) in earlier.iter().enumerate() {
+        let q = it.p;
+        let q_in_b = it.enc & B_BIT != 0;
         let opposite = q_in_b != p_in_b;
         if q == p {
             if opposite {
-                return Step::Infeasible(i, i); // a point of both sets
+                return Step::Infeasible(*it, *it); // a point of both sets
             }
             continue;
         }
-        // Sign of x′(q − p); q − p = ±d₀ (p, q = a₀, b₀) is answered without the kernel.
-        let sx = if (p == a0 && q == b0) || (p == b0 && q == a0) {
-            Orientation::Collinear
-        } else {
-            k.cross(a0, b0, p, q)
-        };
-        // u × (q − p) must be ≥ 0 for q in B, ≤ 0 for q in A; with u = (1, s) that is
-        // y′(q − p) − s·x′(q − p).
-        let is_upper = match sx {
-            Orientation::Collinear => {
-                let sy = k.dot(a0, b0, p, q);
-                let ok = if q_in_b {
-                    sy != Sign::Negative
-                } else {
-                    sy != Sign::Positive
-                };
-                if ok {
-                    continue;
+        if let Some((from, to, b)) = best {
+            if it.enc == b.enc {
+                continue; // the bound itself: on its line, and an exact zero is slow
+            }
+            let (wrong, on) = violates(k, from, to, q, q_in_b);
+            if !wrong {
+                if on && opposite && partner.is_none() && (b.enc & B_BIT != 0) == p_in_b {
+                    partner = Some(*it);
                 }
-                return Step::Infeasible(i, i);
-            }
-            // x′(q − p) > 0
-            Orientation::Cw => q_in_b,
-            Orientation::Ccw => !q_in_b,
-        };
-        let (from, to) = if sx == Orientation::Cw { (p, q) } else { (q, p) };
-        if is_upper {
-            let take = up == NONE
-                || match k.cross(up_from, up_to, from, to) {
-                    // A smaller slope: a tighter upper bound.
-                    Orientation::Cw => true,
-                    Orientation::Collinear => opposite && !up_opp,
-                    Orientation::Ccw => false,
-                };
-            if take {
-                (up, up_from, up_to, up_opp) = (i, from, to, opposite);
-            }
-        } else {
-            let take = lo == NONE
-                || match k.cross(lo_from, lo_to, from, to) {
-                    Orientation::Ccw => true,
-                    Orientation::Collinear => opposite && !lo_opp,
-                    Orientation::Cw => false,
-                };
-            if take {
-                (lo, lo_from, lo_to, lo_opp) = (i, from, to, opposite);
+                continue;
             }
         }
+        match bound(k, p, q, q_in_b, a0, b0) {
+            Bound::Upper(from, to) => {
+                best = Some((from, to, *it));
+                partner = None;
+                recheck = i;
+            }
+            Bound::Lower => {
+                if let Some((_, _, b)) = best {
+                    // Its slope exceeds the tightest upper bound's.
+                    return Step::Infeasible(b, *it);
+                }
+                // Before any upper bound: tested in the second pass.
+            }
+            // Only an inconsistent kernel gets here with a bound violated.
+            Bound::Free => {}
+            Bound::Blocked => return Step::Infeasible(*it, *it),
+        }
     }
-    if up == NONE {
+    let Some((from, to, b)) = best else {
         // The bounding constraints always give an upper bound; only an inconsistent
         // kernel loses it.
         return Step::Inconsistent;
-    }
-    let mut partner = earlier[up];
-    if lo != NONE {
-        match k.cross(lo_from, lo_to, up_from, up_to) {
-            Orientation::Cw => return Step::Infeasible(up, lo),
-            Orientation::Collinear if !up_opp && lo_opp => partner = earlier[lo],
-            _ => {}
+    };
+    let b_opposite = (b.enc & B_BIT != 0) != p_in_b;
+    *work += recheck as u64;
+    for it in &earlier[..recheck] {
+        let q = it.p;
+        let q_in_b = it.enc & B_BIT != 0;
+        if q == p || it.enc == b.enc {
+            continue; // of p's set (one of the other set returned above), or the bound
         }
+        let (wrong, on) = violates(k, from, to, q, q_in_b);
+        if !wrong {
+            if on && !b_opposite && partner.is_none() && q_in_b != p_in_b {
+                partner = Some(*it);
+            }
+            continue;
+        }
+        return match bound(k, p, q, q_in_b, a0, b0) {
+            Bound::Lower => Step::Infeasible(b, *it),
+            Bound::Blocked => Step::Infeasible(*it, *it),
+            // A tighter upper bound than the tightest: an inconsistent kernel.
+            Bound::Upper(..) | Bound::Free => Step::Inconsistent,
+        };
     }
-    Step::Line(Line { s: up_from, e: up_to }, partner)
+    let partner = if b_opposite { b } else { partner.unwrap_or(b) };
+    Step::Line(Line { s: from, e: to }, partner)
 }
 
 /// Checks `items` against the line (the points not yet tested against it), adds those
