@@ -71,6 +71,7 @@
 mod broad;
 #[cfg(feature = "geo-types")]
 mod interop;
+mod lazy;
 mod planner;
 mod route;
 mod scene;

@@ -1,7 +1,8 @@
 //! [`Scene`]: the store of editable polygons and its query planner.
 
 use super::broad::{BoundingBox, BroadPhase};
-use super::planner::{Account, Arena, CostModel, PlannerStats, Strategy};
+use super::lazy::LazyLinked;
+use super::planner::{Account, CostModel, PlannerStats, Strategy};
 use super::route::{
     QueryWorkspace, Route, array_certified, array_test, linear_certified, linear_test, sampled_certified,
     sampled_test,
@@ -109,7 +110,8 @@ impl From<PolygonError> for SceneError {
 
 #[derive(Clone, Debug)]
 struct Entry {
-    polygon: LinkedPolygon,
+    /// The linked polygon; translations may wait in it until it is read (`lazy.rs`).
+    polygon: LazyLinked,
     generation: u64,
     bbox: BoundingBox,
     /// False after an edit that may have shrunk the true box; the stored box still
@@ -371,7 +373,7 @@ impl<K: Kernel> Scene<K> {
         let generation = self.next_generation;
         self.next_generation += 1;
         let key = self.entries.insert(Entry {
-            polygon,
+            polygon: LazyLinked::new(polygon),
             generation,
             bbox,
             bbox_tight: true,
@@ -408,7 +410,7 @@ impl<K: Kernel> Scene<K> {
     pub fn remove(&mut self, id: PolygonId) -> Result<LinkedPolygon, SceneError> {
         let key = self.key(id)?;
         self.broad.mark(key);
-        Ok(self.entries.remove(key).polygon)
+        Ok(self.entries.remove(key).polygon.into_inner())
     }
 
     #[inline]
@@ -435,7 +437,7 @@ impl<K: Kernel> Scene<K> {
     /// # Errors
     /// `StalePolygon`, `ForeignPolygon` (as every method taking a `PolygonId`).
     pub fn polygon(&self, id: PolygonId) -> Result<&LinkedPolygon, SceneError> {
-        self.key(id).map(|k| &self.entries[k].polygon)
+        self.key(id).map(|k| self.entries[k].polygon.get())
     }
 
     /// The polygon's bounding box: it always contains the polygon, and is the tightest
@@ -479,6 +481,7 @@ impl<K: Kernel> Scene<K> {
         let e = &mut self.entries[key];
         let v = e
             .polygon
+            .get_mut()
             .insert_after(after, p)
             .map_err(|err| SceneError::Edit(id, err))?;
         e.edited(&mut self.stats);
@@ -494,7 +497,11 @@ impl<K: Kernel> Scene<K> {
     pub fn remove_vertex(&mut self, id: PolygonId, v: VertexId) -> Result<Point, SceneError> {
         let key = self.key(id)?;
         let e = &mut self.entries[key];
-        let old = e.polygon.remove(v).map_err(|err| SceneError::Edit(id, err))?;
+        let old = e
+            .polygon
+            .get_mut()
+            .remove(v)
+            .map_err(|err| SceneError::Edit(id, err))?;
         e.edited(&mut self.stats);
         if e.bbox.touches_boundary(old) {
             e.bbox_tight = false;
@@ -512,6 +519,7 @@ impl<K: Kernel> Scene<K> {
         let e = &mut self.entries[key];
         let old = e
             .polygon
+            .get_mut()
             .move_vertex(v, p)
             .map_err(|err| SceneError::Edit(id, err))?;
         e.edited(&mut self.stats);
@@ -568,24 +576,26 @@ impl<K: Kernel> Scene<K> {
                 .fold(0.0f64, |m, v| m.max(v.abs()));
             let delta = largest * (f64::EPSILON * 0.5) * (1.0 + f64::EPSILON) + f64::from_bits(1);
             if largest <= 2f64.powi(52) && delta < e.rounding_margin {
-                e.polygon.translate_unchecked(dx, dy);
                 e.rounding_margin =
                     (e.rounding_margin - delta) / (1.0 + 2.0 * delta) * (1.0 - 4.0 * f64::EPSILON);
             } else {
-                let boundary = e.snapshot.as_ref().map(|s| s.vertices());
-                e.rounding_margin = e
-                    .polygon
-                    .translate_finite(dx, dy, boundary)
-                    .map_err(|err| SceneError::Edit(id, err))?;
+                let margin = match &e.snapshot {
+                    Some(s) => LinkedPolygon::check_translated_ring(s.vertices(), dx, dy),
+                    None => e.polygon.materialized().check_translation(dx, dy),
+                };
+                e.rounding_margin = margin.map_err(|err| SceneError::Edit(id, err))?;
             }
+            // Accepted: the linked polygon applies it when it is next read.
+            e.polygon.translate(dx, dy);
             e.bbox = shifted;
         } else {
-            e.polygon
+            let polygon = e.polygon.get_mut();
+            polygon
                 .translate(dx, dy)
                 .map_err(|err| SceneError::Edit(id, err))?;
             e.rounding_margin = 0.0;
             // A loose box reaching past the polygon overflowed: take the true box.
-            e.bbox = BoundingBox::of(e.polygon.iter().map(|(_, p)| p)).expect("a polygon has vertices");
+            e.bbox = BoundingBox::of(polygon.iter().map(|(_, p)| p)).expect("a polygon has vertices");
             e.bbox_tight = true;
         }
         e.version += 1;
@@ -607,8 +617,7 @@ impl<K: Kernel> Scene<K> {
 
     /// Builds and keeps the snapshot; the walk also makes the box tight again.
     fn convert(&mut self, key: usize) {
-        let e = &mut self.entries[key];
-        let snapshot = e.polygon.to_convex();
+        let snapshot = self.entries[key].polygon.materialized().to_convex();
         self.install_snapshot(key, snapshot);
     }
 
@@ -687,7 +696,7 @@ impl<K: Kernel> Scene<K> {
         let (mut convert_ns, mut answer_ns) = (0.0, 0.0);
         for k in &chosen {
             self.entries[*k].plan.convert = true;
-            convert_ns += self.costs.convert_cost(Arena::of(&self.entries[*k].polygon));
+            convert_ns += self.costs.convert_cost(self.entries[*k].polygon.arena());
         }
         for route in routes.iter_mut().flatten() {
             if let Route::Sampled(a, b) = *route {
@@ -713,8 +722,14 @@ impl<K: Kernel> Scene<K> {
     /// when the planner must. A kept certificate is checked (O(1) plus the climb); a pair
     /// separated without one is walked linearly, which answers it and finds one.
     fn warm_route(&mut self, a: usize, b: usize, w: &mut Option<Warm>) -> Option<Route> {
-        let (p, q) = (&self.entries[a].polygon, &self.entries[b].polygon);
-        let found = match w.take()? {
+        let state = w.take()?;
+        if matches!(state, Warm::Intersecting) {
+            return None;
+        }
+        self.entries[a].polygon.materialized();
+        self.entries[b].polygon.materialized();
+        let (p, q) = (self.entries[a].polygon.get(), self.entries[b].polygon.get());
+        let found = match state {
             Warm::Intersecting => return None,
             Warm::Certified { of, from, deep } => {
                 let kept = warm::check(self.kernel, p, q, of, from, deep);
@@ -776,7 +791,7 @@ impl<K: Kernel> Scene<K> {
     fn choose(&self, touched: &[usize], chosen: &mut Vec<usize>) {
         for &k in touched {
             let e = &self.entries[k];
-            let cost = self.costs.convert_cost(Arena::of(&e.polygon));
+            let cost = self.costs.convert_cost(e.polygon.arena());
             if !e.plan.convert && e.account.should_convert(cost, e.plan.known_ns, e.plan.known) {
                 chosen.push(k);
             }
@@ -785,19 +800,14 @@ impl<K: Kernel> Scene<K> {
 
     /// What snapshots of both polygons would save one query between them.
     fn saving(&self, a: usize, b: usize) -> f64 {
-        self.costs.saving(
-            Arena::of(&self.entries[a].polygon),
-            Arena::of(&self.entries[b].polygon),
-        )
+        self.costs
+            .saving(self.entries[a].polygon.arena(), self.entries[b].polygon.arena())
     }
 
     /// The route of a live pair once conversions are chosen, and its estimated cost;
     /// unconverted polygons pay their rent.
     fn finish_route(&mut self, a: usize, b: usize) -> (Route, f64) {
-        let (pa, pb) = (
-            Arena::of(&self.entries[a].polygon),
-            Arena::of(&self.entries[b].polygon),
-        );
+        let (pa, pb) = (self.entries[a].polygon.arena(), self.entries[b].polygon.arena());
         let (na, nb) = (pa.vertices, pb.vertices);
         let (ha, hb) = (
             self.entries[a].will_have_snapshot(),
@@ -839,15 +849,15 @@ impl<K: Kernel> Scene<K> {
             Route::Known(v) => v,
             Route::Warm { .. } => false,
             Route::Arrays(a, b, linear) => array_test(self.kernel, snapshot(a), snapshot(b), linear),
-            Route::Linear(a, b) => linear_test(self.kernel, &e(a).polygon, &e(b).polygon),
+            Route::Linear(a, b) => linear_test(self.kernel, e(a).polygon.get(), e(b).polygon.get()),
             Route::Sampled(a, b) => {
                 let mut rng = SmallRng::seed_from_u64(seed);
-                sampled_test(self.kernel, &e(a).polygon, &e(b).polygon, ws, &mut rng)
+                sampled_test(self.kernel, e(a).polygon.get(), e(b).polygon.get(), ws, &mut rng)
             }
             Route::Throwaway(a, b, linear) => array_test(
                 self.kernel,
-                &e(a).polygon.to_convex(),
-                &e(b).polygon.to_convex(),
+                &e(a).polygon.get().to_convex(),
+                &e(b).polygon.get().to_convex(),
                 linear,
             ),
         }
@@ -870,27 +880,27 @@ impl<K: Kernel> Scene<K> {
         let snapshot = |k: usize| e(k).snapshot.as_ref().expect("planned snapshot");
         match route {
             Route::Known(true) => {
-                let point = e(a).polygon.point_at(0);
+                let point = e(a).polygon.get().point_at(0);
                 Certificate::VertexInside { of: Which::P, point }
             }
             Route::Known(false) => match (&e(a).snapshot, &e(b).snapshot) {
                 (Some(p), Some(q)) => array_certified(Exact, p, q, false),
                 _ => {
                     let mut rng = SmallRng::seed_from_u64(seed);
-                    sampled_certified(Exact, &e(a).polygon, &e(b).polygon, ws, &mut rng)
+                    sampled_certified(Exact, e(a).polygon.get(), e(b).polygon.get(), ws, &mut rng)
                 }
             },
             Route::Warm { of, from, to } => Certificate::Separated { of, from, to },
             Route::Arrays(a, b, linear) => array_certified(self.kernel, snapshot(a), snapshot(b), linear),
-            Route::Linear(a, b) => linear_certified(self.kernel, &e(a).polygon, &e(b).polygon),
+            Route::Linear(a, b) => linear_certified(self.kernel, e(a).polygon.get(), e(b).polygon.get()),
             Route::Sampled(a, b) => {
                 let mut rng = SmallRng::seed_from_u64(seed);
-                sampled_certified(self.kernel, &e(a).polygon, &e(b).polygon, ws, &mut rng)
+                sampled_certified(self.kernel, e(a).polygon.get(), e(b).polygon.get(), ws, &mut rng)
             }
             Route::Throwaway(a, b, linear) => array_certified(
                 self.kernel,
-                &e(a).polygon.to_convex(),
-                &e(b).polygon.to_convex(),
+                &e(a).polygon.get().to_convex(),
+                &e(b).polygon.get().to_convex(),
                 linear,
             ),
         }
@@ -1044,7 +1054,10 @@ impl<K: Kernel> Scene<K> {
     fn convert_all(&mut self, mut keys: Vec<usize>, parallel: bool) {
         keys.sort_unstable();
         keys.dedup();
-        let convert = |&k: &usize| (k, self.entries[k].polygon.to_convex());
+        for &k in &keys {
+            self.entries[k].polygon.materialized();
+        }
+        let convert = |&k: &usize| (k, self.entries[k].polygon.get().to_convex());
         let snapshots: Vec<(usize, ConvexPolygon)> = match () {
             #[cfg(feature = "parallel")]
             () if parallel => keys.par_iter().with_min_len(16).map(convert).collect(),
@@ -1186,10 +1199,11 @@ impl<K: Kernel> Scene<K> {
     /// Never: a polygon always has vertices for its box.
     pub fn debug_validate(&self) -> Result<(), String> {
         for (k, e) in &self.entries {
-            e.polygon
+            let polygon = e.polygon.get();
+            polygon
                 .debug_validate()
                 .map_err(|m| format!("polygon {k}: {m}"))?;
-            let exact = BoundingBox::of(e.polygon.iter().map(|(_, p)| p)).expect("vertices");
+            let exact = BoundingBox::of(polygon.iter().map(|(_, p)| p)).expect("vertices");
             let b = e.bbox;
             let contains = b.min.x <= exact.min.x
                 && b.min.y <= exact.min.y
@@ -1202,7 +1216,7 @@ impl<K: Kernel> Scene<K> {
                 ));
             }
             if let Some(s) = &e.snapshot {
-                let mut now = e.polygon.to_convex().into_vertices();
+                let mut now = polygon.to_convex().into_vertices();
                 let start = now
                     .iter()
                     .position(|&p| p == s.vertices()[0])
@@ -1292,5 +1306,66 @@ mod tests {
         }
         assert!(skipped > 1000, "{skipped} checks skipped");
         assert!(refused > 10, "{refused} translations refused");
+    }
+
+    /// Translations of a polygon wait (up to the list's length) while only its snapshot
+    /// is read, and every reader of the linked polygon sees them applied: shared reads
+    /// through a twin, edits and conversions in place; the coordinates are eager
+    /// translation's, bit for bit.
+    #[test]
+    fn translations_wait_until_the_linked_polygon_is_read() {
+        use super::super::lazy::MAX_PENDING;
+        let mut scene = Scene::new();
+        scene.set_strategy(Strategy::Cached);
+        let a = scene.insert(LinkedPolygon::from_convex(&regular_polygon(64, 1.0)));
+        let b = scene.insert(LinkedPolygon::from_convex(&regular_polygon(32, 0.5)));
+        let mut eager = scene.polygon(a).unwrap().clone();
+        assert!(scene.intersects(a, b).unwrap());
+        assert!(scene.has_snapshot(a).unwrap());
+        let key = scene.key(a).unwrap();
+        let pending = |s: &Scene| s.entries[key].polygon.pending();
+        let coords = |p: &LinkedPolygon| -> Vec<(u64, u64)> {
+            p.iter().map(|(_, q)| (q.x.to_bits(), q.y.to_bits())).collect()
+        };
+        let mut max_seen = 0;
+        for step in 0..3 * MAX_PENDING + 1 {
+            let (dx, dy) = (0.01 + step as f64 * 1e-4, -0.007);
+            scene.translate(a, dx, dy).unwrap();
+            eager.translate(dx, dy).unwrap();
+            max_seen = max_seen.max(pending(&scene));
+            // Only the snapshot is read by the array test.
+            scene.intersects(a, b).unwrap();
+            assert_eq!(scene.stats().array_tests as usize, step + 2);
+        }
+        assert_eq!(
+            max_seen, MAX_PENDING,
+            "translations wait, and no more than the list holds"
+        );
+        assert!(pending(&scene) > 0);
+        // A shared read: the twin, with handles valid on the polygon.
+        let first = scene.polygon(a).unwrap().first();
+        assert_eq!(coords(scene.polygon(a).unwrap()), coords(&eager));
+        assert!(pending(&scene) > 0);
+        // An edit: applied in place first (the old point is the translated one).
+        let p = scene.polygon(a).unwrap().point(first).unwrap();
+        assert_eq!(
+            scene.move_vertex(a, first, p).unwrap(),
+            eager.point(eager.first()).unwrap()
+        );
+        assert_eq!(pending(&scene), 0);
+        assert_eq!(coords(scene.polygon(a).unwrap()), coords(&eager));
+        // A translation without a snapshot waits too; a conversion applies it.
+        assert!(!scene.has_snapshot(a).unwrap());
+        scene.translate(a, 0.25, 0.5).unwrap();
+        eager.translate(0.25, 0.5).unwrap();
+        assert_eq!(pending(&scene), 1);
+        scene.convert(key);
+        assert_eq!(pending(&scene), 0);
+        assert_eq!(coords(scene.polygon(a).unwrap()), coords(&eager));
+        scene.debug_validate().unwrap();
+        // Removal returns the translated polygon.
+        scene.translate(a, -3.0, 1.0 / 3.0).unwrap();
+        eager.translate(-3.0, 1.0 / 3.0).unwrap();
+        assert_eq!(coords(&scene.remove(a).unwrap()), coords(&eager));
     }
 }
