@@ -833,6 +833,12 @@ fn deferred_translations_equal_eager_ones_on_every_path() {
         let (p, _) = generate::pair(Family::NonUniform, n, Relation::Any, rng);
         let (dx, dy) = (rng.random_range(-3.0..3.0), rng.random_range(-3.0..3.0));
         let moved = p.map(|v| Point::new(v.x + dx, v.y + dy)).unwrap_or(p);
+        // Half on a grid of 2^-24, where dyadic translations are exact.
+        let snap = |x: f64| (x * 2f64.powi(24)).round() * 2f64.powi(-24);
+        let moved = match rng.random_bool(0.5) {
+            true => moved.map(|v| Point::new(snap(v.x), snap(v.y))).unwrap_or(moved),
+            false => moved,
+        };
         let linked = if rng.random_bool(0.5) {
             LinkedPolygon::from_convex_shuffled(&moved, rng)
         } else {
@@ -871,8 +877,13 @@ fn deferred_translations_equal_eager_ones_on_every_path() {
             eager: huge,
             handles: ours.into_iter().zip(theirs).collect(),
         });
+        // Half the velocities dyadic (2^-20): exact on the grid polygons.
         let mut velocity: Vec<(f64, f64)> = (0..twins.len())
-            .map(|_| (rng.random_range(-0.05..0.05), rng.random_range(-0.05..0.05)))
+            .map(|k| {
+                let v = (rng.random_range(-0.05..0.05), rng.random_range(-0.05..0.05));
+                let snap = |x: f64| (x * 2f64.powi(20)).round() * 2f64.powi(-20);
+                if k % 2 == 0 { (snap(v.0), snap(v.1)) } else { v }
+            })
             .collect();
         velocity.push((0.05, -0.05));
         for step in 0..steps {
@@ -891,33 +902,37 @@ fn deferred_translations_equal_eager_ones_on_every_path() {
                 };
                 for _ in 0..burst {
                     for &k in &who {
-                        let (dx, dy) = match rng.random_range(0..10) {
-                            // Coherent motion (rounds: the steps are not dyadic).
-                            0..=5 => velocity[k],
+                        let far = (rng.random_range(-1e6..1e6), rng.random_range(-1e6..1e6));
+                        let vectors = match rng.random_range(0..10) {
+                            // Coherent motion (exact for dyadic steps on the grid
+                            // polygons, rounding for the others).
+                            0..=5 => vec![velocity[k]],
                             // Far away and back: rounds at every step.
-                            6 => (rng.random_range(-1e6..1e6), rng.random_range(-1e6..1e6)),
+                            6 => vec![far, (-far.0, -far.1)],
                             // Collapses the polygon by rounding: refused.
-                            7 => (2f64.powi(rng.random_range(60..1000)), 0.0),
+                            7 => vec![(2f64.powi(rng.random_range(60..1000)), 0.0)],
                             // Next to overflow (the huge triangle overflows after a
                             // few; the others collapse), or not finite at all.
-                            8 => match rng.random_range(0..3) {
+                            8 => vec![match rng.random_range(0..3) {
                                 0 => (4e307 * rng.random_range(-1.0..1.0), 0.0),
                                 1 => (0.0, f64::MAX * rng.random_range(-1.0..1.0)),
                                 _ => (f64::INFINITY, 0.0),
-                            },
-                            _ => (-velocity[k].0, rng.random_range(-1e-9..1e-9)),
+                            }],
+                            _ => vec![(-velocity[k].0, rng.random_range(-1e-9..1e-9))],
                         };
-                        let t = &mut twins[k];
-                        let got = scene.translate(t.id, dx, dy);
-                        let want = t.eager.translate(dx, dy);
-                        assert_eq!(
-                            got,
-                            want.map_err(|e| SceneError::Edit(t.id, e)),
-                            "run {run} step {step}"
-                        );
-                        counts[if got.is_ok() { 0 } else { 1 }] += 1;
-                        if matches!(got, Err(SceneError::Edit(_, EditError::NonFinite { .. }))) {
-                            counts[8] += 1;
+                        for (dx, dy) in vectors {
+                            let t = &mut twins[k];
+                            let got = scene.translate(t.id, dx, dy);
+                            let want = t.eager.translate(dx, dy);
+                            assert_eq!(
+                                got,
+                                want.map_err(|e| SceneError::Edit(t.id, e)),
+                                "run {run} step {step}"
+                            );
+                            counts[if got.is_ok() { 0 } else { 1 }] += 1;
+                            if matches!(got, Err(SceneError::Edit(_, EditError::NonFinite { .. }))) {
+                                counts[8] += 1;
+                            }
                         }
                     }
                 }

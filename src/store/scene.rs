@@ -126,6 +126,9 @@ struct Entry {
     /// A translation whose rounding moves no coordinate by this much or more keeps the
     /// polygon strictly convex (0: unknown); see `Scene::translate`.
     rounding_margin: f64,
+    /// A power of two of which every coordinate is an integer multiple (0: unknown);
+    /// translations on this grid that cannot round are proved exact in O(1).
+    grid: f64,
     /// Scratch of the plan being made: chosen for conversion, and what a snapshot would
     /// save the planned queries (and how many) that involve this polygon.
     plan: PlanMark,
@@ -214,6 +217,9 @@ pub struct Scene<K: Kernel = Exact> {
     /// Warm starts across frames: on/off, and the last frame's pairs.
     warm_starts: bool,
     warm: WarmCache,
+    /// Translations proved exact by the grid (tests only).
+    #[cfg(test)]
+    exact_skips: u64,
 }
 
 impl Default for Scene<Exact> {
@@ -245,6 +251,8 @@ impl<K: Kernel> Scene<K> {
             rng: crate::intersect::fresh_rng(),
             warm_starts: false,
             warm: WarmCache::default(),
+            #[cfg(test)]
+            exact_skips: 0,
         }
     }
 
@@ -370,6 +378,7 @@ impl<K: Kernel> Scene<K> {
     /// Never: a [`LinkedPolygon`] always has vertices.
     pub fn insert(&mut self, polygon: LinkedPolygon) -> PolygonId {
         let bbox = BoundingBox::of(polygon.iter().map(|(_, p)| p)).expect("a polygon has vertices");
+        let grid = polygon.iter().fold(f64::INFINITY, |g, (_, p)| g.min(grid_of(p)));
         let generation = self.next_generation;
         self.next_generation += 1;
         let key = self.entries.insert(Entry {
@@ -381,6 +390,7 @@ impl<K: Kernel> Scene<K> {
             snapshot: None,
             account: Account::default(),
             rounding_margin: 0.0,
+            grid,
             plan: PlanMark::default(),
         });
         self.broad.mark(key);
@@ -485,6 +495,7 @@ impl<K: Kernel> Scene<K> {
             .insert_after(after, p)
             .map_err(|err| SceneError::Edit(id, err))?;
         e.edited(&mut self.stats);
+        e.grid = e.grid.min(grid_of(p));
         self.grow_box(key, p);
         Ok(v)
     }
@@ -523,6 +534,7 @@ impl<K: Kernel> Scene<K> {
             .move_vertex(v, p)
             .map_err(|err| SceneError::Edit(id, err))?;
         e.edited(&mut self.stats);
+        e.grid = e.grid.min(grid_of(p));
         if e.bbox.touches_boundary(old) {
             e.bbox_tight = false;
         }
@@ -560,6 +572,7 @@ impl<K: Kernel> Scene<K> {
     pub fn translate(&mut self, id: PolygonId, dx: f64, dy: f64) -> Result<(), SceneError> {
         let key = self.key(id)?;
         let e = &mut self.entries[key];
+        let mut exact = false;
         let shifted = BoundingBox {
             min: Point::new(e.bbox.min.x + dx, e.bbox.min.y + dy),
             max: Point::new(e.bbox.max.x + dx, e.bbox.max.y + dy),
@@ -567,15 +580,27 @@ impl<K: Kernel> Scene<K> {
         if shifted.min.is_finite() && shifted.max.is_finite() {
             // The box contains every vertex and rounding is monotone: no translated
             // coordinate overflows, and each moves from the exact translate by at most
-            // half an ulp of the largest, `delta`. Below the margin left by the last
-            // check, the result is strictly convex without looking at a vertex;
-            // otherwise check the rounded boundary (on the snapshot when there is one:
-            // a sequential read), which also gives the new margin.
+            // half an ulp of the largest, `delta`. When no sum can round (the grid
+            // below), or below the margin left by the last check, the result is
+            // strictly convex without looking at a vertex; otherwise check the rounded
+            // boundary (on the snapshot when there is one: a sequential read), which
+            // also gives the new margin.
             let largest = [shifted.min.x, shifted.min.y, shifted.max.x, shifted.max.y]
                 .into_iter()
                 .fold(0.0f64, |m, v| m.max(v.abs()));
             let delta = largest * (f64::EPSILON * 0.5) * (1.0 + f64::EPSILON) + f64::from_bits(1);
-            if largest <= 2f64.powi(52) && delta < e.rounding_margin {
+            // On the grid: every coordinate and the vector are integer multiples of a
+            // power of two `h`, and every sum is at most 2^53·h in magnitude, so every
+            // sum is exact. An exact translation preserves every orientation and every
+            // turn margin (the same differences): nothing to check, nothing to shrink.
+            let h = e.grid.min(grid_of(Point::new(dx, dy)));
+            let bound = [e.bbox.min.x, e.bbox.min.y, e.bbox.max.x, e.bbox.max.y, dx, dy]
+                .into_iter()
+                .fold(0.0f64, |m, v| m.max(v.abs()));
+            exact = bound <= h * 2f64.powi(52);
+            if exact {
+                // The margin stands as it is.
+            } else if largest <= 2f64.powi(52) && delta < e.rounding_margin {
                 e.rounding_margin =
                     (e.rounding_margin - delta) / (1.0 + 2.0 * delta) * (1.0 - 4.0 * f64::EPSILON);
             } else {
@@ -588,12 +613,14 @@ impl<K: Kernel> Scene<K> {
             // Accepted: the linked polygon applies it when it is next read.
             e.polygon.translate(dx, dy);
             e.bbox = shifted;
+            e.grid = h;
         } else {
             let polygon = e.polygon.get_mut();
             polygon
                 .translate(dx, dy)
                 .map_err(|err| SceneError::Edit(id, err))?;
             e.rounding_margin = 0.0;
+            e.grid = e.grid.min(grid_of(Point::new(dx, dy)));
             // A loose box reaching past the polygon overflowed: take the true box.
             e.bbox = BoundingBox::of(polygon.iter().map(|(_, p)| p)).expect("a polygon has vertices");
             e.bbox_tight = true;
@@ -603,6 +630,12 @@ impl<K: Kernel> Scene<K> {
             s.translate_unchecked(dx, dy);
         }
         self.broad.mark(key);
+        #[cfg(test)]
+        {
+            self.exact_skips += u64::from(exact);
+        }
+        #[cfg(not(test))]
+        let _ = exact;
         Ok(())
     }
 
@@ -1231,6 +1264,35 @@ impl<K: Kernel> Scene<K> {
     }
 }
 
+/// The largest power of two of which both coordinates of `p` are integer multiples
+/// (+∞ for the origin; `p` finite). After a translation by a vector on grid `h` of a
+/// polygon on grid `h`, every coordinate is still on grid `h`, rounded or not: a sum of
+/// magnitude at most 2^53·h is exact, and every float of larger magnitude is a multiple
+/// of 2h. So the grid of a polygon is the least of its vertices' and of the vectors
+/// it was translated by.
+fn grid_of(p: Point) -> f64 {
+    let one = |x: f64| {
+        if x == 0.0 {
+            return f64::INFINITY;
+        }
+        let bits = x.to_bits() & !(1u64 << 63);
+        let (exponent, fraction) = ((bits >> 52) as i32, bits & ((1u64 << 52) - 1));
+        // x = m · 2^e with m an integer.
+        let (m, e) = if exponent == 0 {
+            (fraction, -1074)
+        } else {
+            (fraction | (1u64 << 52), exponent - 1075)
+        };
+        let k = e + m.trailing_zeros() as i32;
+        if k >= -1022 {
+            f64::from_bits(((k + 1023) as u64) << 52)
+        } else {
+            f64::from_bits(1u64 << (k + 1074))
+        }
+    };
+    one(p.x).min(one(p.y))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1242,6 +1304,40 @@ mod tests {
     /// check every time, on polygons whose vertices are a few ulps apart (where rounding
     /// does break convexity) and on ordinary ones: the same acceptances, the same
     /// refusals, the same coordinates, and skips actually taken.
+    fn snapped(points: &[Point], bits: i32) -> Vec<Point> {
+        let g = 2f64.powi(-bits);
+        let snap = |x: f64| (x / g).round() * g;
+        let pts: Vec<Point> = points.iter().map(|p| Point::new(snap(p.x), snap(p.y))).collect();
+        crate::polygon::convex_hull(&pts).unwrap().into_vertices()
+    }
+
+    /// `grid_of` is the largest power of two dividing both coordinates.
+    #[test]
+    fn grid_of_is_the_largest_dividing_power_of_two() {
+        let mut rng = SmallRng::seed_from_u64(0x9e1d);
+        assert_eq!(grid_of(Point::new(0.0, 0.0)), f64::INFINITY);
+        assert_eq!(grid_of(Point::new(3.0, 0.0)), 1.0);
+        assert_eq!(grid_of(Point::new(0.75, -6.0)), 0.25);
+        assert_eq!(grid_of(Point::new(f64::from_bits(1), 1.0)), f64::from_bits(1));
+        assert_eq!(grid_of(Point::new(f64::MAX, 0.0)), 2f64.powi(971));
+        assert_eq!(grid_of(Point::new(f64::MIN_POSITIVE, 0.0)), f64::MIN_POSITIVE);
+        for _ in 0..10_000 {
+            let x = f64::from_bits(rng.random::<u64>() >> 1) * if rng.random_bool(0.5) { 1.0 } else { -1.0 };
+            if !x.is_finite() || x == 0.0 {
+                continue;
+            }
+            let g = grid_of(Point::new(x, 0.0));
+            assert!(
+                g.is_finite() && g > 0.0 && g.to_bits() & ((1u64 << 52) - 1) == 0 || g < f64::MIN_POSITIVE
+            );
+            // x / g is an odd integer (exact: dividing by a power of two, no underflow
+            // below g itself).
+            let q = x / g;
+            assert_eq!(q, q.trunc(), "{x:e}");
+            assert_eq!(q.abs() % 2.0, 1.0, "{x:e}");
+        }
+    }
+
     #[test]
     fn skipped_translation_checks_agree_with_full_checks() {
         let mut rng = SmallRng::seed_from_u64(0x7a11);
@@ -1264,9 +1360,13 @@ mod tests {
             .into_vertices(),
             regular_polygon(16, 1.0).into_vertices(),
             regular_polygon(256, 5.0).into_vertices(),
+            // On a grid of 2^-20 (dyadic translations are then often exact).
+            snapped(regular_polygon(64, 3.0).vertices(), 20),
+            snapped(regular_polygon(1024, 0.5).vertices(), 30),
         ];
         let mut skipped = 0;
         let mut refused = 0;
+        let mut exact_skips = 0;
         for (s, shape) in shapes.iter().enumerate() {
             let mut scene = Scene::new();
             let id = scene.insert_points(shape.iter().copied()).unwrap();
@@ -1280,7 +1380,19 @@ mod tests {
             }
             for step in 0..3000 {
                 let scale = [1e-12, 1e-6, 1.0, 1e3, 1e7][rng.random_range(0..5)];
-                let (dx, dy) = (rng.random_range(-scale..scale), rng.random_range(-scale..scale));
+                // The grid shapes keep to dyadic vectors (one other would lose the grid).
+                let (dx, dy) = if s < 4 && rng.random_bool(0.5) {
+                    (rng.random_range(-scale..scale), rng.random_range(-scale..scale))
+                } else {
+                    // Dyadic: k · 2^-j, exact or rounding depending on j and the size.
+                    let j = match s {
+                        4 => rng.random_range(10..=20),
+                        5 => rng.random_range(20..=30),
+                        _ => rng.random_range(-10..60),
+                    };
+                    let mut d = || rng.random_range(-(1i64 << 20)..(1i64 << 20)) as f64 * 2f64.powi(-j);
+                    (d(), d())
+                };
                 let key = scene.key(id).unwrap();
                 let margin_before = scene.entries[key].rounding_margin;
                 let got = scene.translate(id, dx, dy);
@@ -1303,8 +1415,13 @@ mod tests {
                 }
             }
             scene.debug_validate().unwrap();
+            exact_skips += scene.exact_skips;
         }
         assert!(skipped > 1000, "{skipped} checks skipped");
+        assert!(
+            exact_skips > 500,
+            "{exact_skips} translations proved exact by the grid"
+        );
         assert!(refused > 10, "{refused} translations refused");
     }
 
