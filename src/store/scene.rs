@@ -349,8 +349,10 @@ impl<K: Kernel> Scene<K> {
         self.entries.iter().filter(|(_, e)| e.snapshot.is_some()).count()
     }
 
-    /// Heap memory held by the scene's structures, in bytes: the polygons' arenas, the
-    /// snapshots, the slots, the broad phase and the warm starts' pairs (per-query
+    /// Heap memory held by the scene's structures, in bytes: the polygons' arenas (and the
+    /// translated copy a shared read built, while it is kept; see
+    /// [`polygon`](Self::polygon)), the snapshots, the slots (each with its fixed list of
+    /// translations not yet applied), the broad phase and the warm starts' pairs (per-query
     /// scratch memory, bounded by the largest polygon queried, is not counted). It is
     /// O(slots + vertices + candidate pairs of the last frame) whatever the sequence of
     /// calls: no structure grows with the number of edits or queries.
@@ -442,7 +444,10 @@ impl<K: Kernel> Scene<K> {
         }
     }
 
-    /// The polygon (read-only; edit through the scene so caches stay correct).
+    /// The polygon (read-only; edit through the scene so caches stay correct), with every
+    /// translation applied. O(1), except after translations not yet applied: then the
+    /// first read builds the translated polygon beside the old arena, O(n), kept (and
+    /// taken in place of the old arena) until the scene next changes the polygon.
     ///
     /// # Errors
     /// `StalePolygon`, `ForeignPolygon` (as every method taking a `PolygonId`).
@@ -543,13 +548,19 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Translates the polygon by `(dx, dy)`: every vertex becomes `(x + dx, y + dy)`, each
-    /// coordinate rounded to nearest (IEEE addition). O(n): one pass over the vertices,
-    /// one over the snapshot if there is one (translated in place with the same
-    /// roundings: it stays valid, no reconversion), O(1) for the bounding box (shifted;
-    /// rounding is monotone, so the shifted box still contains, or equals, the translated
-    /// polygon's box). The rounded polygon is checked exactly for strict convexity, except
-    /// when a margin kept from the last check proves that this rounding cannot break it
-    /// (docs/store.md, "Translation"). Vertex handles stay valid.
+    /// coordinate rounded to nearest (IEEE addition). The snapshot, if there is one, is
+    /// translated at once in place with the same roundings (one sequential pass: it
+    /// stays valid, no reconversion); the linked polygon's translation waits, in a list
+    /// of at most eight, until the linked polygon is next read or edited, and is then
+    /// applied with the same additions in the same order, so every coordinate is
+    /// bit-for-bit the eager one. The bounding box shifts in O(1) (rounding is monotone,
+    /// so the shifted box still contains, or equals, the translated polygon's box).
+    /// The rounded polygon is checked exactly for strict convexity (O(n), on the
+    /// snapshot when there is one), except when no sum can round (the polygon and the
+    /// vector on a common power-of-two grid) or a margin kept from the last check proves
+    /// that this rounding cannot break it: then the call is O(1) without a snapshot, one
+    /// pass over the snapshot with one (docs/store.md, "Translation"). Vertex handles stay
+    /// valid.
     ///
     /// # Errors
     /// `StalePolygon`, `ForeignPolygon`; [`EditError::NonFinite`] when `dx` or `dy` is not finite or a
