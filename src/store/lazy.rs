@@ -31,7 +31,8 @@
 //! bound by memory traffic, not by the additions). The list is a fixed array, and a
 //! translation that finds it full materializes first: memory per polygon is bounded
 //! (the arena, at most one twin of it while a shared reader needs it, and the fixed
-//! list), whatever the number of translations.
+//! list, allocated at the polygon's first translation so that a polygon never translated
+//! costs its slot one pointer), whatever the number of translations.
 
 use super::planner::Arena;
 use crate::kernel::Point;
@@ -49,8 +50,15 @@ pub(super) const MAX_PENDING: usize = 8;
 pub(super) struct LazyLinked {
     /// The polygon before the pending translations.
     base: LinkedPolygon,
+    /// Allocated at the first translation and kept (a polygon never translated pays
+    /// one pointer: the slots of a scene stay small, and planning reads them).
+    lazy: Option<Box<Pending>>,
+}
+
+#[derive(Debug)]
+struct Pending {
     /// The first `len` are pending, oldest first.
-    pending: [Point; MAX_PENDING],
+    steps: [Point; MAX_PENDING],
     len: u8,
     /// `base` with the pending translations applied, built for a shared reader; taken
     /// in place of `base` at the next `&mut` access. Empty when nothing is pending.
@@ -64,9 +72,13 @@ impl Clone for LazyLinked {
     fn clone(&self) -> Self {
         LazyLinked {
             base: self.base.clone(),
-            pending: self.pending,
-            len: self.len,
-            twin: OnceLock::new(),
+            lazy: self.lazy.as_ref().map(|p| {
+                Box::new(Pending {
+                    steps: p.steps,
+                    len: p.len,
+                    twin: OnceLock::new(),
+                })
+            }),
         }
     }
 }
@@ -76,29 +88,29 @@ impl LazyLinked {
     pub(super) fn new(polygon: LinkedPolygon) -> Self {
         LazyLinked {
             base: polygon,
-            pending: [Point::new(0.0, 0.0); MAX_PENDING],
-            len: 0,
-            twin: OnceLock::new(),
+            lazy: None,
         }
     }
 
-    fn steps(&self) -> &[Point] {
-        &self.pending[..self.len as usize]
+    /// The translations waiting, when there are any.
+    fn waiting(&self) -> Option<&Pending> {
+        self.lazy.as_deref().filter(|p| p.len > 0)
     }
 
     /// Number of translations not yet applied to the arena.
     #[cfg(test)]
     pub(super) fn pending(&self) -> usize {
-        self.len as usize
+        self.waiting().map_or(0, |p| p.len as usize)
     }
 
     /// The translated polygon. O(1) when nothing is pending (every `&mut` path leaves it
     /// so); otherwise the first call builds the translated twin, O(n · pending).
     pub(super) fn get(&self) -> &LinkedPolygon {
-        if self.len == 0 {
-            &self.base
-        } else {
-            self.twin.get_or_init(|| self.base.translated_twin(self.steps()))
+        match self.waiting() {
+            None => &self.base,
+            Some(p) => p
+                .twin
+                .get_or_init(|| self.base.translated_twin(&p.steps[..p.len as usize])),
         }
     }
 
@@ -122,27 +134,37 @@ impl LazyLinked {
     }
 
     fn materialize(&mut self) {
-        if self.len == 0 {
+        let Some(p) = self.lazy.as_deref_mut().filter(|p| p.len > 0) else {
             return;
-        }
-        if let Some(twin) = self.twin.take() {
+        };
+        if let Some(twin) = p.twin.take() {
             self.base = twin;
         } else {
-            self.base
-                .translate_steps_unchecked(&self.pending[..self.len as usize]);
+            self.base.translate_steps_unchecked(&p.steps[..p.len as usize]);
         }
-        self.len = 0;
+        p.len = 0;
     }
 
     /// Records a translation by `(dx, dy)` that the caller has accepted: no translated
     /// coordinate overflows, and the rounded polygon is strictly convex. O(1), or one
     /// pass when the list is full (or a twin is kept: it becomes the arena first).
     pub(super) fn translate(&mut self, dx: f64, dy: f64) {
-        if self.len as usize == MAX_PENDING || self.twin.get().is_some() {
+        let full = self
+            .lazy
+            .as_deref()
+            .is_some_and(|p| p.len as usize == MAX_PENDING || p.twin.get().is_some());
+        if full {
             self.materialize();
         }
-        self.pending[self.len as usize] = Point::new(dx, dy);
-        self.len += 1;
+        let p = self.lazy.get_or_insert_with(|| {
+            Box::new(Pending {
+                steps: [Point::new(0.0, 0.0); MAX_PENDING],
+                len: 0,
+                twin: OnceLock::new(),
+            })
+        });
+        p.steps[p.len as usize] = Point::new(dx, dy);
+        p.len += 1;
     }
 
     /// The arena's size and order, for the cost model (translations change neither).
@@ -150,8 +172,12 @@ impl LazyLinked {
         Arena::of(&self.base)
     }
 
-    /// Heap bytes of the arena, and of the twin while one is kept.
+    /// Heap bytes of the arena, of the list once allocated, and of the twin while one is
+    /// kept.
     pub(super) fn arena_bytes(&self) -> usize {
-        self.base.arena_bytes() + self.twin.get().map_or(0, LinkedPolygon::arena_bytes)
+        let lazy = self.lazy.as_deref().map_or(0, |p| {
+            std::mem::size_of::<Pending>() + p.twin.get().map_or(0, LinkedPolygon::arena_bytes)
+        });
+        self.base.arena_bytes() + lazy
     }
 }
