@@ -126,7 +126,7 @@ struct Entry {
     /// A translation whose rounding moves no coordinate by this much or more keeps the
     /// polygon strictly convex (0: unknown); see `Scene::translate`.
     rounding_margin: f64,
-    /// A power of two of which every coordinate is an integer multiple (0: unknown);
+    /// A power of two of which every coordinate is an integer multiple (`grid_of`);
     /// translations on this grid that cannot round are proved exact in O(1).
     grid: f64,
     /// Scratch of the plan being made: chosen for conversion, and what a snapshot would
@@ -349,10 +349,10 @@ impl<K: Kernel> Scene<K> {
         self.entries.iter().filter(|(_, e)| e.snapshot.is_some()).count()
     }
 
-    /// Heap memory held by the scene's structures, in bytes: the polygons' arenas (and the
+    /// Heap memory held by the scene's structures, in bytes: the polygons' arenas (with
+    /// each translated polygon's fixed list of translations not yet applied, and the
     /// translated copy a shared read built, while it is kept; see
-    /// [`polygon`](Self::polygon)), the snapshots, the slots (each with its fixed list of
-    /// translations not yet applied), the broad phase and the warm starts' pairs (per-query
+    /// [`polygon`](Self::polygon)), the snapshots, the slots, the broad phase and the warm starts' pairs (per-query
     /// scratch memory, bounded by the largest polygon queried, is not counted). It is
     /// O(slots + vertices + candidate pairs of the last frame) whatever the sequence of
     /// calls: no structure grows with the number of edits or queries.
