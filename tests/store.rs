@@ -228,6 +228,10 @@ fn memory_is_bounded_under_calls_that_never_query_the_broad_phase() {
         .insert_points([[0., 0.], [4., 0.], [4., 4.], [0., 4.]])
         .unwrap();
     let triangle = LinkedPolygon::from_points([[1., 1.], [5., 1.], [1., 5.]]).unwrap();
+    // A polygon's first translation allocates its fixed list of waiting translations
+    // once: translate before the baseline, so that what follows must not grow at all.
+    scene.translate(a, 0.5, 0.5).unwrap();
+    scene.translate(a, -0.5, -0.5).unwrap();
     let mut baseline = 0;
     for i in 0..cycles {
         let b = scene.insert(triangle.clone());
@@ -798,4 +802,311 @@ fn warm_starts_never_change_an_answer() {
         totals.hits > 1_000 && totals.misses > 10 && totals.fills > 100,
         "{totals:?}"
     );
+}
+
+/// Translations wait in the scene's linked polygons until something reads them; the
+/// coordinates must still be bit-for-bit those of eager translation on every path.
+/// A scene is driven beside a plain list of linked polygons translated at once
+/// (`LinkedPolygon::translate`) through long random sessions: coherent and rounding
+/// translations, bursts that fill the pending list, near-overflow and collapsing ones
+/// (refused alike), vertex moves, inserts and removals (the old point returned must be
+/// the eager one), queries of every route and strategy (answers against the exact
+/// reference on the eager list, certificates verified), warm starts on half the runs,
+/// `polygon` reads, removals returning the polygon, and clones of the scene. Sessions
+/// are `POLYSECT_LAZY_STEPS` long (1,500 by default).
+#[test]
+fn deferred_translations_equal_eager_ones_on_every_path() {
+    use polysect::intersect::verify_linked;
+    use polysect::store::PolygonId;
+    let steps: usize = std::env::var("POLYSECT_LAZY_STEPS")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(1500);
+    let bits = |p: &LinkedPolygon| -> Vec<(u64, u64)> {
+        p.iter().map(|(_, q)| (q.x.to_bits(), q.y.to_bits())).collect()
+    };
+    /// One polygon on both sides: the scene's handle and the eager copy, with the
+    /// vertex handles of each side in the same order.
+    struct Twin {
+        id: PolygonId,
+        eager: LinkedPolygon,
+        handles: Vec<(VertexId, VertexId)>,
+    }
+    let insert = |scene: &mut Scene, rng: &mut SmallRng| -> Twin {
+        let n = 1usize << rng.random_range(2..=7);
+        let (p, _) = generate::pair(Family::NonUniform, n, Relation::Any, rng);
+        let (dx, dy) = (rng.random_range(-3.0..3.0), rng.random_range(-3.0..3.0));
+        let moved = p.map(|v| Point::new(v.x + dx, v.y + dy)).unwrap_or(p);
+        // Half on a grid of 2^-24, where dyadic translations are exact.
+        let snap = |x: f64| (x * 2f64.powi(24)).round() * 2f64.powi(-24);
+        let moved = match rng.random_bool(0.5) {
+            true => moved.map(|v| Point::new(snap(v.x), snap(v.y))).unwrap_or(moved),
+            false => moved,
+        };
+        let linked = if rng.random_bool(0.5) {
+            LinkedPolygon::from_convex_shuffled(&moved, rng)
+        } else {
+            LinkedPolygon::from_convex(&moved)
+        };
+        let eager = linked.clone();
+        let id = scene.insert(linked);
+        let ours: Vec<VertexId> = scene.polygon(id).unwrap().iter().map(|(v, _)| v).collect();
+        let theirs: Vec<VertexId> = eager.iter().map(|(v, _)| v).collect();
+        Twin {
+            id,
+            eager,
+            handles: ours.into_iter().zip(theirs).collect(),
+        }
+    };
+    let mut counts = [0usize; 9];
+    let strategies = [
+        Strategy::Planner,
+        Strategy::Cached,
+        Strategy::Sampled,
+        Strategy::Convert,
+    ];
+    for (run, &seed) in SEEDS.iter().chain(&[0x5ce4, 0x5ce5]).enumerate() {
+        let mut rng = SmallRng::seed_from_u64(seed ^ 0x1a2e);
+        let mut scene = Scene::new();
+        scene.seed(seed);
+        scene.set_warm_starts(run % 2 == 1);
+        let mut twins: Vec<Twin> = (0..12).map(|_| insert(&mut scene, &mut rng)).collect();
+        // A huge triangle, for translations that overflow (refused as not finite).
+        let huge = LinkedPolygon::from_points([[0.0, 0.0], [1e307, 0.0], [0.0, 1e307]]).unwrap();
+        let id = scene.insert(huge.clone());
+        let ours: Vec<VertexId> = scene.polygon(id).unwrap().iter().map(|(v, _)| v).collect();
+        let theirs: Vec<VertexId> = huge.iter().map(|(v, _)| v).collect();
+        twins.push(Twin {
+            id,
+            eager: huge,
+            handles: ours.into_iter().zip(theirs).collect(),
+        });
+        // Half the velocities dyadic (2^-20): exact on the grid polygons.
+        let mut velocity: Vec<(f64, f64)> = (0..twins.len())
+            .map(|k| {
+                let v = (rng.random_range(-0.05..0.05), rng.random_range(-0.05..0.05));
+                let snap = |x: f64| (x * 2f64.powi(20)).round() * 2f64.powi(-20);
+                if k % 2 == 0 { (snap(v.0), snap(v.1)) } else { v }
+            })
+            .collect();
+        velocity.push((0.05, -0.05));
+        for step in 0..steps {
+            let strategy = strategies[(step / 37 + run) % strategies.len()];
+            scene.set_strategy(strategy);
+            let i = rng.random_range(0..twins.len());
+            let r: f64 = rng.random();
+            if r < 0.45 {
+                // One translation, or a burst of them (longer than the pending list)
+                // for a few polygons, without any read in between.
+                let burst = if rng.random_bool(0.1) { 20 } else { 1 };
+                let who: Vec<usize> = if burst > 1 {
+                    (0..3).map(|_| rng.random_range(0..twins.len())).collect()
+                } else {
+                    vec![i]
+                };
+                for _ in 0..burst {
+                    for &k in &who {
+                        let far = (rng.random_range(-1e6..1e6), rng.random_range(-1e6..1e6));
+                        let vectors = match rng.random_range(0..10) {
+                            // Coherent motion (exact for dyadic steps on the grid
+                            // polygons, rounding for the others).
+                            0..=5 => vec![velocity[k]],
+                            // Far away and back: rounds at every step.
+                            6 => vec![far, (-far.0, -far.1)],
+                            // Collapses the polygon by rounding: refused.
+                            7 => vec![(2f64.powi(rng.random_range(60..1000)), 0.0)],
+                            // Next to overflow (the huge triangle overflows after a
+                            // few; the others collapse), or not finite at all.
+                            8 => vec![match rng.random_range(0..3) {
+                                0 => (4e307 * rng.random_range(-1.0..1.0), 0.0),
+                                1 => (0.0, f64::MAX * rng.random_range(-1.0..1.0)),
+                                _ => (f64::INFINITY, 0.0),
+                            }],
+                            _ => vec![(-velocity[k].0, rng.random_range(-1e-9..1e-9))],
+                        };
+                        for (dx, dy) in vectors {
+                            let t = &mut twins[k];
+                            let got = scene.translate(t.id, dx, dy);
+                            let want = t.eager.translate(dx, dy);
+                            assert_eq!(
+                                got,
+                                want.map_err(|e| SceneError::Edit(t.id, e)),
+                                "run {run} step {step}"
+                            );
+                            counts[if got.is_ok() { 0 } else { 1 }] += 1;
+                            if matches!(got, Err(SceneError::Edit(_, EditError::NonFinite { .. }))) {
+                                counts[8] += 1;
+                            }
+                        }
+                    }
+                }
+            } else if r < 0.65 {
+                // A vertex edit through the handles kept since insertion: the point it
+                // returns is read from the (materialized) linked polygon.
+                let t = &mut twins[i];
+                let j = rng.random_range(0..t.handles.len());
+                let (vs, ve) = t.handles[j];
+                let a = t.eager.point(ve).unwrap();
+                let b = t.eager.point(t.eager.next(ve).unwrap()).unwrap();
+                let (cx, cy) = centroid(&t.eager.to_convex());
+                match rng.random_range(0..3) {
+                    0 => {
+                        let f = 1.0 + rng.random_range(-0.05..0.05);
+                        let p = Point::new(cx + (a.x - cx) * f, cy + (a.y - cy) * f);
+                        let got = scene.move_vertex(t.id, vs, p);
+                        let want = t.eager.move_vertex(ve, p);
+                        // Debug text: a refused point may hold a NaN (the huge triangle).
+                        assert_eq!(
+                            format!("{:?}", got.map(|q| (q.x.to_bits(), q.y.to_bits()))),
+                            format!(
+                                "{:?}",
+                                want.map(|q| (q.x.to_bits(), q.y.to_bits()))
+                                    .map_err(|e| SceneError::Edit(t.id, e))
+                            ),
+                            "run {run} step {step}: move"
+                        );
+                    }
+                    1 => {
+                        let f = 1.0 + rng.random_range(0.0..0.02);
+                        let (mx, my) = ((a.x + b.x) / 2.0, (a.y + b.y) / 2.0);
+                        let p = Point::new(cx + (mx - cx) * f, cy + (my - cy) * f);
+                        let got = scene.insert_vertex(t.id, vs, p);
+                        let want = t.eager.insert_after(ve, p);
+                        assert_eq!(got.is_ok(), want.is_ok(), "run {run} step {step}: insert");
+                        if let (Ok(s), Ok(e)) = (got, want) {
+                            t.handles.insert(j + 1, (s, e));
+                        }
+                    }
+                    _ => {
+                        let got = scene.remove_vertex(t.id, vs);
+                        let want = t.eager.remove(ve);
+                        assert_eq!(
+                            got.clone().map(|q| (q.x.to_bits(), q.y.to_bits())),
+                            want.map(|q| (q.x.to_bits(), q.y.to_bits()))
+                                .map_err(|e| SceneError::Edit(t.id, e)),
+                            "run {run} step {step}: remove"
+                        );
+                        if got.is_ok() {
+                            t.handles.remove(j);
+                        }
+                    }
+                }
+                counts[2] += 1;
+            } else if r < 0.9 {
+                // A query of some route, against the exact reference on the eager list.
+                let truth = |a: usize, b: usize| {
+                    Linear.intersects(&twins[a].eager.to_convex(), &twins[b].eager.to_convex())
+                };
+                let j = rng.random_range(0..twins.len());
+                match rng.random_range(0..5) {
+                    0 => {
+                        let got = scene.intersects(twins[i].id, twins[j].id).unwrap();
+                        assert_eq!(got, truth(i, j), "run {run} step {step}: intersects");
+                    }
+                    1 => {
+                        let c = scene.intersects_certified(twins[i].id, twins[j].id).unwrap();
+                        assert_eq!(c.intersects(), truth(i, j), "run {run} step {step}");
+                        let (p, q) = (
+                            scene.polygon(twins[i].id).unwrap(),
+                            scene.polygon(twins[j].id).unwrap(),
+                        );
+                        assert_eq!(verify_linked(p, q, &c), Ok(()), "run {run} step {step}");
+                    }
+                    2 => {
+                        let pairs: Vec<(PolygonId, PolygonId)> = (0..6)
+                            .map(|_| {
+                                let (a, b) =
+                                    (rng.random_range(0..twins.len()), rng.random_range(0..twins.len()));
+                                (twins[a].id, twins[b].id)
+                            })
+                            .collect();
+                        let got = scene.intersects_batch(&pairs);
+                        for ((a, b), hit) in pairs.iter().zip(got) {
+                            let ka = twins.iter().position(|t| t.id == *a).unwrap();
+                            let kb = twins.iter().position(|t| t.id == *b).unwrap();
+                            assert_eq!(hit.unwrap(), truth(ka, kb), "run {run} step {step}: batch");
+                        }
+                    }
+                    3 => {
+                        let got = scene.intersecting(twins[i].id).unwrap();
+                        let mut want: Vec<PolygonId> = (0..twins.len())
+                            .filter(|&k| k != i && truth(i, k))
+                            .map(|k| twins[k].id)
+                            .collect();
+                        want.sort();
+                        assert_eq!(got, want, "run {run} step {step}: intersecting");
+                    }
+                    _ => {
+                        let got = if rng.random_bool(0.5) {
+                            scene.intersecting_pairs()
+                        } else {
+                            scene
+                                .intersecting_pairs_certified()
+                                .into_iter()
+                                .map(|(a, b, _)| (a, b))
+                                .collect()
+                        };
+                        let mut want = Vec::new();
+                        for a in 0..twins.len() {
+                            for b in 0..twins.len() {
+                                if twins[a].id < twins[b].id && truth(a, b) {
+                                    want.push((twins[a].id, twins[b].id));
+                                }
+                            }
+                        }
+                        want.sort();
+                        assert_eq!(got, want, "run {run} step {step}: pairs");
+                    }
+                }
+                counts[3] += 1;
+            } else if r < 0.95 {
+                // Reading the polygon (through a shared reference), every polygon.
+                for t in &twins {
+                    let p = scene.polygon(t.id).unwrap();
+                    assert_eq!(bits(p), bits(&t.eager), "run {run} step {step}: polygon");
+                }
+                scene.debug_validate().unwrap();
+                counts[4] += 1;
+            } else if r < 0.98 {
+                // Removal returns the translated polygon; a new one takes the slot.
+                let t = twins.swap_remove(i);
+                let removed = scene.remove(t.id).unwrap();
+                assert_eq!(bits(&removed), bits(&t.eager), "run {run} step {step}: remove");
+                twins.push(insert(&mut scene, &mut rng));
+                velocity.swap_remove(i);
+                velocity.push((rng.random_range(-0.05..0.05), rng.random_range(-0.05..0.05)));
+                counts[5] += 1;
+            } else {
+                // A clone is another scene with the same coordinates.
+                let copy = scene.clone();
+                for (id, cid) in scene.ids().zip(copy.ids()) {
+                    let t = twins.iter().find(|t| t.id == id).unwrap();
+                    assert_eq!(
+                        bits(copy.polygon(cid).unwrap()),
+                        bits(&t.eager),
+                        "run {run} step {step}: clone"
+                    );
+                }
+                counts[6] += 1;
+            }
+        }
+        for t in &twins {
+            assert_eq!(
+                bits(scene.polygon(t.id).unwrap()),
+                bits(&t.eager),
+                "run {run}: end"
+            );
+        }
+        scene.debug_validate().unwrap();
+        counts[7] += scene.stats().array_tests as usize;
+    }
+    eprintln!(
+        "translations accepted {}, refused {} ({} not finite); vertex edits {}; queries {}; reads {}; removals {}; clones {}; array tests {}",
+        counts[0], counts[1], counts[8], counts[2], counts[3], counts[4], counts[5], counts[6], counts[7]
+    );
+    assert!(
+        counts[8] > 5 && counts[1] > counts[8] && counts[0] > 2 * counts[1],
+        "{counts:?}"
+    );
+    assert!(counts[7] > 100, "{counts:?}");
 }

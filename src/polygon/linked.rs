@@ -457,42 +457,48 @@ impl LinkedPolygon {
             self.translate_unchecked(dx, dy);
             return Ok(());
         }
-        self.translate_finite(dx, dy, None).map(|_| ())
+        self.translate_finite(dx, dy).map(|_| ())
     }
 
     /// [`translate`](Self::translate) when the caller knows that no translated coordinate
-    /// overflows (`dx`, `dy` finite, and, say, the translated bounding box finite).
-    /// With `boundary`, the polygon's vertices counter-clockwise from position 0 (its
-    /// array snapshot), the rounded boundary is checked on that contiguous array instead
-    /// of along the links: one sequential read instead of a walk. O(n).
+    /// overflows (`dx`, `dy` finite, and, say, the translated bounding box finite): the
+    /// rounded boundary checked along the links ([`check_translation`](Self::check_translation)),
+    /// then every vertex translated. O(n).
     ///
     /// Returns the translated polygon's rounding margin ([`turn_margin`], the least over its
     /// turns): any later translation whose
     /// rounding moves no coordinate by `margin` or more keeps it strictly convex.
-    pub(crate) fn translate_finite(
-        &mut self,
-        dx: f64,
-        dy: f64,
-        boundary: Option<&[Point]>,
-    ) -> Result<f64, EditError> {
-        let moved = |p: Point| Point::new(p.x + dx, p.y + dy);
-        let margin = match boundary {
-            Some(ring) => {
-                debug_assert!(ring.len() == self.len() && ring[0] == self.point_at(0));
-                check_rounded_ring(ring[ring.len() - 1], ring.iter().copied(), moved)?
-            }
-            None => {
-                let mut pos = 0;
-                let walk = (0..self.len()).map(|_| {
-                    let here = self.point_at(pos);
-                    pos = self.next_at(pos);
-                    here
-                });
-                check_rounded_ring(self.point_at(self.prev_at(0)), walk, moved)?
-            }
-        };
+    pub(crate) fn translate_finite(&mut self, dx: f64, dy: f64) -> Result<f64, EditError> {
+        let margin = self.check_translation(dx, dy)?;
         self.translate_unchecked(dx, dy);
         Ok(margin)
+    }
+
+    /// Whether translating by `(dx, dy)`, each coordinate rounded, keeps the polygon
+    /// strictly convex, counter-clockwise and winding once, decided exactly on the
+    /// rounded coordinates by a walk along the links; changes nothing. On success, the
+    /// translated polygon's rounding margin (as [`translate_finite`](Self::translate_finite)).
+    /// No translated coordinate may overflow (the caller's guarantee). O(n).
+    pub(crate) fn check_translation(&self, dx: f64, dy: f64) -> Result<f64, EditError> {
+        let mut pos = 0;
+        let walk = (0..self.len()).map(|_| {
+            let here = self.point_at(pos);
+            pos = self.next_at(pos);
+            here
+        });
+        check_rounded_ring(self.point_at(self.prev_at(0)), walk, |p| {
+            Point::new(p.x + dx, p.y + dy)
+        })
+    }
+
+    /// [`check_translation`](Self::check_translation) on `ring`, a convex polygon's
+    /// vertices counter-clockwise (an array snapshot of a linked polygon: the same points,
+    /// read sequentially instead of along the links). O(n).
+    pub(crate) fn check_translated_ring(ring: &[Point], dx: f64, dy: f64) -> Result<f64, EditError> {
+        let Some(&last) = ring.last() else {
+            return Ok(0.0);
+        };
+        check_rounded_ring(last, ring.iter().copied(), |p| Point::new(p.x + dx, p.y + dy))
     }
 
     /// Translates every vertex without checking anything: for callers that have proved
@@ -502,6 +508,39 @@ impl LinkedPolygon {
         for node in &mut self.nodes {
             node.point = Point::new(node.point.x + dx, node.point.y + dy);
         }
+    }
+
+    /// Applies the translations `steps` in order to every vertex, unchecked: each
+    /// coordinate gets the same IEEE additions, in the same order, as one
+    /// [`translate_unchecked`](Self::translate_unchecked) per step, so the result is
+    /// bit-for-bit theirs, in one sequential pass over the arena. For callers that have
+    /// checked every step when it was asked for. O(n · steps).
+    pub(crate) fn translate_steps_unchecked(&mut self, steps: &[Point]) {
+        for node in &mut self.nodes {
+            let mut p = node.point;
+            for d in steps {
+                p = Point::new(p.x + d.x, p.y + d.y);
+            }
+            node.point = p;
+        }
+    }
+
+    /// The polygon as [`translate_steps_unchecked`](Self::translate_steps_unchecked)
+    /// would leave it, built beside it: the same polygon at the same stage of its
+    /// history, so it keeps the owner's identity and every vertex handle of this polygon
+    /// is valid on it (unlike a clone, which is another polygon). For a holder that must
+    /// show translated coordinates through a shared reference and later replaces this
+    /// polygon with the copy; never two live owners of edits. O(n · steps).
+    pub(crate) fn translated_twin(&self, steps: &[Point]) -> LinkedPolygon {
+        let mut twin = LinkedPolygon {
+            owner: Identity(self.owner.get()),
+            nodes: self.nodes.clone(),
+            slots: self.slots.clone(),
+            next_generation: self.next_generation,
+            relinks: self.relinks,
+        };
+        twin.translate_steps_unchecked(steps);
+        twin
     }
 
     /// Whether `v` may sit between the vertices at positions a and b = next(a) (or

@@ -7,7 +7,9 @@
 //! built only when the planner decides conversion pays, kept while the polygon is
 //! unchanged, and dropped at its first edit (a per-polygon version counter), so memory
 //! is one linked polygon per polygon plus a snapshot only for polygons that are queried
-//! more than they are edited.
+//! more than they are edited. A translation shifts the snapshot at once and leaves the
+//! linked polygon's for its next reader (`lazy.rs`: at most eight wait, applied with the
+//! same roundings, so the coordinates are eager translation's bit for bit).
 //!
 //! # The planner
 //! `intersects(a, b)` is a batch of one; `intersects_batch`, `intersecting` and
@@ -71,6 +73,7 @@
 mod broad;
 #[cfg(feature = "geo-types")]
 mod interop;
+mod lazy;
 mod planner;
 mod route;
 mod scene;

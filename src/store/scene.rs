@@ -1,7 +1,8 @@
 //! [`Scene`]: the store of editable polygons and its query planner.
 
 use super::broad::{BoundingBox, BroadPhase};
-use super::planner::{Account, Arena, CostModel, PlannerStats, Strategy};
+use super::lazy::LazyLinked;
+use super::planner::{Account, CostModel, PlannerStats, Strategy};
 use super::route::{
     QueryWorkspace, Route, array_certified, array_test, linear_certified, linear_test, sampled_certified,
     sampled_test,
@@ -109,7 +110,8 @@ impl From<PolygonError> for SceneError {
 
 #[derive(Clone, Debug)]
 struct Entry {
-    polygon: LinkedPolygon,
+    /// The linked polygon; translations may wait in it until it is read (`lazy.rs`).
+    polygon: LazyLinked,
     generation: u64,
     bbox: BoundingBox,
     /// False after an edit that may have shrunk the true box; the stored box still
@@ -124,6 +126,9 @@ struct Entry {
     /// A translation whose rounding moves no coordinate by this much or more keeps the
     /// polygon strictly convex (0: unknown); see `Scene::translate`.
     rounding_margin: f64,
+    /// A power of two of which every coordinate is an integer multiple (`grid_of`);
+    /// translations on this grid that cannot round are proved exact in O(1).
+    grid: f64,
     /// Scratch of the plan being made: chosen for conversion, and what a snapshot would
     /// save the planned queries (and how many) that involve this polygon.
     plan: PlanMark,
@@ -212,6 +217,9 @@ pub struct Scene<K: Kernel = Exact> {
     /// Warm starts across frames: on/off, and the last frame's pairs.
     warm_starts: bool,
     warm: WarmCache,
+    /// Translations proved exact by the grid (tests only).
+    #[cfg(test)]
+    exact_skips: u64,
 }
 
 impl Default for Scene<Exact> {
@@ -243,6 +251,8 @@ impl<K: Kernel> Scene<K> {
             rng: crate::intersect::fresh_rng(),
             warm_starts: false,
             warm: WarmCache::default(),
+            #[cfg(test)]
+            exact_skips: 0,
         }
     }
 
@@ -339,8 +349,10 @@ impl<K: Kernel> Scene<K> {
         self.entries.iter().filter(|(_, e)| e.snapshot.is_some()).count()
     }
 
-    /// Heap memory held by the scene's structures, in bytes: the polygons' arenas, the
-    /// snapshots, the slots, the broad phase and the warm starts' pairs (per-query
+    /// Heap memory held by the scene's structures, in bytes: the polygons' arenas (with
+    /// each translated polygon's fixed list of translations not yet applied, and the
+    /// translated copy a shared read built, while it is kept; see
+    /// [`polygon`](Self::polygon)), the snapshots, the slots, the broad phase and the warm starts' pairs (per-query
     /// scratch memory, bounded by the largest polygon queried, is not counted). It is
     /// O(slots + vertices + candidate pairs of the last frame) whatever the sequence of
     /// calls: no structure grows with the number of edits or queries.
@@ -368,10 +380,11 @@ impl<K: Kernel> Scene<K> {
     /// Never: a [`LinkedPolygon`] always has vertices.
     pub fn insert(&mut self, polygon: LinkedPolygon) -> PolygonId {
         let bbox = BoundingBox::of(polygon.iter().map(|(_, p)| p)).expect("a polygon has vertices");
+        let grid = polygon.iter().fold(f64::INFINITY, |g, (_, p)| g.min(grid_of(p)));
         let generation = self.next_generation;
         self.next_generation += 1;
         let key = self.entries.insert(Entry {
-            polygon,
+            polygon: LazyLinked::new(polygon),
             generation,
             bbox,
             bbox_tight: true,
@@ -379,6 +392,7 @@ impl<K: Kernel> Scene<K> {
             snapshot: None,
             account: Account::default(),
             rounding_margin: 0.0,
+            grid,
             plan: PlanMark::default(),
         });
         self.broad.mark(key);
@@ -408,7 +422,7 @@ impl<K: Kernel> Scene<K> {
     pub fn remove(&mut self, id: PolygonId) -> Result<LinkedPolygon, SceneError> {
         let key = self.key(id)?;
         self.broad.mark(key);
-        Ok(self.entries.remove(key).polygon)
+        Ok(self.entries.remove(key).polygon.into_inner())
     }
 
     #[inline]
@@ -430,12 +444,15 @@ impl<K: Kernel> Scene<K> {
         }
     }
 
-    /// The polygon (read-only; edit through the scene so caches stay correct).
+    /// The polygon (read-only; edit through the scene so caches stay correct), with every
+    /// translation applied. O(1), except after translations not yet applied: then the
+    /// first read builds the translated polygon beside the old arena, O(n), kept (and
+    /// taken in place of the old arena) until the scene next changes the polygon.
     ///
     /// # Errors
     /// `StalePolygon`, `ForeignPolygon` (as every method taking a `PolygonId`).
     pub fn polygon(&self, id: PolygonId) -> Result<&LinkedPolygon, SceneError> {
-        self.key(id).map(|k| &self.entries[k].polygon)
+        self.key(id).map(|k| self.entries[k].polygon.get())
     }
 
     /// The polygon's bounding box: it always contains the polygon, and is the tightest
@@ -479,9 +496,11 @@ impl<K: Kernel> Scene<K> {
         let e = &mut self.entries[key];
         let v = e
             .polygon
+            .get_mut()
             .insert_after(after, p)
             .map_err(|err| SceneError::Edit(id, err))?;
         e.edited(&mut self.stats);
+        e.grid = e.grid.min(grid_of(p));
         self.grow_box(key, p);
         Ok(v)
     }
@@ -494,7 +513,11 @@ impl<K: Kernel> Scene<K> {
     pub fn remove_vertex(&mut self, id: PolygonId, v: VertexId) -> Result<Point, SceneError> {
         let key = self.key(id)?;
         let e = &mut self.entries[key];
-        let old = e.polygon.remove(v).map_err(|err| SceneError::Edit(id, err))?;
+        let old = e
+            .polygon
+            .get_mut()
+            .remove(v)
+            .map_err(|err| SceneError::Edit(id, err))?;
         e.edited(&mut self.stats);
         if e.bbox.touches_boundary(old) {
             e.bbox_tight = false;
@@ -512,9 +535,11 @@ impl<K: Kernel> Scene<K> {
         let e = &mut self.entries[key];
         let old = e
             .polygon
+            .get_mut()
             .move_vertex(v, p)
             .map_err(|err| SceneError::Edit(id, err))?;
         e.edited(&mut self.stats);
+        e.grid = e.grid.min(grid_of(p));
         if e.bbox.touches_boundary(old) {
             e.bbox_tight = false;
         }
@@ -523,13 +548,19 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Translates the polygon by `(dx, dy)`: every vertex becomes `(x + dx, y + dy)`, each
-    /// coordinate rounded to nearest (IEEE addition). O(n): one pass over the vertices,
-    /// one over the snapshot if there is one (translated in place with the same
-    /// roundings: it stays valid, no reconversion), O(1) for the bounding box (shifted;
-    /// rounding is monotone, so the shifted box still contains, or equals, the translated
-    /// polygon's box). The rounded polygon is checked exactly for strict convexity, except
-    /// when a margin kept from the last check proves that this rounding cannot break it
-    /// (docs/store.md, "Translation"). Vertex handles stay valid.
+    /// coordinate rounded to nearest (IEEE addition). The snapshot, if there is one, is
+    /// translated at once in place with the same roundings (one sequential pass: it
+    /// stays valid, no reconversion); the linked polygon's translation waits, in a list
+    /// of at most eight, until the linked polygon is next read or edited, and is then
+    /// applied with the same additions in the same order, so every coordinate is
+    /// bit-for-bit the eager one. The bounding box shifts in O(1) (rounding is monotone,
+    /// so the shifted box still contains, or equals, the translated polygon's box).
+    /// The rounded polygon is checked exactly for strict convexity (O(n), on the
+    /// snapshot when there is one), except when no sum can round (the polygon and the
+    /// vector on a common power-of-two grid) or a margin kept from the last check proves
+    /// that this rounding cannot break it: then the call is O(1) without a snapshot, one
+    /// pass over the snapshot with one (docs/store.md, "Translation"). Vertex handles stay
+    /// valid.
     ///
     /// # Errors
     /// `StalePolygon`, `ForeignPolygon`; [`EditError::NonFinite`] when `dx` or `dy` is not finite or a
@@ -552,6 +583,7 @@ impl<K: Kernel> Scene<K> {
     pub fn translate(&mut self, id: PolygonId, dx: f64, dy: f64) -> Result<(), SceneError> {
         let key = self.key(id)?;
         let e = &mut self.entries[key];
+        let mut exact = false;
         let shifted = BoundingBox {
             min: Point::new(e.bbox.min.x + dx, e.bbox.min.y + dy),
             max: Point::new(e.bbox.max.x + dx, e.bbox.max.y + dy),
@@ -559,33 +591,49 @@ impl<K: Kernel> Scene<K> {
         if shifted.min.is_finite() && shifted.max.is_finite() {
             // The box contains every vertex and rounding is monotone: no translated
             // coordinate overflows, and each moves from the exact translate by at most
-            // half an ulp of the largest, `delta`. Below the margin left by the last
-            // check, the result is strictly convex without looking at a vertex;
-            // otherwise check the rounded boundary (on the snapshot when there is one:
-            // a sequential read), which also gives the new margin.
+            // half an ulp of the largest, `delta`. When no sum can round (the grid
+            // below), or below the margin left by the last check, the result is
+            // strictly convex without looking at a vertex; otherwise check the rounded
+            // boundary (on the snapshot when there is one: a sequential read), which
+            // also gives the new margin.
             let largest = [shifted.min.x, shifted.min.y, shifted.max.x, shifted.max.y]
                 .into_iter()
                 .fold(0.0f64, |m, v| m.max(v.abs()));
             let delta = largest * (f64::EPSILON * 0.5) * (1.0 + f64::EPSILON) + f64::from_bits(1);
-            if largest <= 2f64.powi(52) && delta < e.rounding_margin {
-                e.polygon.translate_unchecked(dx, dy);
+            // On the grid: every coordinate and the vector are integer multiples of a
+            // power of two `h`, and every sum is at most 2^53·h in magnitude, so every
+            // sum is exact. An exact translation preserves every orientation and every
+            // turn margin (the same differences): nothing to check, nothing to shrink.
+            let h = e.grid.min(grid_of(Point::new(dx, dy)));
+            let bound = [e.bbox.min.x, e.bbox.min.y, e.bbox.max.x, e.bbox.max.y, dx, dy]
+                .into_iter()
+                .fold(0.0f64, |m, v| m.max(v.abs()));
+            exact = bound <= h * 2f64.powi(52);
+            if exact {
+                // The margin stands as it is.
+            } else if largest <= 2f64.powi(52) && delta < e.rounding_margin {
                 e.rounding_margin =
                     (e.rounding_margin - delta) / (1.0 + 2.0 * delta) * (1.0 - 4.0 * f64::EPSILON);
             } else {
-                let boundary = e.snapshot.as_ref().map(|s| s.vertices());
-                e.rounding_margin = e
-                    .polygon
-                    .translate_finite(dx, dy, boundary)
-                    .map_err(|err| SceneError::Edit(id, err))?;
+                let margin = match &e.snapshot {
+                    Some(s) => LinkedPolygon::check_translated_ring(s.vertices(), dx, dy),
+                    None => e.polygon.materialized().check_translation(dx, dy),
+                };
+                e.rounding_margin = margin.map_err(|err| SceneError::Edit(id, err))?;
             }
+            // Accepted: the linked polygon applies it when it is next read.
+            e.polygon.translate(dx, dy);
             e.bbox = shifted;
+            e.grid = h;
         } else {
-            e.polygon
+            let polygon = e.polygon.get_mut();
+            polygon
                 .translate(dx, dy)
                 .map_err(|err| SceneError::Edit(id, err))?;
             e.rounding_margin = 0.0;
+            e.grid = e.grid.min(grid_of(Point::new(dx, dy)));
             // A loose box reaching past the polygon overflowed: take the true box.
-            e.bbox = BoundingBox::of(e.polygon.iter().map(|(_, p)| p)).expect("a polygon has vertices");
+            e.bbox = BoundingBox::of(polygon.iter().map(|(_, p)| p)).expect("a polygon has vertices");
             e.bbox_tight = true;
         }
         e.version += 1;
@@ -593,6 +641,12 @@ impl<K: Kernel> Scene<K> {
             s.translate_unchecked(dx, dy);
         }
         self.broad.mark(key);
+        #[cfg(test)]
+        {
+            self.exact_skips += u64::from(exact);
+        }
+        #[cfg(not(test))]
+        let _ = exact;
         Ok(())
     }
 
@@ -607,8 +661,7 @@ impl<K: Kernel> Scene<K> {
 
     /// Builds and keeps the snapshot; the walk also makes the box tight again.
     fn convert(&mut self, key: usize) {
-        let e = &mut self.entries[key];
-        let snapshot = e.polygon.to_convex();
+        let snapshot = self.entries[key].polygon.materialized().to_convex();
         self.install_snapshot(key, snapshot);
     }
 
@@ -687,7 +740,7 @@ impl<K: Kernel> Scene<K> {
         let (mut convert_ns, mut answer_ns) = (0.0, 0.0);
         for k in &chosen {
             self.entries[*k].plan.convert = true;
-            convert_ns += self.costs.convert_cost(Arena::of(&self.entries[*k].polygon));
+            convert_ns += self.costs.convert_cost(self.entries[*k].polygon.arena());
         }
         for route in routes.iter_mut().flatten() {
             if let Route::Sampled(a, b) = *route {
@@ -713,8 +766,14 @@ impl<K: Kernel> Scene<K> {
     /// when the planner must. A kept certificate is checked (O(1) plus the climb); a pair
     /// separated without one is walked linearly, which answers it and finds one.
     fn warm_route(&mut self, a: usize, b: usize, w: &mut Option<Warm>) -> Option<Route> {
-        let (p, q) = (&self.entries[a].polygon, &self.entries[b].polygon);
-        let found = match w.take()? {
+        let state = w.take()?;
+        if matches!(state, Warm::Intersecting) {
+            return None;
+        }
+        self.entries[a].polygon.materialized();
+        self.entries[b].polygon.materialized();
+        let (p, q) = (self.entries[a].polygon.get(), self.entries[b].polygon.get());
+        let found = match state {
             Warm::Intersecting => return None,
             Warm::Certified { of, from, deep } => {
                 let kept = warm::check(self.kernel, p, q, of, from, deep);
@@ -776,7 +835,7 @@ impl<K: Kernel> Scene<K> {
     fn choose(&self, touched: &[usize], chosen: &mut Vec<usize>) {
         for &k in touched {
             let e = &self.entries[k];
-            let cost = self.costs.convert_cost(Arena::of(&e.polygon));
+            let cost = self.costs.convert_cost(e.polygon.arena());
             if !e.plan.convert && e.account.should_convert(cost, e.plan.known_ns, e.plan.known) {
                 chosen.push(k);
             }
@@ -785,19 +844,14 @@ impl<K: Kernel> Scene<K> {
 
     /// What snapshots of both polygons would save one query between them.
     fn saving(&self, a: usize, b: usize) -> f64 {
-        self.costs.saving(
-            Arena::of(&self.entries[a].polygon),
-            Arena::of(&self.entries[b].polygon),
-        )
+        self.costs
+            .saving(self.entries[a].polygon.arena(), self.entries[b].polygon.arena())
     }
 
     /// The route of a live pair once conversions are chosen, and its estimated cost;
     /// unconverted polygons pay their rent.
     fn finish_route(&mut self, a: usize, b: usize) -> (Route, f64) {
-        let (pa, pb) = (
-            Arena::of(&self.entries[a].polygon),
-            Arena::of(&self.entries[b].polygon),
-        );
+        let (pa, pb) = (self.entries[a].polygon.arena(), self.entries[b].polygon.arena());
         let (na, nb) = (pa.vertices, pb.vertices);
         let (ha, hb) = (
             self.entries[a].will_have_snapshot(),
@@ -839,15 +893,15 @@ impl<K: Kernel> Scene<K> {
             Route::Known(v) => v,
             Route::Warm { .. } => false,
             Route::Arrays(a, b, linear) => array_test(self.kernel, snapshot(a), snapshot(b), linear),
-            Route::Linear(a, b) => linear_test(self.kernel, &e(a).polygon, &e(b).polygon),
+            Route::Linear(a, b) => linear_test(self.kernel, e(a).polygon.get(), e(b).polygon.get()),
             Route::Sampled(a, b) => {
                 let mut rng = SmallRng::seed_from_u64(seed);
-                sampled_test(self.kernel, &e(a).polygon, &e(b).polygon, ws, &mut rng)
+                sampled_test(self.kernel, e(a).polygon.get(), e(b).polygon.get(), ws, &mut rng)
             }
             Route::Throwaway(a, b, linear) => array_test(
                 self.kernel,
-                &e(a).polygon.to_convex(),
-                &e(b).polygon.to_convex(),
+                &e(a).polygon.get().to_convex(),
+                &e(b).polygon.get().to_convex(),
                 linear,
             ),
         }
@@ -870,27 +924,27 @@ impl<K: Kernel> Scene<K> {
         let snapshot = |k: usize| e(k).snapshot.as_ref().expect("planned snapshot");
         match route {
             Route::Known(true) => {
-                let point = e(a).polygon.point_at(0);
+                let point = e(a).polygon.get().point_at(0);
                 Certificate::VertexInside { of: Which::P, point }
             }
             Route::Known(false) => match (&e(a).snapshot, &e(b).snapshot) {
                 (Some(p), Some(q)) => array_certified(Exact, p, q, false),
                 _ => {
                     let mut rng = SmallRng::seed_from_u64(seed);
-                    sampled_certified(Exact, &e(a).polygon, &e(b).polygon, ws, &mut rng)
+                    sampled_certified(Exact, e(a).polygon.get(), e(b).polygon.get(), ws, &mut rng)
                 }
             },
             Route::Warm { of, from, to } => Certificate::Separated { of, from, to },
             Route::Arrays(a, b, linear) => array_certified(self.kernel, snapshot(a), snapshot(b), linear),
-            Route::Linear(a, b) => linear_certified(self.kernel, &e(a).polygon, &e(b).polygon),
+            Route::Linear(a, b) => linear_certified(self.kernel, e(a).polygon.get(), e(b).polygon.get()),
             Route::Sampled(a, b) => {
                 let mut rng = SmallRng::seed_from_u64(seed);
-                sampled_certified(self.kernel, &e(a).polygon, &e(b).polygon, ws, &mut rng)
+                sampled_certified(self.kernel, e(a).polygon.get(), e(b).polygon.get(), ws, &mut rng)
             }
             Route::Throwaway(a, b, linear) => array_certified(
                 self.kernel,
-                &e(a).polygon.to_convex(),
-                &e(b).polygon.to_convex(),
+                &e(a).polygon.get().to_convex(),
+                &e(b).polygon.get().to_convex(),
                 linear,
             ),
         }
@@ -1044,7 +1098,10 @@ impl<K: Kernel> Scene<K> {
     fn convert_all(&mut self, mut keys: Vec<usize>, parallel: bool) {
         keys.sort_unstable();
         keys.dedup();
-        let convert = |&k: &usize| (k, self.entries[k].polygon.to_convex());
+        for &k in &keys {
+            self.entries[k].polygon.materialized();
+        }
+        let convert = |&k: &usize| (k, self.entries[k].polygon.get().to_convex());
         let snapshots: Vec<(usize, ConvexPolygon)> = match () {
             #[cfg(feature = "parallel")]
             () if parallel => keys.par_iter().with_min_len(16).map(convert).collect(),
@@ -1186,10 +1243,11 @@ impl<K: Kernel> Scene<K> {
     /// Never: a polygon always has vertices for its box.
     pub fn debug_validate(&self) -> Result<(), String> {
         for (k, e) in &self.entries {
-            e.polygon
+            let polygon = e.polygon.get();
+            polygon
                 .debug_validate()
                 .map_err(|m| format!("polygon {k}: {m}"))?;
-            let exact = BoundingBox::of(e.polygon.iter().map(|(_, p)| p)).expect("vertices");
+            let exact = BoundingBox::of(polygon.iter().map(|(_, p)| p)).expect("vertices");
             let b = e.bbox;
             let contains = b.min.x <= exact.min.x
                 && b.min.y <= exact.min.y
@@ -1202,7 +1260,7 @@ impl<K: Kernel> Scene<K> {
                 ));
             }
             if let Some(s) = &e.snapshot {
-                let mut now = e.polygon.to_convex().into_vertices();
+                let mut now = polygon.to_convex().into_vertices();
                 let start = now
                     .iter()
                     .position(|&p| p == s.vertices()[0])
@@ -1217,6 +1275,35 @@ impl<K: Kernel> Scene<K> {
     }
 }
 
+/// The largest power of two of which both coordinates of `p` are integer multiples
+/// (+∞ for the origin; `p` finite). After a translation by a vector on grid `h` of a
+/// polygon on grid `h`, every coordinate is still on grid `h`, rounded or not: a sum of
+/// magnitude at most 2^53·h is exact, and every float of larger magnitude is a multiple
+/// of 2h. So the grid of a polygon is the least of its vertices' and of the vectors
+/// it was translated by.
+fn grid_of(p: Point) -> f64 {
+    let one = |x: f64| {
+        if x == 0.0 {
+            return f64::INFINITY;
+        }
+        let bits = x.to_bits() & !(1u64 << 63);
+        let (exponent, fraction) = ((bits >> 52) as i32, bits & ((1u64 << 52) - 1));
+        // x = m · 2^e with m an integer.
+        let (m, e) = if exponent == 0 {
+            (fraction, -1074)
+        } else {
+            (fraction | (1u64 << 52), exponent - 1075)
+        };
+        let k = e + m.trailing_zeros() as i32;
+        if k >= -1022 {
+            f64::from_bits(((k + 1023) as u64) << 52)
+        } else {
+            f64::from_bits(1u64 << (k + 1074))
+        }
+    };
+    one(p.x).min(one(p.y))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1228,6 +1315,40 @@ mod tests {
     /// check every time, on polygons whose vertices are a few ulps apart (where rounding
     /// does break convexity) and on ordinary ones: the same acceptances, the same
     /// refusals, the same coordinates, and skips actually taken.
+    fn snapped(points: &[Point], bits: i32) -> Vec<Point> {
+        let g = 2f64.powi(-bits);
+        let snap = |x: f64| (x / g).round() * g;
+        let pts: Vec<Point> = points.iter().map(|p| Point::new(snap(p.x), snap(p.y))).collect();
+        crate::polygon::convex_hull(&pts).unwrap().into_vertices()
+    }
+
+    /// `grid_of` is the largest power of two dividing both coordinates.
+    #[test]
+    fn grid_of_is_the_largest_dividing_power_of_two() {
+        let mut rng = SmallRng::seed_from_u64(0x9e1d);
+        assert_eq!(grid_of(Point::new(0.0, 0.0)), f64::INFINITY);
+        assert_eq!(grid_of(Point::new(3.0, 0.0)), 1.0);
+        assert_eq!(grid_of(Point::new(0.75, -6.0)), 0.25);
+        assert_eq!(grid_of(Point::new(f64::from_bits(1), 1.0)), f64::from_bits(1));
+        assert_eq!(grid_of(Point::new(f64::MAX, 0.0)), 2f64.powi(971));
+        assert_eq!(grid_of(Point::new(f64::MIN_POSITIVE, 0.0)), f64::MIN_POSITIVE);
+        for _ in 0..10_000 {
+            let x = f64::from_bits(rng.random::<u64>() >> 1) * if rng.random_bool(0.5) { 1.0 } else { -1.0 };
+            if !x.is_finite() || x == 0.0 {
+                continue;
+            }
+            let g = grid_of(Point::new(x, 0.0));
+            assert!(
+                g.is_finite() && g > 0.0 && g.to_bits() & ((1u64 << 52) - 1) == 0 || g < f64::MIN_POSITIVE
+            );
+            // x / g is an odd integer (exact: dividing by a power of two, no underflow
+            // below g itself).
+            let q = x / g;
+            assert_eq!(q, q.trunc(), "{x:e}");
+            assert_eq!(q.abs() % 2.0, 1.0, "{x:e}");
+        }
+    }
+
     #[test]
     fn skipped_translation_checks_agree_with_full_checks() {
         let mut rng = SmallRng::seed_from_u64(0x7a11);
@@ -1250,9 +1371,13 @@ mod tests {
             .into_vertices(),
             regular_polygon(16, 1.0).into_vertices(),
             regular_polygon(256, 5.0).into_vertices(),
+            // On a grid of 2^-20 (dyadic translations are then often exact).
+            snapped(regular_polygon(64, 3.0).vertices(), 20),
+            snapped(regular_polygon(1024, 0.5).vertices(), 30),
         ];
         let mut skipped = 0;
         let mut refused = 0;
+        let mut exact_skips = 0;
         for (s, shape) in shapes.iter().enumerate() {
             let mut scene = Scene::new();
             let id = scene.insert_points(shape.iter().copied()).unwrap();
@@ -1266,7 +1391,19 @@ mod tests {
             }
             for step in 0..3000 {
                 let scale = [1e-12, 1e-6, 1.0, 1e3, 1e7][rng.random_range(0..5)];
-                let (dx, dy) = (rng.random_range(-scale..scale), rng.random_range(-scale..scale));
+                // The grid shapes keep to dyadic vectors (one other would lose the grid).
+                let (dx, dy) = if s < 4 && rng.random_bool(0.5) {
+                    (rng.random_range(-scale..scale), rng.random_range(-scale..scale))
+                } else {
+                    // Dyadic: k · 2^-j, exact or rounding depending on j and the size.
+                    let j = match s {
+                        4 => rng.random_range(10..=20),
+                        5 => rng.random_range(20..=30),
+                        _ => rng.random_range(-10..60),
+                    };
+                    let mut d = || rng.random_range(-(1i64 << 20)..(1i64 << 20)) as f64 * 2f64.powi(-j);
+                    (d(), d())
+                };
                 let key = scene.key(id).unwrap();
                 let margin_before = scene.entries[key].rounding_margin;
                 let got = scene.translate(id, dx, dy);
@@ -1289,8 +1426,74 @@ mod tests {
                 }
             }
             scene.debug_validate().unwrap();
+            exact_skips += scene.exact_skips;
         }
         assert!(skipped > 1000, "{skipped} checks skipped");
+        assert!(
+            exact_skips > 500,
+            "{exact_skips} translations proved exact by the grid"
+        );
         assert!(refused > 10, "{refused} translations refused");
+    }
+
+    /// Translations of a polygon wait (up to the list's length) while only its snapshot
+    /// is read, and every reader of the linked polygon sees them applied: shared reads
+    /// through a twin, edits and conversions in place; the coordinates are eager
+    /// translation's, bit for bit.
+    #[test]
+    fn translations_wait_until_the_linked_polygon_is_read() {
+        use super::super::lazy::MAX_PENDING;
+        let mut scene = Scene::new();
+        scene.set_strategy(Strategy::Cached);
+        let a = scene.insert(LinkedPolygon::from_convex(&regular_polygon(64, 1.0)));
+        let b = scene.insert(LinkedPolygon::from_convex(&regular_polygon(32, 0.5)));
+        let mut eager = scene.polygon(a).unwrap().clone();
+        assert!(scene.intersects(a, b).unwrap());
+        assert!(scene.has_snapshot(a).unwrap());
+        let key = scene.key(a).unwrap();
+        let pending = |s: &Scene| s.entries[key].polygon.pending();
+        let coords = |p: &LinkedPolygon| -> Vec<(u64, u64)> {
+            p.iter().map(|(_, q)| (q.x.to_bits(), q.y.to_bits())).collect()
+        };
+        let mut max_seen = 0;
+        for step in 0..3 * MAX_PENDING + 1 {
+            let (dx, dy) = (0.01 + step as f64 * 1e-4, -0.007);
+            scene.translate(a, dx, dy).unwrap();
+            eager.translate(dx, dy).unwrap();
+            max_seen = max_seen.max(pending(&scene));
+            // Only the snapshot is read by the array test.
+            scene.intersects(a, b).unwrap();
+            assert_eq!(scene.stats().array_tests as usize, step + 2);
+        }
+        assert_eq!(
+            max_seen, MAX_PENDING,
+            "translations wait, and no more than the list holds"
+        );
+        assert!(pending(&scene) > 0);
+        // A shared read: the twin, with handles valid on the polygon.
+        let first = scene.polygon(a).unwrap().first();
+        assert_eq!(coords(scene.polygon(a).unwrap()), coords(&eager));
+        assert!(pending(&scene) > 0);
+        // An edit: applied in place first (the old point is the translated one).
+        let p = scene.polygon(a).unwrap().point(first).unwrap();
+        assert_eq!(
+            scene.move_vertex(a, first, p).unwrap(),
+            eager.point(eager.first()).unwrap()
+        );
+        assert_eq!(pending(&scene), 0);
+        assert_eq!(coords(scene.polygon(a).unwrap()), coords(&eager));
+        // A translation without a snapshot waits too; a conversion applies it.
+        assert!(!scene.has_snapshot(a).unwrap());
+        scene.translate(a, 0.25, 0.5).unwrap();
+        eager.translate(0.25, 0.5).unwrap();
+        assert_eq!(pending(&scene), 1);
+        scene.convert(key);
+        assert_eq!(pending(&scene), 0);
+        assert_eq!(coords(scene.polygon(a).unwrap()), coords(&eager));
+        scene.debug_validate().unwrap();
+        // Removal returns the translated polygon.
+        scene.translate(a, -3.0, 1.0 / 3.0).unwrap();
+        eager.translate(-3.0, 1.0 / 3.0).unwrap();
+        assert_eq!(coords(&scene.remove(a).unwrap()), coords(&eager));
     }
 }
