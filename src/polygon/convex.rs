@@ -109,12 +109,17 @@ impl ConvexPolygon {
 
     /// Translates every vertex in place, each coordinate rounded to nearest, without
     /// validating: for callers that validated the same rounded coordinates already (a
-    /// scene translating a linked polygon and its snapshot together). O(n).
+    /// scene translating a linked polygon and its snapshot together). O(n), one pass.
+    ///
+    /// The box is shifted, not recomputed: rounding to nearest is monotone, so
+    /// `round(min xᵢ + dx) = min round(xᵢ + dx)`, and the box's corners are vertex
+    /// coordinates, which the caller has seen stay finite.
     pub(crate) fn translate_unchecked(&mut self, dx: f64, dy: f64) {
         for p in &mut self.vertices {
             *p = Point::new(p.x + dx, p.y + dy);
         }
-        self.bbox = box_of(&self.vertices);
+        let (lo, hi) = self.bbox;
+        self.bbox = (Point::new(lo.x + dx, lo.y + dy), Point::new(hi.x + dx, hi.y + dy));
     }
 
     /// Axis-aligned bounding box `(min, max)`. O(1): computed at construction.
@@ -322,6 +327,25 @@ fn non_convex_error<I: InputIndex>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_shifted_box_is_the_box_of_the_translated_vertices() {
+        // Vectors that round (odd multiples of tiny values, large offsets), that are
+        // exact, and that cross zero; the box must equal a recomputed one every time.
+        let mut p = poly(&[[0.1, 0.2], [3.7, -1.3], [5.0, 4.4], [-2.9, 3.3]]).unwrap();
+        let mut seed = 0x9e37_79b9_7f4a_7c15_u64;
+        for step in 0..2_000 {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            let scale = [1e-17, 0.3, 7.0, 1e6, 3e12][step % 5];
+            let unit = |b: u64| (b % 2001) as f64 / 1000.0 - 1.0;
+            let (dx, dy) = (unit(seed) * scale, unit(seed >> 20) * scale);
+            p.translate_unchecked(dx, dy);
+            let (lo, hi) = box_of(p.vertices());
+            assert_eq!(p.bounding_box(), (lo, hi), "step {step} by ({dx}, {dy})");
+        }
+    }
 
     fn poly(pts: &[[f64; 2]]) -> Result<ConvexPolygon, PolygonError> {
         ConvexPolygon::new(pts.iter().copied())
