@@ -45,7 +45,7 @@
 //! [`crossing_point`](super::crossing_point). Under the exact kernel the result is
 //! identical to [`Brute`](super::Brute)'s.
 
-use super::sweep::{Input, sorted_events, standalone};
+use super::events::{Input, sorted_events, standalone};
 use super::{CrossingOptions, Crossings, edge_pair_points};
 use crate::kernel::{Kernel, Point};
 use crate::polygon::SimplePolygon;
@@ -254,7 +254,7 @@ impl ListSweep {
             tests += 1
         });
         ListWork {
-            candidates: super::sweep::list_work(input),
+            candidates: super::events::list_work(input),
             tests,
         }
     }

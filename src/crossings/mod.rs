@@ -40,6 +40,7 @@
 //! holds for both).
 
 pub mod brute;
+mod events;
 pub mod lists;
 pub mod point;
 mod status;

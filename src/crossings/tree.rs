@@ -71,8 +71,8 @@
 //! no complexity bound. The caller's kernel decides only, through
 //! [`segment_contact`](crate::kernel::segment_contact), how each reported pair meets.
 
+use super::events::{Input, standalone};
 use super::status::Status;
-use super::sweep::{Input, standalone};
 use super::{CrossingOptions, Crossings, edge_pair_points};
 use crate::kernel::{Exact, Kernel, Orientation, Point};
 use crate::polygon::SimplePolygon;

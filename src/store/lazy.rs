@@ -41,7 +41,8 @@ use std::sync::OnceLock;
 
 /// Translations a polygon may hold unapplied: a translation beyond them applies them all
 /// first. Eight makes the arena pass of rigid motion an eighth of eager translation's
-/// (measured in docs/store.md) for 128 bytes a polygon.
+/// (measured in docs/store.md) for a list of 128 bytes (168 with its bookkeeping) a
+/// translated polygon.
 pub(super) const MAX_PENDING: usize = 8;
 
 /// A linked polygon and the translations accepted for it but not yet applied to its
