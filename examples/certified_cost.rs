@@ -8,13 +8,15 @@
 //! triangle `barba-finish3` (finish on three edges of Q) and `barba-p-edges-first`;
 //! `barba-thesis` has all three of the thesis's choices. `dobkin-lemmas` is Dobkin's
 //! variant with every pruning rule by its own `if` (the thesis's Code 3.1 form),
-//! `dobkin-compact` ours (= `dobkin`).
+//! `dobkin-compact` ours (= `dobkin`). `clm` runs CLM on the pairs as linked polygons
+//! in shuffled arena order (one workspace, one seeded generator, as in the `clm` bench).
 
 use polysect::generate::{self, Family, Relation};
 use polysect::intersect::{
-    Algorithm, ArrayIntersection, Barba, BarbaVariant, ChazelleDobkin, Dobkin, DobkinVariant, Linear,
+    Algorithm, ArrayIntersection, Barba, BarbaVariant, ChazelleDobkin, Clm, ClmWorkspace, Dobkin,
+    DobkinVariant, Linear, LinkedIntersection,
 };
-use polysect::{ConvexPolygon, Exact};
+use polysect::{ConvexPolygon, Exact, LinkedPolygon};
 use rand::SeedableRng;
 use rand::rngs::SmallRng;
 use std::hint::black_box;
@@ -73,6 +75,34 @@ fn main() {
             }
         })
         .collect();
+    if alg == Algorithm::Clm {
+        // CLM on linked polygons in shuffled arena order (as in the `clm` bench), one
+        // workspace and one seeded generator for the whole run.
+        let linked: Vec<(LinkedPolygon, LinkedPolygon)> = pairs
+            .iter()
+            .map(|(p, q)| {
+                (
+                    LinkedPolygon::from_convex_shuffled(p, &mut rng),
+                    LinkedPolygon::from_convex_shuffled(q, &mut rng),
+                )
+            })
+            .collect();
+        let mut ws = ClmWorkspace::default();
+        let mut hits = 0usize;
+        for i in 0..queries {
+            let (p, q) = &linked[i % linked.len()];
+            let (p, q) = (black_box(p), black_box(q));
+            let hit = if certified {
+                Clm.certified_with_workspace(Exact, p, q, &mut rng, &mut ws)
+                    .intersects()
+            } else {
+                Clm.intersects_with_workspace(Exact, p, q, &mut rng, &mut ws)
+            };
+            hits += usize::from(hit == want);
+        }
+        assert_eq!(hits, queries, "a wrong answer");
+        return;
+    }
     let mut hits = 0usize;
     for i in 0..queries {
         let (p, q) = &pairs[i % pairs.len()];
