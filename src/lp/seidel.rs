@@ -781,8 +781,9 @@ fn violates<K: Kernel>(k: K, from: Point, to: Point, q: Point, q_in_b: bool) -> 
 /// earlier, steeper line may violate the final one, so the points before the last
 /// turn are tested once more against the final line. `guess`, the previous optimum's
 /// tangent point in the other set than p's, is usually the final bound or close to
-/// it, so that pass is short. Adds the points tested again to `work`. Among points on the final line, one of the other set
-/// than p is preferred as the partner (the tangent points must be one of each set).
+/// it, so that pass is short. Adds the points tested again to `work`. Among points on
+/// the final line, one of the other set than p is preferred as the partner (the
+/// tangent points must be one of each set).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 fn step<K: Kernel>(
