@@ -109,7 +109,9 @@
 
 use super::certificate::{extreme_left, resolve_chords, same_direction, separates, turn_gt};
 use super::{ArrayIntersection, Certificate, Derivation, Linear, Probe, Which};
-use crate::kernel::{Kernel, Orientation, Point, line_meet_side, point_on_segment, segments_intersect};
+use crate::kernel::{
+    Kernel, Orientation, Point, ShortEdges, line_meet_side, point_on_segment, segments_intersect,
+};
 use crate::polygon::ConvexPolygon;
 
 /// The Barba–Langerman O(log n) test; see the module docs.
@@ -687,6 +689,8 @@ fn keep_chain(pr: Range, c: usize) -> Option<usize> {
 /// Otherwise the farthest point is a triangle vertex, strictly right of the line.
 #[inline]
 fn prune_by_line<K: Kernel>(k: K, pv: &[Point], pr: Range, (s, u): (Point, Point)) -> Option<usize> {
+    // Every cross product here is of two edges, short next to the polygons at large n.
+    let k = ShortEdges(k);
     let at = |i: usize| pr.at(pv, i);
     let holds_peak = |from: usize, to: usize| {
         let (first, end) = ((at(from), at(from + 1)), (at(to - 1), at(to)));

@@ -618,7 +618,8 @@ impl<'a> PairSearch<'a> {
         let (f_bot, f_top) = (self.rp(kf), self.rp(kf + 1));
         let left = |p| Bound { side: Side::Left, p };
         let right = |p| Bound { side: Side::Right, p };
-        let up = k.cross(f_bot, f_top, e_bot, e_top) != Orientation::Cw;
+        // Two edges, short next to the polygons at large n: see `cross_of_short_edges`.
+        let up = k.cross_of_short_edges(f_bot, f_top, e_bot, e_top) != Orientation::Cw;
         if LEMMA_BY_LEMMA {
             return self.lemma_by_lemma(k, up, [ke, kf], [e_top, e_bot, f_bot, f_top]);
         }

@@ -303,6 +303,23 @@ impl Kernel for ExactWithin {
         }
     }
 
+    /// The semi-static test, then [`Exact`]'s static filter inline (valid for any
+    /// input: `certain` refuses overflow), then out of line.
+    #[inline]
+    fn cross_of_short_edges(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
+        let (left, right) = cross_products(a, b, c, d);
+        let det = left - right;
+        if det > self.two {
+            Orientation::Ccw
+        } else if det < self.neg_two {
+            Orientation::Cw
+        } else if certain(det, left) {
+            nonzero_sign(det).into()
+        } else {
+            cross_within_slow(a, b, c, d)
+        }
+    }
+
     #[inline]
     fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
         let (left, right) = dot_products(a, b, c, d);

@@ -246,6 +246,18 @@ pub trait Kernel: Copy + Clone + Default + fmt::Debug + Send + Sync + 'static {
         self.sign(&CrossPoly(a, b, c, d)).into()
     }
 
+    /// [`cross`](Kernel::cross) for call sites whose directions are often short next to
+    /// the boxes of a [`within`](Kernel::within) kernel: the same answer, possibly
+    /// decided differently. [`ExactWithin`](crate::ExactWithin)'s bound is scaled to the
+    /// boxes, so it seldom decides the cross product of two short edges of a large
+    /// polygon (Dobkin's and Barba's pruning tests at large n); it overrides this to try
+    /// [`Exact`]'s static filter inline before going out of line, which would cost every
+    /// other call registers and code. The default is `cross`.
+    #[inline]
+    fn cross_of_short_edges(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
+        self.cross(a, b, c, d)
+    }
+
     /// The sign of the dot product (b − a) · (d − c).
     #[inline]
     fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
@@ -330,6 +342,51 @@ pub fn line_meet_side<K: Kernel>(
         .cross_products_sign([[a, b, c, d], [e, f, e, a], [a, c, c, d], [e, f, a, b]])
         .into();
     if den == Orientation::Ccw { s } else { s.reverse() }
+}
+
+/// `K` with [`Kernel::cross`] answered by [`Kernel::cross_of_short_edges`]: for a whole
+/// function whose cross products are of short edges, without changing its helpers.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct ShortEdges<K>(pub(crate) K);
+
+impl<K: Kernel> Kernel for ShortEdges<K> {
+    const NAME: &'static str = K::NAME;
+    type Within = ShortEdges<K::Within>;
+
+    #[inline]
+    fn within(self, boxes: [(Point, Point); 2]) -> Self::Within {
+        ShortEdges(self.0.within(boxes))
+    }
+
+    #[inline]
+    fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
+        self.0.orient(a, b, c)
+    }
+
+    #[inline]
+    fn sign<P: Polynomial>(self, poly: &P) -> Sign {
+        self.0.sign(poly)
+    }
+
+    #[inline]
+    fn cross(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
+        self.0.cross_of_short_edges(a, b, c, d)
+    }
+
+    #[inline]
+    fn cross_of_short_edges(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
+        self.0.cross_of_short_edges(a, b, c, d)
+    }
+
+    #[inline]
+    fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
+        self.0.dot(a, b, c, d)
+    }
+
+    #[inline]
+    fn cross_products_sign(self, factors: [[Point; 4]; 4]) -> Sign {
+        self.0.cross_products_sign(factors)
+    }
 }
 
 /// Plain `f64` predicates: one floating-point evaluation, no error analysis.

@@ -863,3 +863,70 @@ fn degree_four_inline_filter_refuses_underflow() {
     // The fast kernel's value has the other sign.
     assert_eq!(super::super::Fast.cross_products_sign(factors), Sign::Negative);
 }
+
+/// [`Kernel::cross_of_short_edges`] under [`ExactWithin`]: short, nearly parallel
+/// edges (perturbed by up to 60 ulps) inside boxes up to 2^40 times longer, at scales
+/// from 2^-1074 to 2^1000 and beside `f64::MAX` (where differences overflow and the
+/// bounds are infinite). Its answer is always the big integers' sign; the inline
+/// static filter decides calls that the semi-static bound leaves open (the point of
+/// the entry), and the [`ShortEdges`](crate::kernel::ShortEdges) wrapper answers
+/// `cross` through it and everything else as the kernel it wraps.
+#[test]
+fn short_edges_cross_at_its_bound() {
+    use crate::kernel::ShortEdges;
+    let mut rng = SmallRng::seed_from_u64(0x5407_7ed9e);
+    let scales = [0, 0, -1074, -1000, -600, 250, 600, 1000];
+    let mut inline_decided = 0usize;
+    let mut slow = 0usize;
+    for i in 0..40_000 {
+        let e = scales[i % scales.len()];
+        let (s1, s2) = (2f64.powi(e / 2), 2f64.powi(e - e / 2));
+        let span = 2f64.powi([0, 10, 20, 40][(i / 8) % 4]);
+        let k = rng.random_range(-60..=60);
+        let off = Point::new(rng.random_range(-span..span), rng.random_range(-span..span));
+        let dir = Point::new(rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0));
+        let a = off;
+        let b = Point::new(a.x + dir.x, a.y + dir.y);
+        let c = Point::new(rng.random_range(-span..span), rng.random_range(-span..span));
+        let t: f64 = rng.random_range(0.5..2.0);
+        let d = Point::new(c.x + t * dir.x, ulps(c.y + t * dir.y, k));
+        let sc = |p: Point| Point::new(p.x * s1 * s2, p.y * s1 * s2);
+        let corner = Point::new(span * s1 * s2, span * s1 * s2);
+        let [a, b, c, d, corner] = [a, b, c, d, corner].map(sc);
+        if [a, b, c, d, corner].iter().any(|p| !p.is_finite()) {
+            continue;
+        }
+        let boxes = [(-corner, corner), box_of(&[a, b, c, d])];
+        let kw = ExactWithin::new(boxes);
+        let want = sign_slow(&CrossPoly(a, b, c, d));
+        let got = kw.cross_of_short_edges(a, b, c, d);
+        assert_eq!(Sign::of(as_value_of(got)), want, "{a:?} {b:?} {c:?} {d:?}");
+        assert_eq!(got, kw.cross(a, b, c, d));
+        assert_eq!(ShortEdges(kw).cross(a, b, c, d), got);
+        assert_eq!(ShortEdges(kw).orient(a, b, c), kw.orient(a, b, c));
+        assert_eq!(ShortEdges(kw).dot(a, b, c, d), kw.dot(a, b, c, d));
+        let (l, r) = cross_products(a, b, c, d);
+        let semi = l - r > kw.two || l - r < kw.neg_two;
+        if !semi {
+            if certain(l - r, l) {
+                inline_decided += 1;
+            } else {
+                slow += 1;
+            }
+        }
+    }
+    // Beside f64::MAX the differences overflow: infinite bounds, and the inline
+    // filter must refuse (an infinite product of an overflowed difference).
+    let m = f64::MAX;
+    let (a, b) = (Point::new(-m, 0.0), Point::new(m, 1e-300));
+    let (c, d) = (Point::new(0.0, 0.0), Point::new(1e-300, 0.0));
+    let kw = ExactWithin::new([(a, b), (c, d)]);
+    assert_eq!(kw.two, f64::INFINITY);
+    let want = sign_slow(&CrossPoly(a, b, c, d));
+    assert_eq!(Sign::of(as_value_of(kw.cross_of_short_edges(a, b, c, d))), want);
+    assert!(
+        inline_decided > 5_000,
+        "inline filter decided only {inline_decided}"
+    );
+    assert!(slow > 1_000, "too few calls left for the slow path: {slow}");
+}
