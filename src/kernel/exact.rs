@@ -261,6 +261,23 @@ impl ExactWithin {
     pub fn degree_four_bound(&self) -> f64 {
         self.four
     }
+
+    /// `cross` by the semi-static test, then (with `STATIC`) [`Exact`]'s static filter
+    /// inline, then out of line.
+    #[inline(always)]
+    fn cross_filtered<const STATIC: bool>(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
+        let (left, right) = cross_products(a, b, c, d);
+        let det = left - right;
+        if det > self.two {
+            Orientation::Ccw
+        } else if det < self.neg_two {
+            Orientation::Cw
+        } else if STATIC && certain(det, left) {
+            nonzero_sign(det).into()
+        } else {
+            cross_within_slow(a, b, c, d)
+        }
+    }
 }
 
 impl Kernel for ExactWithin {
@@ -292,32 +309,14 @@ impl Kernel for ExactWithin {
 
     #[inline]
     fn cross(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
-        let (left, right) = cross_products(a, b, c, d);
-        let det = left - right;
-        if det > self.two {
-            Orientation::Ccw
-        } else if det < self.neg_two {
-            Orientation::Cw
-        } else {
-            cross_within_slow(a, b, c, d)
-        }
+        self.cross_filtered::<false>(a, b, c, d)
     }
 
     /// The semi-static test, then [`Exact`]'s static filter inline (valid for any
     /// input: `certain` refuses overflow), then out of line.
     #[inline]
     fn cross_of_short_edges(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
-        let (left, right) = cross_products(a, b, c, d);
-        let det = left - right;
-        if det > self.two {
-            Orientation::Ccw
-        } else if det < self.neg_two {
-            Orientation::Cw
-        } else if certain(det, left) {
-            nonzero_sign(det).into()
-        } else {
-            cross_within_slow(a, b, c, d)
-        }
+        self.cross_filtered::<true>(a, b, c, d)
     }
 
     #[inline]
