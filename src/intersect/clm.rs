@@ -549,9 +549,31 @@ fn counted_lp<K: Kernel, R: Rng + ?Sized, P: Probe>(
 ) -> Result<Separation, LpError> {
     debug_assert!(a_points.len() == a.positions.len() && b_points.len() == b.positions.len());
     let before = lp.work;
+    // The LP asks its predicates of these points only: the exact kernel's semi-static
+    // filter, with one bound from their boxes, certifies them with two comparisons
+    // (one pass over the points, which the LP reads anyway).
+    let k = k.within([box_of(a_points), box_of(b_points)]);
     let result = separating_line(k, a_points, b_points, rng, lp);
     probe.lp_call(a, b, lp.work - before, &result);
     result
+}
+
+/// The bounding box (min, max) of non-empty `points`, whose coordinates are finite
+/// (polygon vertices).
+fn box_of(points: &[Point]) -> (Point, Point) {
+    let first = points.first().copied().unwrap_or_default();
+    points.iter().fold((first, first), |(lo, hi), p| {
+        (
+            Point::new(
+                if p.x < lo.x { p.x } else { lo.x },
+                if p.y < lo.y { p.y } else { lo.y },
+            ),
+            Point::new(
+                if p.x > hi.x { p.x } else { hi.x },
+                if p.y > hi.y { p.y } else { hi.y },
+            ),
+        )
+    })
 }
 
 /// The test; with `CERT` it also records in `ws.trace` what its certificate needs.

@@ -66,7 +66,9 @@
 //! Predicates that mix magnitudes more than 2^1022 apart within one call fall to big
 //! integers when nearly degenerate.
 
-use super::{CrossPoly, CrossProductsPoly, DotPoly, Kernel, Orientation, Point, Polynomial, Ring, Sign};
+use super::{
+    CrossPoly, CrossProductsPoly, DirectedLine, DotPoly, Kernel, Orientation, Point, Polynomial, Ring, Sign,
+};
 use num_bigint::BigInt;
 use num_traits::{Signed, Zero};
 use std::ops::{Add, Mul, Sub};
@@ -99,6 +101,18 @@ impl Kernel for Exact {
         let mut det = left - right;
         if !certain(det, left) {
             det = as_value(orient_slow(a, b, c));
+        }
+        Sign::of(det).into()
+    }
+
+    /// The static filter on the products with the line's start as the pivot (see
+    /// [`DirectedLine`]): the same bound as `orient`'s.
+    #[inline]
+    fn orient_line(self, line: &DirectedLine, c: Point) -> Orientation {
+        let (left, right) = line.products(c);
+        let mut det = left - right;
+        if !certain(det, left) {
+            det = as_value(orient_slow(line.from(), line.to(), c));
         }
         Sign::of(det).into()
     }
@@ -299,6 +313,22 @@ impl Kernel for ExactWithin {
             Orientation::Cw
         } else {
             orient_within_slow(a, b, c)
+        }
+    }
+
+    /// The semi-static filter on the products with the line's start as the pivot
+    /// (see [`DirectedLine`]): every difference is still one of two points in the
+    /// boxes, so the bound `B₂` holds.
+    #[inline]
+    fn orient_line(self, line: &DirectedLine, c: Point) -> Orientation {
+        let (left, right) = line.products(c);
+        let det = left - right;
+        if det > self.two {
+            Orientation::Ccw
+        } else if det < self.neg_two {
+            Orientation::Cw
+        } else {
+            orient_within_slow(line.from(), line.to(), c)
         }
     }
 

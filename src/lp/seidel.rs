@@ -1,7 +1,7 @@
 //! The incremental LP behind [`separating_line`]; the formulation is in the module docs
 //! of [`crate::lp`].
 
-use crate::kernel::{Exact, Kernel, Orientation, Point, Sign};
+use crate::kernel::{DirectedLine, Exact, Kernel, Orientation, Point, Sign};
 use crate::polygon::LinkedPolygon;
 use rand::Rng;
 use std::fmt;
@@ -142,8 +142,6 @@ pub struct LpWorkspace {
     /// Whether the caller has put the points in random order already
     /// ([`keep_order`](Self::keep_order)).
     keep_order: bool,
-    /// Scratch for the interleaving of a kept order.
-    spare: Vec<Item>,
     /// The witness of the last recorded [`Separation::Intersecting`] answer.
     witness: Witness,
     /// Constraints examined (violation tests and one-dimensional steps) since creation:
@@ -318,60 +316,65 @@ where
     if a.len() >= B_BIT as usize || b.len() >= B_BIT as usize {
         return Err(LpError::TooLarge);
     }
-    list_items(a.len(), b.len(), workspace);
-    let na = a.len();
+    let lay = Layout {
+        na: a.len(),
+        nb: b.len(),
+        interleaved: workspace.keep_order,
+    };
     let src = Source { a, b };
     let LpWorkspace {
         items,
         work,
         redone,
         record,
-        keep_order,
-        spare,
         witness,
+        ..
     } = workspace;
-    let order = if *keep_order {
-        Order::Interleave(spare)
-    } else {
-        Order::Shuffle
-    };
+    list_items(lay, items);
     // The examined prefix points into the items, which are about to change (the
     // witness points carry their own coordinates and indices).
     witness.examined = 0;
     // Recording is chosen at compile time, so the plain instance carries no trace of it.
-    let mut order = order;
-    let mut solve_as = |k_exact: bool,
-                        items: &mut Vec<Item>,
-                        rng: &mut R,
-                        work: &mut u64,
-                        witness: &mut Witness| match (k_exact, *record) {
-        (false, false) => solve::<K, R, A, B, false>(kernel, &src, items, na, &mut order, rng, work, witness),
-        (false, true) => solve::<K, R, A, B, true>(kernel, &src, items, na, &mut order, rng, work, witness),
-        (true, false) => {
-            solve::<Exact, R, A, B, false>(Exact, &src, items, na, &mut order, rng, work, witness)
-        }
-        (true, true) => solve::<Exact, R, A, B, true>(Exact, &src, items, na, &mut order, rng, work, witness),
-    };
+    let solve_as =
+        |k_exact: bool, items: &mut Vec<Item>, rng: &mut R, work: &mut u64, witness: &mut Witness| match (
+            k_exact, *record,
+        ) {
+            (false, false) => solve::<K, R, A, B, false>(kernel, &src, items, lay, rng, work, witness),
+            (false, true) => solve::<K, R, A, B, true>(kernel, &src, items, lay, rng, work, witness),
+            (true, false) => solve::<Exact, R, A, B, false>(Exact, &src, items, lay, rng, work, witness),
+            (true, true) => solve::<Exact, R, A, B, true>(Exact, &src, items, lay, rng, work, witness),
+        };
     Ok(match solve_as(false, items, rng, work, witness) {
         Some(s) => s,
         // Only an inconsistent (fast) kernel gets here: redo it exactly.
         None => {
             *redone += 1;
-            // `solve` reordered the items: restore A-first order by origin.
-            items.sort_unstable_by_key(|it| it.enc);
+            // `solve` reordered the items: list them again.
+            list_items(lay, items);
             solve_as(true, items, rng, work, witness).unwrap_or(Separation::Intersecting)
         }
     })
 }
 
-/// A directed line through two input points.
+/// A directed line through two input points, with its direction for
+/// [`Kernel::orient_line`] (the loops test many points against one line).
 #[derive(Clone, Copy, Debug)]
 struct Line {
     s: Point,
     e: Point,
+    d: DirectedLine,
 }
 
 impl Line {
+    #[inline]
+    fn new(s: Point, e: Point) -> Self {
+        Line {
+            s,
+            e,
+            d: DirectedLine::new(s, e),
+        }
+    }
+
     /// `orient(s, e, x)`, answering the points that define the line without the kernel:
     /// exact zeros are the slowest case of an exact predicate, and each LP meets a few.
     #[inline]
@@ -379,7 +382,7 @@ impl Line {
         if x == self.s || x == self.e {
             Orientation::Collinear
         } else {
-            k.orient(self.s, self.e, x)
+            k.orient_line(&self.d, x)
         }
     }
 }
@@ -418,24 +421,66 @@ struct Item {
     loaded: bool,
 }
 
-/// Lists A and B in `ws.items` (A first) without reading their points yet: each point is
-/// copied into its item when the LP first reaches it, so the repeated passes read
+/// Where [`list_items`] puts the points of A and B: A's `na` first, then B's `nb`; or,
+/// for a kept order ([`LpWorkspace::keep_order`]), alternately (a₀ b₀ a₁ b₁ …, then
+/// the longer set's tail), so that the LP takes them alternately without moving them
+/// again.
+#[derive(Clone, Copy, Debug)]
+struct Layout {
+    na: usize,
+    nb: usize,
+    interleaved: bool,
+}
+
+impl Layout {
+    /// The slot of A's point `i`.
+    #[inline]
+    fn a(self, i: usize) -> usize {
+        if !self.interleaved {
+            i
+        } else {
+            let m = self.na.min(self.nb);
+            if i < m { 2 * i } else { m + i }
+        }
+    }
+
+    /// The slot of B's point `j`.
+    #[inline]
+    fn b(self, j: usize) -> usize {
+        if !self.interleaved {
+            self.na + j
+        } else {
+            let m = self.na.min(self.nb);
+            if j < m { 2 * j + 1 } else { m + j }
+        }
+    }
+}
+
+/// Lists A and B in `items` as `lay` says without reading their points yet: each point
+/// is copied into its item when the LP first reaches it, so the repeated passes read
 /// contiguous memory, and an LP that stops early (intersecting hulls are usually found
 /// within a few dozen points) never touches the rest of the input.
-fn list_items(na: usize, nb: usize, ws: &mut LpWorkspace) {
-    ws.items.clear();
-    ws.items.reserve(na + nb);
-    let blank = Point::new(0.0, 0.0);
-    ws.items.extend((0..na as u32).map(|i| Item {
-        p: blank,
-        enc: i,
+fn list_items(lay: Layout, items: &mut Vec<Item>) {
+    let item = |enc| Item {
+        p: Point::new(0.0, 0.0),
+        enc,
         loaded: false,
-    }));
-    ws.items.extend((0..nb as u32).map(|j| Item {
-        p: blank,
-        enc: j | B_BIT,
-        loaded: false,
-    }));
+    };
+    let (na, nb) = (lay.na as u32, lay.nb as u32);
+    items.clear();
+    items.reserve(lay.na + lay.nb);
+    if lay.interleaved {
+        let m = na.min(nb);
+        for i in 0..m {
+            items.push(item(i));
+            items.push(item(i | B_BIT));
+        }
+        items.extend((m..na).map(item));
+        items.extend((m..nb).map(|j| item(j | B_BIT)));
+    } else {
+        items.extend((0..na).map(item));
+        items.extend((0..nb).map(|j| item(j | B_BIT)));
+    }
 }
 
 /// Reads items' points from the two input sets on first use.
@@ -459,33 +504,24 @@ impl<A: PointSet + ?Sized, B: PointSet + ?Sized> Source<'_, A, B> {
     }
 }
 
-/// How [`solve`] orders the points after the bounding pair.
-enum Order<'s> {
-    /// A uniformly random order (ours).
-    Shuffle,
-    /// A's and B's alternately, each in the given order ([`LpWorkspace::keep_order`]),
-    /// through this scratch buffer.
-    Interleave(&'s mut Vec<Item>),
-}
-
-/// The LP on `items` (A's points first, `na` of them, then B's). Reorders `items`
-/// (as `order` says). `None` when the final certification fails
-/// (inconsistent kernel).
+/// The LP on `items` (laid out as `lay` says). Moves the bounding points to the
+/// front and, unless the layout keeps the caller's order, shuffles the rest. `None`
+/// when the final certification fails (inconsistent kernel).
 #[allow(clippy::too_many_arguments)]
 fn solve<K: Kernel, R: Rng + ?Sized, A: PointSet + ?Sized, B: PointSet + ?Sized, const RECORD: bool>(
     k: K,
     src: &Source<'_, A, B>,
     items: &mut [Item],
-    na: usize,
-    order: &mut Order<'_>,
+    lay: Layout,
     rng: &mut R,
     work: &mut u64,
     witness: &mut Witness,
 ) -> Option<Separation> {
-    let (a0, b0) = (src.load(&mut items[0]), src.load(&mut items[na]));
+    let (s_a0, s_b0) = (lay.a(0), lay.b(0));
+    let (a0, b0) = (src.load(&mut items[s_a0]), src.load(&mut items[s_b0]));
     if a0 == b0 {
         if RECORD {
-            witness.set(&[WitnessPoint::of(items[0]), WitnessPoint::of(items[na])], 0);
+            witness.set(&[WitnessPoint::of(items[s_a0]), WitnessPoint::of(items[s_b0])], 0);
         }
         return Some(Separation::Intersecting);
     }
@@ -495,17 +531,23 @@ fn solve<K: Kernel, R: Rng + ?Sized, A: PointSet + ?Sized, B: PointSet + ?Sized,
     // Scan A and B interleaved, keeping A's x′-minimum and B's x′-maximum so far, and stop
     // at the first such pair (usually within a few points). Only when none exists is the
     // whole input scanned: then the line through a₀ and b₀ separates.
-    let nb = items.len() - na;
-    let (mut il, mut jr) = (0, na);
+    let (na, nb) = (lay.na, lay.nb);
+    let (mut il, mut jr) = (s_a0, s_b0);
     let mut bounded = false;
     // i = 0 is (a₀, b₀) itself: equal x′, not bounding (and an exact zero, which is the
     // slowest case of an exact predicate, so it is not evaluated).
     for i in 1..na.max(nb) {
-        if i < na && x_less(src.load(&mut items[i]), items[il].p) {
-            il = i;
+        if i < na {
+            let s = lay.a(i);
+            if x_less(src.load(&mut items[s]), items[il].p) {
+                il = s;
+            }
         }
-        if i < nb && x_less(items[jr].p, src.load(&mut items[na + i])) {
-            jr = na + i;
+        if i < nb {
+            let s = lay.b(i);
+            if x_less(items[jr].p, src.load(&mut items[s])) {
+                jr = s;
+            }
         }
         *work += 1;
         if x_less(items[il].p, items[jr].p) {
@@ -517,11 +559,11 @@ fn solve<K: Kernel, R: Rng + ?Sized, A: PointSet + ?Sized, B: PointSet + ?Sized,
     let (line, ta, tb, on_line, checked) = if !bounded {
         // No point of A is x′-left of a point of B: the line through a₀ and b₀
         // (parallel to d₀) separates.
-        let (pa, pb) = (items[0].p, items[na].p);
+        let (pa, pb) = (items[s_a0].p, items[s_b0].p);
         (
-            Line { s: a0, e: b0 },
-            items[0].enc,
-            items[na].enc,
+            Line::new(a0, b0),
+            items[s_a0].enc,
+            items[s_b0].enc,
             OnLine::at(pa, pb),
             items.len(),
         )
@@ -530,18 +572,15 @@ fn solve<K: Kernel, R: Rng + ?Sized, A: PointSet + ?Sized, B: PointSet + ?Sized,
         // (or the caller's order).
         items.swap(0, il);
         items.swap(1, jr);
-        match order {
-            Order::Shuffle => {
-                for i in (3..items.len()).rev() {
-                    items.swap(i, rng.random_range(2..=i));
-                }
+        if !lay.interleaved {
+            for i in (3..items.len()).rev() {
+                items.swap(i, rng.random_range(2..=i));
             }
-            Order::Interleave(spare) => interleave(&mut items[2..], na.saturating_sub(2), spare),
         }
         match incremental::<K, A, B, RECORD>(
             k,
             src,
-            Line { s: al.p, e: br.p },
+            Line::new(al.p, br.p),
             al,
             br,
             a0,
@@ -562,24 +601,6 @@ fn solve<K: Kernel, R: Rng + ?Sized, A: PointSet + ?Sized, B: PointSet + ?Sized,
         }
     };
     certify::<K, RECORD>(k, line, ta, tb, on_line, &items[..checked], work, witness)
-}
-
-/// Rewrites `items` as its first `split` items and the rest alternately (x₀ y₀ x₁ y₁ …,
-/// then the longer part's tail), each part in its order; `spare` is scratch.
-fn interleave(items: &mut [Item], split: usize, spare: &mut Vec<Item>) {
-    spare.clear();
-    spare.extend_from_slice(items);
-    let (x, y) = spare.split_at(split.min(spare.len()));
-    let (mut i, mut j) = (0, 0);
-    for slot in items.iter_mut() {
-        if i < x.len() && (i <= j || j == y.len()) {
-            *slot = x[i];
-            i += 1;
-        } else {
-            *slot = y[j];
-            j += 1;
-        }
-    }
 }
 
 /// The extreme points, along the current line, of each set's points found on it.
@@ -760,8 +781,8 @@ fn bound<K: Kernel>(k: K, p: Point, q: Point, q_in_b: bool, a0: Point, b0: Point
 /// Whether `q` (of B if `q_in_b`) is strictly on the wrong side of the directed line
 /// (`from`, `to`), and whether it is on the line.
 #[inline(always)]
-fn violates<K: Kernel>(k: K, from: Point, to: Point, q: Point, q_in_b: bool) -> (bool, bool) {
-    let o = k.orient(from, to, q);
+fn violates<K: Kernel>(k: K, line: &DirectedLine, q: Point, q_in_b: bool) -> (bool, bool) {
+    let o = k.orient_line(line, q);
     let wrong = if q_in_b { Orientation::Cw } else { Orientation::Ccw };
     (o == wrong, o == Orientation::Collinear)
 }
@@ -796,14 +817,14 @@ fn step<K: Kernel>(
     guess: Item,
     work: &mut u64,
 ) -> Step {
-    // The tightest upper bound so far: its line (from, to) and the point; plain locals
+    // The tightest upper bound so far: its line and the point; plain locals
     // keep the hot loop free of memory traffic.
-    let mut best: Option<(Point, Point, Item)> = None;
+    let mut best: Option<(DirectedLine, Item)> = None;
     let g_in_b = guess.enc & B_BIT != 0;
     if guess.p != p
         && let Bound::Upper(from, to) = bound(k, p, guess.p, g_in_b, a0, b0)
     {
-        best = Some((from, to, guess));
+        best = Some((DirectedLine::new(from, to), guess));
     }
     // A point of the other set than the bound's on the current line, if any.
     let mut partner: Option<Item> = None;
@@ -819,11 +840,11 @@ fn step<K: Kernel>(
             }
             continue;
         }
-        if let Some((from, to, b)) = best {
+        if let Some((line, b)) = best {
             if it.enc == b.enc {
                 continue; // the bound itself: on its line, and an exact zero is slow
             }
-            let (wrong, on) = violates(k, from, to, q, q_in_b);
+            let (wrong, on) = violates(k, &line, q, q_in_b);
             if !wrong {
                 if on && opposite && partner.is_none() && (b.enc & B_BIT != 0) == p_in_b {
                     partner = Some(*it);
@@ -833,12 +854,12 @@ fn step<K: Kernel>(
         }
         match bound(k, p, q, q_in_b, a0, b0) {
             Bound::Upper(from, to) => {
-                best = Some((from, to, *it));
+                best = Some((DirectedLine::new(from, to), *it));
                 partner = None;
                 recheck = i;
             }
             Bound::Lower => {
-                if let Some((_, _, b)) = best {
+                if let Some((_, b)) = best {
                     // Its slope exceeds the tightest upper bound's.
                     return Step::Infeasible(b, *it);
                 }
@@ -849,7 +870,7 @@ fn step<K: Kernel>(
             Bound::Blocked => return Step::Infeasible(*it, *it),
         }
     }
-    let Some((from, to, b)) = best else {
+    let Some((line, b)) = best else {
         // The bounding constraints always give an upper bound; only an inconsistent
         // kernel loses it.
         return Step::Inconsistent;
@@ -862,7 +883,7 @@ fn step<K: Kernel>(
         if q == p || it.enc == b.enc {
             continue; // of p's set (one of the other set returned above), or the bound
         }
-        let (wrong, on) = violates(k, from, to, q, q_in_b);
+        let (wrong, on) = violates(k, &line, q, q_in_b);
         if !wrong {
             if on && !b_opposite && partner.is_none() && q_in_b != p_in_b {
                 partner = Some(*it);
@@ -877,7 +898,14 @@ fn step<K: Kernel>(
         };
     }
     let partner = if b_opposite { b } else { partner.unwrap_or(b) };
-    Step::Line(Line { s: from, e: to }, partner)
+    Step::Line(
+        Line {
+            s: line.from(),
+            e: line.to(),
+            d: line,
+        },
+        partner,
+    )
 }
 
 /// Checks `items` against the line (the points not yet tested against it), adds those
@@ -894,7 +922,7 @@ fn certify<K: Kernel, const RECORD: bool>(
     work: &mut u64,
     witness: &mut Witness,
 ) -> Option<Separation> {
-    let Line { s, e } = line;
+    let Line { s, e, d } = line;
     // The tangent points are on the line (this fails only under an inconsistent kernel).
     if k.orient(s, e, on_line.a_min) != Orientation::Collinear
         || k.orient(s, e, on_line.b_min) != Orientation::Collinear
@@ -903,7 +931,7 @@ fn certify<K: Kernel, const RECORD: bool>(
     }
     for &Item { p: x, enc, .. } in items {
         let in_b = enc & B_BIT != 0;
-        match (k.orient(s, e, x), in_b) {
+        match (k.orient_line(&d, x), in_b) {
             (Orientation::Ccw, false) | (Orientation::Cw, true) => return None,
             (Orientation::Collinear, _) => on_line.add(k, s, e, x, in_b),
             _ => {}
