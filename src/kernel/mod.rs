@@ -427,6 +427,11 @@ impl<K: Kernel> Kernel for ShortEdges<K> {
     }
 
     #[inline]
+    fn orient_line(self, line: &DirectedLine, c: Point) -> Orientation {
+        self.0.orient_line(line, c)
+    }
+
+    #[inline]
     fn sign<P: Polynomial>(self, poly: &P) -> Sign {
         self.0.sign(poly)
     }

@@ -904,6 +904,8 @@ fn short_edges_cross_at_its_bound() {
         assert_eq!(got, kw.cross(a, b, c, d));
         assert_eq!(ShortEdges(kw).cross(a, b, c, d), got);
         assert_eq!(ShortEdges(kw).orient(a, b, c), kw.orient(a, b, c));
+        let line = crate::kernel::DirectedLine::new(a, b);
+        assert_eq!(ShortEdges(kw).orient_line(&line, c), kw.orient(a, b, c));
         assert_eq!(ShortEdges(kw).dot(a, b, c, d), kw.dot(a, b, c, d));
         let (l, r) = cross_products(a, b, c, d);
         let semi = l - r > kw.two || l - r < kw.neg_two;
