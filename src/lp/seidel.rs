@@ -16,6 +16,11 @@ pub trait PointSet {
     fn is_empty(&self) -> bool {
         self.len() == 0
     }
+    /// The points as one contiguous slice, when they are stored so (then the LP copies
+    /// them all at once instead of reading each on first use).
+    fn as_slice(&self) -> Option<&[Point]> {
+        None
+    }
 }
 
 impl PointSet for [Point] {
@@ -26,6 +31,10 @@ impl PointSet for [Point] {
     #[inline]
     fn point(&self, i: usize) -> Point {
         self[i]
+    }
+    #[inline]
+    fn as_slice(&self) -> Option<&[Point]> {
+        Some(self)
     }
 }
 
@@ -38,6 +47,10 @@ impl PointSet for Vec<Point> {
     fn point(&self, i: usize) -> Point {
         self[i]
     }
+    #[inline]
+    fn as_slice(&self) -> Option<&[Point]> {
+        Some(self)
+    }
 }
 
 impl<T: PointSet + ?Sized> PointSet for &T {
@@ -48,6 +61,10 @@ impl<T: PointSet + ?Sized> PointSet for &T {
     #[inline]
     fn point(&self, i: usize) -> Point {
         (**self).point(i)
+    }
+    #[inline]
+    fn as_slice(&self) -> Option<&[Point]> {
+        (**self).as_slice()
     }
 }
 
@@ -330,28 +347,34 @@ where
         witness,
         ..
     } = workspace;
-    list_items(lay, items);
+    // Contiguous inputs are copied at once, and the loops then read the items only.
+    let slices = a.as_slice().zip(b.as_slice());
+    list_items(lay, items, slices);
     // The examined prefix points into the items, which are about to change (the
     // witness points carry their own coordinates and indices).
     witness.examined = 0;
-    // Recording is chosen at compile time, so the plain instance carries no trace of it.
-    let solve_as =
-        |k_exact: bool, items: &mut Vec<Item>, rng: &mut R, work: &mut u64, witness: &mut Witness| match (
-            k_exact, *record,
-        ) {
-            (false, false) => solve::<K, R, A, B, false>(kernel, &src, items, lay, rng, work, witness),
-            (false, true) => solve::<K, R, A, B, true>(kernel, &src, items, lay, rng, work, witness),
-            (true, false) => solve::<Exact, R, A, B, false>(Exact, &src, items, lay, rng, work, witness),
-            (true, true) => solve::<Exact, R, A, B, true>(Exact, &src, items, lay, rng, work, witness),
-        };
-    Ok(match solve_as(false, items, rng, work, witness) {
+    // Recording and loading are chosen at compile time, so the plain instance carries
+    // no trace of them.
+    let first = match (slices.is_some(), *record) {
+        (true, false) => solve::<K, R, Loaded, false>(kernel, &Loaded, items, lay, rng, work, witness),
+        (true, true) => solve::<K, R, Loaded, true>(kernel, &Loaded, items, lay, rng, work, witness),
+        (false, false) => solve::<K, R, _, false>(kernel, &src, items, lay, rng, work, witness),
+        (false, true) => solve::<K, R, _, true>(kernel, &src, items, lay, rng, work, witness),
+    };
+    Ok(match first {
         Some(s) => s,
         // Only an inconsistent (fast) kernel gets here: redo it exactly.
         None => {
             *redone += 1;
-            // `solve` reordered the items: list them again.
-            list_items(lay, items);
-            solve_as(true, items, rng, work, witness).unwrap_or(Separation::Intersecting)
+            // `solve` reordered the items: list them again (loaded items are not
+            // read again by `src`).
+            list_items(lay, items, slices);
+            let again = if *record {
+                solve::<Exact, R, _, true>(Exact, &src, items, lay, rng, work, witness)
+            } else {
+                solve::<Exact, R, _, false>(Exact, &src, items, lay, rng, work, witness)
+            };
+            again.unwrap_or(Separation::Intersecting)
         }
     })
 }
@@ -375,15 +398,13 @@ impl Line {
         }
     }
 
-    /// `orient(s, e, x)`, answering the points that define the line without the kernel:
-    /// exact zeros are the slowest case of an exact predicate, and each LP meets a few.
+    /// `orient(s, e, x)`. A point that defines the line gives two equal products (an
+    /// exact zero), which no filter certifies: such points cost a slow path, where
+    /// [`ExactWithin`](crate::ExactWithin) answers them by comparing points, and the
+    /// decided calls pay no comparison.
     #[inline]
     fn side<K: Kernel>(self, k: K, x: Point) -> Orientation {
-        if x == self.s || x == self.e {
-            Orientation::Collinear
-        } else {
-            k.orient_line(&self.d, x)
-        }
+        k.orient_line(&self.d, x)
     }
 }
 
@@ -456,19 +477,40 @@ impl Layout {
     }
 }
 
-/// Lists A and B in `items` as `lay` says without reading their points yet: each point
-/// is copied into its item when the LP first reaches it, so the repeated passes read
-/// contiguous memory, and an LP that stops early (intersecting hulls are usually found
-/// within a few dozen points) never touches the rest of the input.
-fn list_items(lay: Layout, items: &mut Vec<Item>) {
+/// Lists A and B in `items` as `lay` says. Contiguous inputs (`slices`) are copied
+/// at once. Otherwise no point is read yet: each is copied into its item when the LP
+/// first reaches it, so the repeated passes read contiguous memory, and an LP that
+/// stops early (intersecting hulls are usually found within a few dozen points) never
+/// touches the rest of the input.
+fn list_items(lay: Layout, items: &mut Vec<Item>, slices: Option<(&[Point], &[Point])>) {
+    let (na, nb) = (lay.na as u32, lay.nb as u32);
+    items.clear();
+    items.reserve(lay.na + lay.nb);
+    if let Some((a, b)) = slices {
+        // Written in place (no per-item capacity check): pairs first when
+        // interleaved, then A's rest, then B's rest.
+        let loaded = |p, enc| Item { p, enc, loaded: true };
+        items.resize(lay.na + lay.nb, Item::default());
+        let m = if lay.interleaved { lay.na.min(lay.nb) } else { 0 };
+        let (pairs, rest) = items.split_at_mut(2 * m);
+        for ((pair, (&pa, &pb)), i) in pairs.chunks_exact_mut(2).zip(a.iter().zip(b)).zip(0..) {
+            pair[0] = loaded(pa, i);
+            pair[1] = loaded(pb, i | B_BIT);
+        }
+        let (rest_a, rest_b) = rest.split_at_mut(lay.na - m);
+        for ((slot, &p), i) in rest_a.iter_mut().zip(&a[m..]).zip(m as u32..) {
+            *slot = loaded(p, i);
+        }
+        for ((slot, &p), j) in rest_b.iter_mut().zip(&b[m..]).zip(m as u32..) {
+            *slot = loaded(p, j | B_BIT);
+        }
+        return;
+    }
     let item = |enc| Item {
         p: Point::new(0.0, 0.0),
         enc,
         loaded: false,
     };
-    let (na, nb) = (lay.na as u32, lay.nb as u32);
-    items.clear();
-    items.reserve(lay.na + lay.nb);
     if lay.interleaved {
         let m = na.min(nb);
         for i in 0..m {
@@ -483,13 +525,33 @@ fn list_items(lay: Layout, items: &mut Vec<Item>) {
     }
 }
 
+/// Where the loops get an item's point.
+trait Load {
+    /// Whether points are read on first use (else every item holds its point).
+    const LAZY: bool;
+    /// The point of `it`, read now if it has not been.
+    fn load(&self, it: &mut Item) -> Point;
+}
+
+/// Items listed with their points.
+struct Loaded;
+
+impl Load for Loaded {
+    const LAZY: bool = false;
+    #[inline(always)]
+    fn load(&self, it: &mut Item) -> Point {
+        it.p
+    }
+}
+
 /// Reads items' points from the two input sets on first use.
 struct Source<'s, A: ?Sized, B: ?Sized> {
     a: &'s A,
     b: &'s B,
 }
 
-impl<A: PointSet + ?Sized, B: PointSet + ?Sized> Source<'_, A, B> {
+impl<A: PointSet + ?Sized, B: PointSet + ?Sized> Load for Source<'_, A, B> {
+    const LAZY: bool = true;
     #[inline]
     fn load(&self, it: &mut Item) -> Point {
         if !it.loaded {
@@ -508,9 +570,9 @@ impl<A: PointSet + ?Sized, B: PointSet + ?Sized> Source<'_, A, B> {
 /// front and, unless the layout keeps the caller's order, shuffles the rest. `None`
 /// when the final certification fails (inconsistent kernel).
 #[allow(clippy::too_many_arguments)]
-fn solve<K: Kernel, R: Rng + ?Sized, A: PointSet + ?Sized, B: PointSet + ?Sized, const RECORD: bool>(
+fn solve<K: Kernel, R: Rng + ?Sized, S: Load, const RECORD: bool>(
     k: K,
-    src: &Source<'_, A, B>,
+    src: &S,
     items: &mut [Item],
     lay: Layout,
     rng: &mut R,
@@ -577,7 +639,7 @@ fn solve<K: Kernel, R: Rng + ?Sized, A: PointSet + ?Sized, B: PointSet + ?Sized,
                 items.swap(i, rng.random_range(2..=i));
             }
         }
-        match incremental::<K, A, B, RECORD>(
+        match incremental::<K, S, RECORD>(
             k,
             src,
             Line::new(al.p, br.p),
@@ -647,9 +709,9 @@ impl OnLine {
 /// changed the line, and the on-line extremes of the points after it (each of which was
 /// tested against the final line).
 #[allow(clippy::too_many_arguments)]
-fn incremental<K: Kernel, A: PointSet + ?Sized, B: PointSet + ?Sized, const RECORD: bool>(
+fn incremental<K: Kernel, S: Load, const RECORD: bool>(
     k: K,
-    src: &Source<'_, A, B>,
+    src: &S,
     mut line: Line,
     al: Item,
     br: Item,
@@ -665,7 +727,9 @@ fn incremental<K: Kernel, A: PointSet + ?Sized, B: PointSet + ?Sized, const RECO
     let mut w = 0u64;
     for t in 2..items.len() {
         // Read a point a few items ahead: its cache miss overlaps with this iteration.
-        if let Some(ahead) = items.get_mut(t + LOOKAHEAD) {
+        if S::LAZY
+            && let Some(ahead) = items.get_mut(t + LOOKAHEAD)
+        {
             src.load(ahead);
         }
         let p = src.load(&mut items[t]);
@@ -834,23 +898,30 @@ fn step<K: Kernel>(
         let q = it.p;
         let q_in_b = it.enc & B_BIT != 0;
         let opposite = q_in_b != p_in_b;
-        if q == p {
-            if opposite {
-                return Step::Infeasible(*it, *it); // a point of both sets
-            }
-            continue;
-        }
         if let Some((line, b)) = best {
             if it.enc == b.enc {
                 continue; // the bound itself: on its line, and an exact zero is slow
             }
+            // The line passes through p: a copy of p is on it, not a violator, and
+            // is compared with p only there (the decided calls pay no comparison).
             let (wrong, on) = violates(k, &line, q, q_in_b);
             if !wrong {
-                if on && opposite && partner.is_none() && (b.enc & B_BIT != 0) == p_in_b {
-                    partner = Some(*it);
+                if on {
+                    if q == p {
+                        if opposite {
+                            return Step::Infeasible(*it, *it); // a point of both sets
+                        }
+                    } else if opposite && partner.is_none() && (b.enc & B_BIT != 0) == p_in_b {
+                        partner = Some(*it);
+                    }
                 }
                 continue;
             }
+        } else if q == p {
+            if opposite {
+                return Step::Infeasible(*it, *it); // a point of both sets
+            }
+            continue;
         }
         match bound(k, p, q, q_in_b, a0, b0) {
             Bound::Upper(from, to) => {
@@ -880,9 +951,11 @@ fn step<K: Kernel>(
     for it in &earlier[..recheck] {
         let q = it.p;
         let q_in_b = it.enc & B_BIT != 0;
-        if q == p || it.enc == b.enc {
-            continue; // of p's set (one of the other set returned above), or the bound
+        if it.enc == b.enc {
+            continue; // the bound
         }
+        // A copy of p is on the line (of p's set: one of the other set returned
+        // above), so it neither violates nor becomes the partner.
         let (wrong, on) = violates(k, &line, q, q_in_b);
         if !wrong {
             if on && !b_opposite && partner.is_none() && q_in_b != p_in_b {
