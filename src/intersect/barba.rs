@@ -841,9 +841,10 @@ fn meet_certificate<K: Kernel>(k: K, pv: &[Point], qv: &[Point], exit: Exit) -> 
 /// T_P meets the hull of the explicit Q': a vertex of T_P in it (a vertex of P in Q), a
 /// vertex of it in T_P (a vertex of Q in P), or else an edge of T_P (a chord of P)
 /// crossing one of its edges (an edge of Q, or its closing chord), resolved by
-/// [`resolve_chords`] with one binary search within P'. All three questions are read
-/// off one table of the orientations of T_P's vertices against Q''s edges and of Q''s
-/// vertices against T_P's edges (at most 36 predicates).
+/// [`resolve_chords`] with one binary search within P'. The vertex tests stop at the
+/// first edge a vertex is strictly outside of; only the crossing reads the full table
+/// of the orientations of T_P's vertices against Q''s edges and of Q''s vertices
+/// against T_P's edges (at most 36 predicates).
 fn small_witness<K: Kernel>(
     k: K,
     pv: &[Point],
@@ -873,29 +874,32 @@ fn small_witness<K: Kernel>(
         let (a, b) = pr.chord(a);
         return resolve_chords(k, pv, (t[a], t[b]), qv, (qi[0], qi[1]));
     }
+    // A vertex of either inside the other, each test stopping at the first edge it is
+    // strictly outside of.
+    if let Some(a) = (0..3).find(|&a| (0..len).all(|e| k.orient(qp[e], qp[(e + 1) % len], tp[a]) != Cw)) {
+        return Some(Certificate::VertexInside {
+            of: Which::P,
+            point: tp[a],
+        });
+    }
+    if let Some(j) = (0..len).find(|&j| (0..3).all(|a| k.orient(tp[a], tp[(a + 1) % 3], qp[j]) != Cw)) {
+        return Some(Certificate::VertexInside {
+            of: Which::Q,
+            point: qp[j],
+        });
+    }
+    // The full tables, only for the crossing.
     let mut t_side = [[Collinear; SMALL_Q]; 3];
     for (a, row) in t_side.iter_mut().enumerate() {
         for (e, o) in row.iter_mut().enumerate().take(len) {
             *o = k.orient(qp[e], qp[(e + 1) % len], tp[a]);
         }
     }
-    if let Some(a) = (0..3).find(|&a| t_side[a][..len].iter().all(|&o| o != Cw)) {
-        return Some(Certificate::VertexInside {
-            of: Which::P,
-            point: tp[a],
-        });
-    }
     let mut q_side = [[Collinear; 3]; SMALL_Q];
     for (j, row) in q_side.iter_mut().enumerate().take(len) {
         for (a, o) in row.iter_mut().enumerate() {
             *o = k.orient(tp[a], tp[(a + 1) % 3], qp[j]);
         }
-    }
-    if let Some(j) = (0..len).find(|&j| q_side[j].iter().all(|&o| o != Cw)) {
-        return Some(Certificate::VertexInside {
-            of: Which::Q,
-            point: qp[j],
-        });
     }
     // No vertex of either in the other, yet they meet: some edge of T_P crosses some
     // edge of Q' properly. Edges of Q come before Q''s closing chord (one search less).

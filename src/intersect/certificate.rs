@@ -643,7 +643,14 @@ pub(crate) fn same_direction<K: Kernel>(k: K, a: (Point, Point), b: (Point, Poin
 /// with turns measured in [0, 2π).
 #[inline]
 pub(crate) fn turn_gt<K: Kernel>(k: K, base: (Point, Point), a: (Point, Point), c: (Point, Point)) -> bool {
-    let class = |d: (Point, Point)| match k.cross(base.0, base.1, d.0, d.1) {
+    turn_gt_classed(k, base, (a, turn_class(k, base, a)), c)
+}
+
+/// The quadrant of direction `d`'s turn from `base`: 0 (none), 1 (in (0, π)), 2 (π) or
+/// 3 (in (π, 2π)).
+#[inline]
+fn turn_class<K: Kernel>(k: K, base: (Point, Point), d: (Point, Point)) -> u8 {
+    match k.cross(base.0, base.1, d.0, d.1) {
         Ccw => 1,
         Cw => 3,
         Collinear => {
@@ -653,8 +660,18 @@ pub(crate) fn turn_gt<K: Kernel>(k: K, base: (Point, Point), a: (Point, Point), 
                 2
             }
         }
-    };
-    let (ca, cc) = (class(a), class(c));
+    }
+}
+
+/// [`turn_gt`] with `a`'s [`turn_class`] computed once by the caller.
+#[inline]
+fn turn_gt_classed<K: Kernel>(
+    k: K,
+    base: (Point, Point),
+    (a, ca): ((Point, Point), u8),
+    c: (Point, Point),
+) -> bool {
+    let cc = turn_class(k, base, c);
     if ca != cc {
         ca > cc
     } else {
@@ -672,8 +689,9 @@ pub(crate) fn extreme_left<K: Kernel>(k: K, v: &[Point], (s, e): (Point, Point))
     let n = v.len();
     let base = (v[0], v[1]);
     let target = (e, s);
+    let target = (target, turn_class(k, base, target));
     // First index i in 0..n with turn(edge i) ≥ turn(target); n if none.
-    let reached = |i: usize| !turn_gt(k, base, target, (v[i], v[(i + 1) % n]));
+    let reached = |i: usize| !turn_gt_classed(k, base, target, (v[i], v[if i + 1 == n { 0 } else { i + 1 }]));
     let (mut lo, mut hi) = (0, n);
     while lo < hi {
         let mid = lo + (hi - lo) / 2;
@@ -718,6 +736,8 @@ enum Reduced {
 /// crosses the line st exactly once (its ends are strictly on opposite sides), at a point
 /// Y of some edge. On the line, the segment [X, Y] lies in the polygon. If the segment
 /// st does not reach Y, its endpoint on the chain's side lies strictly between X and Y.
+/// That endpoint is first tested against the triangle of the chord and the chain's
+/// middle vertex (two orientations): inside it, it is inside the polygon.
 fn reduce_chord<K: Kernel>(k: K, av: &[Point], i: usize, j: usize, s: Point, t: Point) -> Reduced {
     let n = av.len();
     let (a, b) = (av[i], av[j]);
@@ -728,12 +748,20 @@ fn reduce_chord<K: Kernel>(k: K, av: &[Point], i: usize, j: usize, s: Point, t: 
     } else {
         return Reduced::Fail;
     };
-    let sigma = k.orient(s, t, a);
     let len = if j >= i { j - i } else { j + n - i };
-    let side = |off: usize| {
+    let at = |off: usize| {
         let idx = i + off;
-        k.orient(s, t, av[if idx >= n { idx - n } else { idx }])
+        av[if idx >= n { idx - n } else { idx }]
     };
+    // The triangle of the chord and the chain's middle vertex lies in the polygon, and
+    // `near` is strictly on its side of the chord: two orientations often show it
+    // inside (a short segment crossing a long chord), without the search.
+    let m = at(len / 2);
+    if len >= 2 && k.orient(a, m, near) != Cw && k.orient(m, b, near) != Cw {
+        return Reduced::Inside(near);
+    }
+    let sigma = k.orient(s, t, a);
+    let side = |off: usize| k.orient(s, t, at(off));
     // side(lo) == sigma, side(hi) != sigma.
     let (mut lo, mut hi) = (0, len);
     while hi - lo > 1 {
