@@ -107,10 +107,10 @@ pub(crate) fn separating_certificate<K: Kernel, P: Probe>(
 fn separating_edge<K: Kernel, P: Probe>(k: K, av: &[Point], bv: &[Point], probe: &mut P) -> Option<usize> {
     // The walk's cross products are of two edges, short next to the polygons' boxes
     // when the polygons have many vertices (see `Kernel::cross_of_short_edges`): under
-    // the exact kernel's semi-static bound 333,000 of them per query went out of line
-    // on 2^18-gon ellipses (1.96× the fast kernel's instructions, 1.37× with
+    // the exact kernel's semi-static bound about 333,000 of them per query went out of
+    // line on 2^18-gon ellipses (1.83× the fast kernel's instructions; 1.40× with
     // `ShortEdges`), while at 2^10 the bound decides them and the inline filter would
-    // only cost the loop (1.13× against 1.21×). Both walks give the same answer.
+    // only cost the loop (1.20× against 1.21×). Both walks give the same answer.
     const SHORT_EDGES_FROM: usize = 1 << 15;
     if av.len().max(bv.len()) >= SHORT_EDGES_FROM {
         walk(ShortEdges(k), av, bv, probe)
