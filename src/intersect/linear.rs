@@ -27,7 +27,7 @@
 //! advance is capped at m steps, so the test always terminates.
 
 use super::{ArrayIntersection, Certificate, Derivation, Probe, Which};
-use crate::kernel::{Kernel, Orientation, Point, segments_intersect};
+use crate::kernel::{Kernel, Orientation, Point, ShortEdges, segments_intersect};
 use crate::polygon::ConvexPolygon;
 
 /// The O(n + m) separating-edge test with rotating pointers; see the module docs.
@@ -105,6 +105,21 @@ pub(crate) fn separating_certificate<K: Kernel, P: Probe>(
 
 /// The first edge of `av` that has every vertex of `bv` strictly on its outer (right) side.
 fn separating_edge<K: Kernel, P: Probe>(k: K, av: &[Point], bv: &[Point], probe: &mut P) -> Option<usize> {
+    // The walk's cross products are of two edges, short next to the polygons' boxes
+    // when the polygons have many vertices (see `Kernel::cross_of_short_edges`): under
+    // the exact kernel's semi-static bound about 333,000 of them per query went out of
+    // line on 2^18-gon ellipses (1.83× the fast kernel's instructions; 1.40× with
+    // `ShortEdges`), while at 2^10 the bound decides them and the inline filter would
+    // only cost the loop (1.20× against 1.21×). Both walks give the same answer.
+    const SHORT_EDGES_FROM: usize = 1 << 15;
+    if av.len().max(bv.len()) >= SHORT_EDGES_FROM {
+        walk(ShortEdges(k), av, bv, probe)
+    } else {
+        walk(k, av, bv, probe)
+    }
+}
+
+fn walk<K: Kernel, P: Probe>(k: K, av: &[Point], bv: &[Point], probe: &mut P) -> Option<usize> {
     let (n, m) = (av.len(), bv.len());
     // Deepest vertex of b for edge 0: w is deeper than v iff (a1 − a0) × (w − v) > 0.
     let mut j = 0;
