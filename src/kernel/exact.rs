@@ -57,12 +57,14 @@
 //!
 //! # Cost
 //! Measured in docs/results.md ("The exact kernel's overhead", "At extreme scales"),
-//! in instructions (callgrind) and time: with the semi-static filter the O(log n)
-//! algorithms spend 1.11–1.19× the fast kernel's instructions at n = 2^10 and 2^14
-//! and 1.19–1.24× at 2^18, where more calls are nearly degenerate relative to the
-//! polygons' size and go on to the static filter (before the semi-static filter:
-//! 1.3–1.6×). Validation plus the crossings sweep at 2^±600 and 2^1016 cost 1.38–1.46×
-//! the instructions of the same input at scale 1 (before the fixed rescaling: 1.65×).
+//! in instructions (callgrind) and time. With the semi-static filter, and the static
+//! filter inline where the algorithms cross short edges
+//! ([`Kernel::cross_of_short_edges`]), exact/fast instructions at n = 2^10 / 2^14 /
+//! 2^18: Barba 1.11 / 1.14 / 1.13, Dobkin 1.11 / 1.11 / 1.12, Linear 1.15 / 1.15 /
+//! 1.40, Chazelle–Dobkin 1.19 / 1.17 / 1.23 (before the semi-static filter:
+//! 1.3–1.6×). Validation plus the crossings sweep at 2^±600 and 2^1016 cost
+//! 1.38–1.46× the instructions of the same input at scale 1 (before the fixed
+//! rescaling: 1.65×).
 //! Predicates that mix magnitudes more than 2^1022 apart within one call fall to big
 //! integers when nearly degenerate.
 
