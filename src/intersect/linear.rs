@@ -109,8 +109,9 @@ fn separating_edge<K: Kernel, P: Probe>(k: K, av: &[Point], bv: &[Point], probe:
     // when the polygons have many vertices (see `Kernel::cross_of_short_edges`): under
     // the exact kernel's semi-static bound about 333,000 of them per query went out of
     // line on 2^18-gon ellipses (1.83× the fast kernel's instructions; 1.40× with
-    // `ShortEdges`), while at 2^10 the bound decides them and the inline filter would
-    // only cost the loop (1.20× against 1.21×). Both walks give the same answer.
+    // `ShortEdges`), while at 2^10 and 2^14 the bound decides them and the inline
+    // filter would only lengthen the loop (1.145× with the plain kernel; docs/results.md,
+    // "The exact kernel's overhead"). Both walks give the same answer.
     const SHORT_EDGES_FROM: usize = 1 << 15;
     if av.len().max(bv.len()) >= SHORT_EDGES_FROM {
         walk(ShortEdges(k), av, bv, probe)
@@ -119,6 +120,7 @@ fn separating_edge<K: Kernel, P: Probe>(k: K, av: &[Point], bv: &[Point], probe:
     }
 }
 
+/// [`separating_edge`]'s rotating-pointer walk under the kernel it is given.
 fn walk<K: Kernel, P: Probe>(k: K, av: &[Point], bv: &[Point], probe: &mut P) -> Option<usize> {
     let (n, m) = (av.len(), bv.len());
     // Deepest vertex of b for edge 0: w is deeper than v iff (a1 − a0) × (w − v) > 0.
