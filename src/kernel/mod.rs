@@ -266,7 +266,7 @@ pub trait Kernel: Copy + Clone + Default + fmt::Debug + Send + Sync + 'static {
 
     /// [`cross`](Kernel::cross) for call sites whose directions are often short next to
     /// the boxes of a [`within`](Kernel::within) kernel: the same answer, possibly
-    /// decided differently. [`ExactWithin`](crate::ExactWithin)'s bound is scaled to the
+    /// decided differently. [`ExactWithin`]'s bound is scaled to the
     /// boxes, so it seldom decides the cross product of two short edges of a large
     /// polygon (Dobkin's and Barba's pruning tests at large n); it overrides this to try
     /// [`Exact`]'s static filter inline before going out of line, which would cost every
