@@ -6,7 +6,10 @@
 //!    one error bound per query from the boxes' size, so a call is certified by
 //!    comparing its computed value with ±bound, the comparisons the fast kernel makes
 //!    against zero. Calls it cannot decide (nearly degenerate relative to the boxes:
-//!    short edges of large polygons, coincident points) go on to layer 1.
+//!    short edges of large polygons, coincident points) go on to layer 1. A caller
+//!    that knows every difference to be at most some `w` (the cross product of two
+//!    edges, `w` the longest edge's [`ConvexPolygon::edge_extent`](crate::ConvexPolygon::edge_extent))
+//!    may ask [`Kernel::within_differences`] for the same bound scaled to `w`.
 //! 1. **Static filter** (inline). The predicate is evaluated in `f64` together with a
 //!    bound on its rounding error; when the result is farther from zero than the
 //!    bound, its sign is the exact sign. `orient`, `cross` and `dot` (two products
@@ -60,8 +63,8 @@
 //! in instructions (callgrind) and time. With the semi-static filter, and the static
 //! filter inline where the algorithms cross short edges
 //! ([`Kernel::cross_of_short_edges`]), exact/fast instructions at n = 2^10 / 2^14 /
-//! 2^18: Barba 1.11 / 1.14 / 1.13, Dobkin 1.11 / 1.11 / 1.12, Linear 1.15 / 1.15 /
-//! 1.40, Chazelle–Dobkin 1.19 / 1.17 / 1.23 (before the semi-static filter:
+//! 2^18: Barba 1.11 / 1.14 / 1.13, Dobkin 1.11 / 1.11 / 1.12, Linear 1.13 / 1.13 /
+//! 1.13 (its walk under the edges' bound), Chazelle–Dobkin 1.19 / 1.17 / 1.23 (before the semi-static filter:
 //! 1.3–1.6×). Validation plus the crossings sweep at 2^±600 and 2^1016 cost
 //! 1.38–1.46× the instructions of the same input at scale 1 (before the fixed
 //! rescaling: 1.65×).
