@@ -64,8 +64,8 @@
 //! filter inline where the algorithms cross short edges
 //! ([`Kernel::cross_of_short_edges`]), exact/fast instructions at n = 2^10 / 2^14 /
 //! 2^18: Barba 1.11 / 1.14 / 1.13, Dobkin 1.11 / 1.11 / 1.12, Linear 1.13 / 1.13 /
-//! 1.13 (its walk under the edges' bound), Chazelle–Dobkin 1.19 / 1.17 / 1.23 (before the semi-static filter:
-//! 1.3–1.6×). Validation plus the crossings sweep at 2^±600 and 2^1016 cost
+//! 1.13 (its walk under the edges' bound), Chazelle–Dobkin 1.19 / 1.17 / 1.23
+//! (before the semi-static filter: 1.3–1.6×). Validation plus the crossings sweep at 2^±600 and 2^1016 cost
 //! 1.38–1.46× the instructions of the same input at scale 1 (before the fixed
 //! rescaling: 1.65×).
 //! Predicates that mix magnitudes more than 2^1022 apart within one call fall to big
@@ -254,7 +254,7 @@ impl ExactWithin {
         };
         let (wx, wy) = (side(lo0.x, hi0.x, lo1.x, hi1.x), side(lo0.y, hi0.y, lo1.y, hi1.y));
         let w = if wx > wy || wx.is_nan() { wx } else { wy };
-        ExactWithin::for_differences(w)
+        ExactWithin::from_side(w)
     }
 
     /// The kernel for calls whose coordinate differences, as computed in `f64`, are
@@ -282,13 +282,19 @@ impl ExactWithin {
     /// ```
     #[inline]
     pub fn for_differences(w: f64) -> ExactWithin {
+        // A negative `w` promises nothing about magnitudes: NaN fails both range tests.
+        ExactWithin::from_side(if w >= 0.0 { w } else { f64::NAN })
+    }
+
+    /// The bounds for differences at most `|w|` (NaN or infinite: `+∞`).
+    #[inline(always)]
+    fn from_side(w: f64) -> ExactWithin {
         const TWO_MAX: f64 = f64::from_bits((1023 + 1020) << 52); // 2^1020
         const FOUR_MIN: f64 = f64::from_bits((1023 - 400) << 52); // 2^-400
         const FOUR_MAX: f64 = f64::from_bits((1023 + 250) << 52); // 2^250
         const C2: f64 = 2.0 * ORIENT_ERR * (1.0 + 1.0 / (1u64 << 30) as f64);
         const C4: f64 = 96.0 * (f64::EPSILON / 2.0);
-        // A negative `w` promises nothing about magnitudes: NaN fails both range tests.
-        let p = if w >= 0.0 { w * w } else { f64::NAN };
+        let p = w * w;
         // `p <= MAX` is false for NaN and infinity.
         let two = if p <= TWO_MAX {
             C2 * p + 2.0 * f64::MIN_POSITIVE
