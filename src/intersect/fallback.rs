@@ -120,7 +120,7 @@ pub fn proven_linked(p: &LinkedPolygon, q: &LinkedPolygon, certificate: Certific
 }
 
 fn exact_certificate_on(pv: &[Point], qv: &[Point]) -> Certificate {
-    if let Some(c) = linear::separating_certificate(Exact, pv, qv, &mut ()) {
+    if let Some(c) = linear::separating_certificate(Exact, Exact, pv, qv, &mut ()) {
         return c;
     }
     barba::meeting_certificate(Exact, pv, qv).unwrap_or_else(|| brute_force_witness(pv, qv))
@@ -159,7 +159,7 @@ fn brute_force_witness(pv: &[Point], qv: &[Point]) -> Certificate {
         }
     }
     // No contact at all: the pair is disjoint after all, and the reference's edge exists.
-    linear::separating_certificate(k, pv, qv, &mut ()).unwrap_or(Certificate::VertexInside {
+    linear::separating_certificate(k, k, pv, qv, &mut ()).unwrap_or(Certificate::VertexInside {
         of: Which::P,
         point: pv[0],
     })

@@ -23,11 +23,19 @@
 //!
 //! # Precision
 //! Decided by `orient` and `cross` on input points only: exact under [`Exact`](crate::Exact).
+//! The exact kernel answers the walk's `cross`, always of an edge of each polygon, under
+//! [`Kernel::within_differences`] of the longer [`ConvexPolygon::edge_extent`]: a
+//! semi-static error bound scaled to the longest edge, which decides the cross product
+//! of two short, nearly parallel edges where the bound scaled to the boxes (used for
+//! everything else) does not. With it the exact kernel costs 1.134 / 1.129 / 1.126×
+//! the fast one's instructions at n = 2^10 / 2^14 / 2^18 on random rotated ellipses
+//! (1.145 / 1.146 / 1.396 with the boxes' bound and the static filter inline;
+//! docs/results.md, "Chazelle–Dobkin and Linear, profiled again").
 //! Under an inconsistent kernel ([`Fast`](crate::Fast) near degeneracies) each pointer
 //! advance is capped at m steps, so the test always terminates.
 
 use super::{ArrayIntersection, Certificate, Derivation, Probe, Which};
-use crate::kernel::{Kernel, Orientation, Point, ShortEdges, segments_intersect};
+use crate::kernel::{Kernel, Orientation, Point, segments_intersect};
 use crate::polygon::ConvexPolygon;
 
 /// The O(n + m) separating-edge test with rotating pointers; see the module docs.
@@ -54,9 +62,10 @@ impl ArrayIntersection for Linear {
         q: &ConvexPolygon,
         probe: &mut P,
     ) -> bool {
-        let k = k.within([p.bounding_box(), q.bounding_box()]);
+        let (k, edges) = kernels(k, p, q);
         let (pv, qv) = (p.vertices(), q.vertices());
-        separating_edge(k, pv, qv, probe).is_none() && separating_edge(k, qv, pv, probe).is_none()
+        separating_edge(k, edges, pv, qv, probe).is_none()
+            && separating_edge(k, edges, qv, pv, probe).is_none()
     }
 
     /// Disjoint: the separating edge the sweep stopped at. Intersecting: the sweep only
@@ -69,23 +78,38 @@ impl ArrayIntersection for Linear {
         q: &ConvexPolygon,
         probe: &mut P,
     ) -> Derivation {
-        let k = k.within([p.bounding_box(), q.bounding_box()]);
-        match separating_certificate(k, p.vertices(), q.vertices(), probe) {
+        let (k, edges) = kernels(k, p, q);
+        match separating_certificate(k, edges, p.vertices(), q.vertices(), probe) {
             Some(c) => Derivation::Certified(c),
             None => Derivation::Answer(true),
         }
     }
 }
 
+/// The query's kernels: `k` within the polygons' boxes, and `k` within their longest
+/// edges' differences ([`Kernel::within_differences`]) for the walk's cross products,
+/// which are all of an edge of one polygon and an edge of the other.
+#[inline]
+fn kernels<K: Kernel>(k: K, p: &ConvexPolygon, q: &ConvexPolygon) -> (K::Within, K::Within) {
+    let w = p.edge_extent().max(q.edge_extent());
+    (
+        k.within([p.bounding_box(), q.bounding_box()]),
+        k.within_differences(w),
+    )
+}
+
 /// The certificate of a separating edge of `pv` (then of `qv`), if the sweep finds one.
+/// `edges` answers the cross products of an edge of `pv` and an edge of `qv` (`k`
+/// itself will do).
 pub(crate) fn separating_certificate<K: Kernel, P: Probe>(
     k: K,
+    edges: K,
     pv: &[Point],
     qv: &[Point],
     probe: &mut P,
 ) -> Option<Certificate> {
     let edge = |v: &[Point], e: usize| (v[e], v[(e + 1) % v.len()]);
-    if let Some(e) = separating_edge(k, pv, qv, probe) {
+    if let Some(e) = separating_edge(k, edges, pv, qv, probe) {
         let (from, to) = edge(pv, e);
         return Some(Certificate::Separated {
             of: Which::P,
@@ -93,7 +117,7 @@ pub(crate) fn separating_certificate<K: Kernel, P: Probe>(
             to,
         });
     }
-    separating_edge(k, qv, pv, probe).map(|e| {
+    separating_edge(k, edges, qv, pv, probe).map(|e| {
         let (from, to) = edge(qv, e);
         Certificate::Separated {
             of: Which::Q,
@@ -103,27 +127,27 @@ pub(crate) fn separating_certificate<K: Kernel, P: Probe>(
     })
 }
 
-/// The first edge of `av` that has every vertex of `bv` strictly on its outer (right) side.
-fn separating_edge<K: Kernel, P: Probe>(k: K, av: &[Point], bv: &[Point], probe: &mut P) -> Option<usize> {
-    // The walk's cross products are of two edges, short next to the polygons' boxes
-    // when the polygons have many vertices (see `Kernel::cross_of_short_edges`): under
-    // the exact kernel's semi-static bound about 333,000 of them per query went out of
-    // line on 2^18-gon ellipses (1.83× the fast kernel's instructions; 1.40× with
-    // `ShortEdges`), while at 2^10 and 2^14 the bound decides them and the inline
-    // filter would only lengthen the loop (1.145× with the plain kernel; docs/results.md,
-    // "The exact kernel's overhead"). Both walks give the same answer.
-    const SHORT_EDGES_FROM: usize = 1 << 15;
-    if av.len().max(bv.len()) >= SHORT_EDGES_FROM {
-        walk(ShortEdges(k), av, bv, probe)
-    } else {
-        walk(k, av, bv, probe)
-    }
-}
-
-/// [`separating_edge`]'s rotating-pointer walk under the kernel it is given.
-fn walk<K: Kernel, P: Probe>(k: K, av: &[Point], bv: &[Point], probe: &mut P) -> Option<usize> {
+/// The first edge of `av` that has every vertex of `bv` strictly on its outer (right) side,
+/// by a rotating-pointer walk. `edges` answers the walk's cross products, each of an
+/// edge of `av` and an edge of `bv`; `k` everything else.
+///
+/// Under the exact kernel `edges` is [`Kernel::within_differences`] of the longest
+/// edge: the walk stops where the two edges turn past each other, so its cross products
+/// are of two short, nearly parallel edges, whose value a bound scaled to the boxes
+/// (`k`'s) seldom exceeds once the polygons have many vertices (about 333,000 calls
+/// per query out of line on 2^18-gon ellipses, 1.83× the fast kernel's instructions;
+/// docs/results.md, "Chazelle–Dobkin and Linear, profiled again"). Scaled to the edges
+/// it decides them with the two comparisons the fast kernel makes against zero.
+fn separating_edge<K: Kernel, P: Probe>(
+    k: K,
+    edges: K,
+    av: &[Point],
+    bv: &[Point],
+    probe: &mut P,
+) -> Option<usize> {
     let (n, m) = (av.len(), bv.len());
     // Deepest vertex of b for edge 0: w is deeper than v iff (a1 − a0) × (w − v) > 0.
+    // Not two edges (v, w are any two vertices): the boxes' kernel.
     let mut j = 0;
     for i in 1..m {
         if k.cross(av[0], av[1], bv[j], bv[i]) == Orientation::Ccw {
@@ -133,7 +157,7 @@ fn walk<K: Kernel, P: Probe>(k: K, av: &[Point], bv: &[Point], probe: &mut P) ->
     for e in 0..n {
         let (s, t) = (av[e], av[(e + 1) % n]);
         let mut steps = 0;
-        while steps < m && k.cross(s, t, bv[j], bv[(j + 1) % m]) == Orientation::Ccw {
+        while steps < m && edges.cross(s, t, bv[j], bv[(j + 1) % m]) == Orientation::Ccw {
             j = (j + 1) % m;
             steps += 1;
         }

@@ -6,7 +6,10 @@
 //!    one error bound per query from the boxes' size, so a call is certified by
 //!    comparing its computed value with ±bound, the comparisons the fast kernel makes
 //!    against zero. Calls it cannot decide (nearly degenerate relative to the boxes:
-//!    short edges of large polygons, coincident points) go on to layer 1.
+//!    short edges of large polygons, coincident points) go on to layer 1. A caller
+//!    that knows every difference to be at most some `w` (the cross product of two
+//!    edges, `w` the longest edge's [`ConvexPolygon::edge_extent`](crate::ConvexPolygon::edge_extent))
+//!    may ask [`Kernel::within_differences`] for the same bound scaled to `w`.
 //! 1. **Static filter** (inline). The predicate is evaluated in `f64` together with a
 //!    bound on its rounding error; when the result is farther from zero than the
 //!    bound, its sign is the exact sign. `orient`, `cross` and `dot` (two products
@@ -60,9 +63,9 @@
 //! in instructions (callgrind) and time. With the semi-static filter, and the static
 //! filter inline where the algorithms cross short edges
 //! ([`Kernel::cross_of_short_edges`]), exact/fast instructions at n = 2^10 / 2^14 /
-//! 2^18: Barba 1.11 / 1.14 / 1.13, Dobkin 1.11 / 1.11 / 1.12, Linear 1.15 / 1.15 /
-//! 1.40, Chazelle–Dobkin 1.19 / 1.17 / 1.23 (before the semi-static filter:
-//! 1.3–1.6×). Validation plus the crossings sweep at 2^±600 and 2^1016 cost
+//! 2^18: Barba 1.11 / 1.14 / 1.13, Dobkin 1.11 / 1.11 / 1.12, Linear 1.13 / 1.13 /
+//! 1.13 (its walk under the edges' bound), Chazelle–Dobkin 1.19 / 1.17 / 1.23
+//! (before the semi-static filter: 1.3–1.6×). Validation plus the crossings sweep at 2^±600 and 2^1016 cost
 //! 1.38–1.46× the instructions of the same input at scale 1 (before the fixed
 //! rescaling: 1.65×).
 //! Predicates that mix magnitudes more than 2^1022 apart within one call fall to big
@@ -92,6 +95,11 @@ impl Kernel for Exact {
     #[inline]
     fn within(self, boxes: [(Point, Point); 2]) -> ExactWithin {
         ExactWithin::new(boxes)
+    }
+
+    #[inline]
+    fn within_differences(self, w: f64) -> ExactWithin {
+        ExactWithin::for_differences(w)
     }
 
     /// The static filter, written so that the answer is the sign of the computed
@@ -172,7 +180,10 @@ impl Kernel for Exact {
 /// Let `w` be the larger side of the union of the boxes, computed in `f64`, and
 /// `P = w·w`. Every coordinate difference the predicates compute is at most `w` in
 /// magnitude (rounding is monotonic), so every product of two differences is at most
-/// `P`. The filter's two bounds, computed once:
+/// `P` (again by monotonicity: |fl(d·d′)| ≤ fl(w·w)). [`ExactWithin::for_differences`]
+/// takes `w` from a caller that knows every computed difference to be at most `w`
+/// (the edges of polygons, [`Kernel::within_differences`]); nothing below uses more.
+/// The filter's two bounds, computed once:
 ///
 /// * two products (`orient`, `cross`, `dot`): Shewchuk's error bound ε₀·(|l| + |r|)
 ///   with |l| + |r| ≤ 2P, so `B₂ = 2ε₀(1 + 2^-30)·P + 2·f64::MIN_POSITIVE` (the
@@ -231,11 +242,6 @@ impl ExactWithin {
     /// ```
     #[inline]
     pub fn new([(lo0, hi0), (lo1, hi1)]: [(Point, Point); 2]) -> ExactWithin {
-        const TWO_MAX: f64 = f64::from_bits((1023 + 1020) << 52); // 2^1020
-        const FOUR_MIN: f64 = f64::from_bits((1023 - 400) << 52); // 2^-400
-        const FOUR_MAX: f64 = f64::from_bits((1023 + 250) << 52); // 2^250
-        const C2: f64 = 2.0 * ORIENT_ERR * (1.0 + 1.0 / (1u64 << 30) as f64);
-        const C4: f64 = 96.0 * (f64::EPSILON / 2.0);
         // Both sides from both boxes; a NaN or infinite corner makes a side NaN or
         // infinite (a corner is never dropped: no `min`/`max` that ignores NaN), and
         // then `p` fails both range tests.
@@ -248,6 +254,46 @@ impl ExactWithin {
         };
         let (wx, wy) = (side(lo0.x, hi0.x, lo1.x, hi1.x), side(lo0.y, hi0.y, lo1.y, hi1.y));
         let w = if wx > wy || wx.is_nan() { wx } else { wy };
+        ExactWithin::from_side(w)
+    }
+
+    /// The kernel for calls whose coordinate differences, as computed in `f64`, are
+    /// all at most `w` in magnitude ([`Kernel::within_differences`]): the bounds of
+    /// [`new`](ExactWithin::new) with `w` given instead of taken from boxes. Their
+    /// derivation (on the type) uses only that every computed difference is at most
+    /// `w`, which [`new`](ExactWithin::new) proves for points in its boxes and the
+    /// caller promises here. A `w` that is negative, NaN or infinite, or too large for
+    /// a bound's range, gives that bound `+∞`.
+    ///
+    /// The cross product of two edges of polygons whose
+    /// [`edge_extent`](crate::ConvexPolygon::edge_extent) is at most `w` computes the
+    /// edges' own differences, each at most `w`: under this kernel it is decided by
+    /// `|l − r| > B₂` with `B₂ ≈ 6.7·10^-16·w²`, where the boxes' bound has the boxes'
+    /// side in place of the (much shorter) longest edge.
+    ///
+    /// ```
+    /// use polysect::{ExactWithin, Kernel, Orientation, Point};
+    /// let k = ExactWithin::for_differences(1.0);
+    /// // Two unit edges, 2^40 apart: the boxes' bound would be 2^80 times larger.
+    /// let (a, b) = (Point::new(0.0, 0.0), Point::new(1.0, 0.0));
+    /// let (c, d) = (Point::new(1e12, 0.0), Point::new(1e12 + 1.0, 1e-9));
+    /// assert_eq!(k.cross(a, b, c, d), Orientation::Ccw);
+    /// assert!(k.two_products_bound() < 1e-15);
+    /// ```
+    #[inline]
+    pub fn for_differences(w: f64) -> ExactWithin {
+        // A negative `w` promises nothing about magnitudes: NaN fails both range tests.
+        ExactWithin::from_side(if w >= 0.0 { w } else { f64::NAN })
+    }
+
+    /// The bounds for differences at most `|w|` (NaN or infinite: `+∞`).
+    #[inline(always)]
+    fn from_side(w: f64) -> ExactWithin {
+        const TWO_MAX: f64 = f64::from_bits((1023 + 1020) << 52); // 2^1020
+        const FOUR_MIN: f64 = f64::from_bits((1023 - 400) << 52); // 2^-400
+        const FOUR_MAX: f64 = f64::from_bits((1023 + 250) << 52); // 2^250
+        const C2: f64 = 2.0 * ORIENT_ERR * (1.0 + 1.0 / (1u64 << 30) as f64);
+        const C4: f64 = 96.0 * (f64::EPSILON / 2.0);
         let p = w * w;
         // `p <= MAX` is false for NaN and infinity.
         let two = if p <= TWO_MAX {
@@ -286,6 +332,11 @@ impl Kernel for ExactWithin {
     #[inline]
     fn within(self, boxes: [(Point, Point); 2]) -> ExactWithin {
         ExactWithin::new(boxes)
+    }
+
+    #[inline]
+    fn within_differences(self, w: f64) -> ExactWithin {
+        ExactWithin::for_differences(w)
     }
 
     #[inline]

@@ -233,6 +233,37 @@ pub trait Kernel: Copy + Clone + Default + fmt::Debug + Send + Sync + 'static {
     /// ```
     fn within(self, boxes: [(Point, Point); 2]) -> Self::Within;
 
+    /// The same predicates for calls whose coordinate differences, as computed in
+    /// `f64`, are all at most `w` in magnitude: for `cross(a, b, c, d)` and
+    /// `dot(a, b, c, d)` the differences of `b − a` and `d − c`, for `orient(a, b, c)`
+    /// those of any two of the points, for [`cross_products_sign`](Kernel::cross_products_sign)
+    /// those of every factor's pairs. The cross product of two edges of polygons whose
+    /// [`ConvexPolygon::edge_extent`](crate::ConvexPolygon::edge_extent) is at most `w`
+    /// is such a call, however far apart the edges lie: [`ExactWithin`]'s semi-static
+    /// bound scaled to `w` decides such calls where a bound scaled to the boxes, much
+    /// larger when the edges are short, would not. A call outside this contract may
+    /// answer wrongly.
+    ///
+    /// The default is [`within`](Kernel::within) of a box of side `w`, which is right
+    /// for kernels whose `within` relies only on the differences of points in the
+    /// boxes being at most the boxes' side (both kernels of this crate; [`Fast`]
+    /// returns itself).
+    ///
+    /// ```
+    /// use polysect::{ConvexPolygon, Exact, Kernel, Orientation};
+    /// let p = ConvexPolygon::new([[0.0, 0.0], [4.0, 0.0], [4.0, 1.0], [0.0, 3.0]])?;
+    /// let k = Exact.within_differences(p.edge_extent());
+    /// let v = p.vertices();
+    /// // Edge 0 against edge 2, both edges of p.
+    /// assert_eq!(k.cross(v[0], v[1], v[2], v[3]), Orientation::Ccw);
+    /// # Ok::<(), polysect::PolygonError>(())
+    /// ```
+    #[inline]
+    fn within_differences(self, w: f64) -> Self::Within {
+        let side = (Point::new(0.0, 0.0), Point::new(w, w));
+        self.within([side, side])
+    }
+
     /// Orientation of the triple (a, b, c): the sign of (b − a) × (c − a).
     fn orient(self, a: Point, b: Point, c: Point) -> Orientation;
 
@@ -422,6 +453,11 @@ impl<K: Kernel> Kernel for ShortEdges<K> {
     }
 
     #[inline]
+    fn within_differences(self, w: f64) -> Self::Within {
+        ShortEdges(self.0.within_differences(w))
+    }
+
+    #[inline]
     fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
         self.0.orient(a, b, c)
     }
@@ -472,6 +508,11 @@ impl Kernel for Fast {
 
     #[inline]
     fn within(self, _boxes: [(Point, Point); 2]) -> Fast {
+        self
+    }
+
+    #[inline]
+    fn within_differences(self, _w: f64) -> Fast {
         self
     }
 

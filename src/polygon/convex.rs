@@ -22,6 +22,8 @@ pub struct ConvexPolygon {
     /// The bounding box `(min, max)`, kept with the vertices so that a query can hand
     /// the exact kernel a per-query error bound in O(1) ([`Kernel::within`]).
     bbox: (Point, Point),
+    /// [`ConvexPolygon::edge_extent`], kept at construction like the box.
+    edge_extent: f64,
 }
 
 impl ConvexPolygon {
@@ -57,10 +59,15 @@ impl ConvexPolygon {
         ConvexPolygon::with_box(vertices)
     }
 
-    /// The polygon on `vertices` with its bounding box computed. O(n).
+    /// The polygon on `vertices` with its bounding box and edge extent computed. O(n).
     fn with_box(vertices: Vec<Point>) -> Self {
         let bbox = box_of(&vertices);
-        ConvexPolygon { vertices, bbox }
+        let edge_extent = edge_extent_of(&vertices);
+        ConvexPolygon {
+            vertices,
+            bbox,
+            edge_extent,
+        }
     }
 
     /// The vertices, counter-clockwise.
@@ -95,6 +102,7 @@ impl ConvexPolygon {
         ConvexPolygon {
             vertices: v,
             bbox: self.bbox,
+            edge_extent: self.edge_extent,
         }
     }
 
@@ -113,19 +121,40 @@ impl ConvexPolygon {
     ///
     /// The box is shifted, not recomputed: rounding to nearest is monotone, so
     /// `round(min xᵢ + dx) = min round(xᵢ + dx)`, and the box's corners are vertex
-    /// coordinates, which the caller has seen stay finite.
+    /// coordinates, which the caller has seen stay finite. The edge extent is computed
+    /// again (rounding changes the edges' differences).
     pub(crate) fn translate_unchecked(&mut self, dx: f64, dy: f64) {
         for p in &mut self.vertices {
             *p = Point::new(p.x + dx, p.y + dy);
         }
         let (lo, hi) = self.bbox;
         self.bbox = (Point::new(lo.x + dx, lo.y + dy), Point::new(hi.x + dx, hi.y + dy));
+        self.edge_extent = edge_extent_of(&self.vertices);
     }
 
     /// Axis-aligned bounding box `(min, max)`. O(1): computed at construction.
     #[inline]
     pub fn bounding_box(&self) -> (Point, Point) {
         self.bbox
+    }
+
+    /// The largest coordinate difference along an edge: the maximum of
+    /// `|fl(vᵢ₊₁.x − vᵢ.x)|` and `|fl(vᵢ₊₁.y − vᵢ.y)|` over the edges (closing edge
+    /// included), each difference computed in `f64` as the predicates compute it.
+    /// The cross product of two edges of polygons whose extents are at most `w` can be
+    /// asked of [`Kernel::within_differences`]`(w)`, whose exact kernel's error bound is
+    /// scaled to `w` instead of the boxes. O(1): computed at construction. Infinite
+    /// when a difference overflows (coordinates beside `±f64::MAX`).
+    ///
+    /// ```
+    /// use polysect::ConvexPolygon;
+    /// let p = ConvexPolygon::new([[0.0, 0.0], [4.0, 0.0], [4.0, 1.0], [0.0, 3.0]])?;
+    /// assert_eq!(p.edge_extent(), 4.0);
+    /// # Ok::<(), polysect::PolygonError>(())
+    /// ```
+    #[inline]
+    pub fn edge_extent(&self) -> f64 {
+        self.edge_extent
     }
 
     /// Checks the invariant exactly: at least three finite vertices, every turn
@@ -184,6 +213,22 @@ pub(crate) fn box_of(vertices: &[Point]) -> (Point, Point) {
         hi.y = if p.y > hi.y { p.y } else { hi.y };
     }
     (lo, hi)
+}
+
+/// [`ConvexPolygon::edge_extent`] of the closed chain `vertices` (0 for fewer than two).
+fn edge_extent_of(vertices: &[Point]) -> f64 {
+    let Some(&last) = vertices.last() else {
+        return 0.0;
+    };
+    let mut prev = last;
+    let mut w = 0.0f64;
+    for &p in vertices {
+        let (dx, dy) = ((p.x - prev.x).abs(), (p.y - prev.y).abs());
+        w = if dx > w { dx } else { w };
+        w = if dy > w { dy } else { w };
+        prev = p;
+    }
+    w
 }
 
 /// Whether direction `d` lies in the upper half-turn [0, π) of angles.

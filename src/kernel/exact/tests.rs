@@ -932,3 +932,154 @@ fn short_edges_cross_at_its_bound() {
     );
     assert!(slow > 1_000, "too few calls left for the slow path: {slow}");
 }
+
+/// [`ExactWithin::for_differences`] ([`Kernel::within_differences`]) on the cross
+/// products of two edges: short, nearly parallel edges (perturbed by up to 60 ulps)
+/// up to 2^40 of their lengths apart, at scales from 2^-1074 to 2^1000 and beside
+/// `f64::MAX`, with `w` the larger of the edges' computed differences (what
+/// [`ConvexPolygon::edge_extent`](crate::ConvexPolygon::edge_extent) gives). The
+/// answer is always the big integers' sign; the bound scaled to the edges decides many
+/// calls, and far more than a bound scaled to the boxes would.
+#[test]
+fn edge_differences_bound_decides_edges() {
+    let mut rng = SmallRng::seed_from_u64(0x0ed9_e005);
+    let scales = [0, 0, -1074, -1000, -600, 250, 600, 1000];
+    let (mut decided, mut boxes_decided, mut undecided) = (0usize, 0usize, 0usize);
+    for i in 0..40_000 {
+        let e = scales[i % scales.len()];
+        let (s1, s2) = (2f64.powi(e / 2), 2f64.powi(e - e / 2));
+        let span = 2f64.powi([0, 10, 20, 40][(i / 8) % 4]);
+        let k = rng.random_range(-60..=60);
+        let dir = Point::new(rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0));
+        let a = Point::new(rng.random_range(-span..span), rng.random_range(-span..span));
+        let b = Point::new(a.x + dir.x, a.y + dir.y);
+        let c = Point::new(rng.random_range(-span..span), rng.random_range(-span..span));
+        let t: f64 = rng.random_range(0.5..2.0);
+        let d = Point::new(c.x + t * dir.x, ulps(c.y + t * dir.y, k));
+        let sc = |p: Point| Point::new(p.x * s1 * s2, p.y * s1 * s2);
+        let [a, b, c, d] = [a, b, c, d].map(sc);
+        if [a, b, c, d].iter().any(|p| !p.is_finite()) {
+            continue;
+        }
+        let w = [b.x - a.x, b.y - a.y, d.x - c.x, d.y - c.y]
+            .into_iter()
+            .fold(0.0f64, |w, x| w.max(x.abs()));
+        let kw = Exact.within_differences(w);
+        assert_eq!(kw, ExactWithin::for_differences(w));
+        let want = sign_slow(&CrossPoly(a, b, c, d));
+        let got = kw.cross(a, b, c, d);
+        assert_eq!(
+            Sign::of(as_value_of(got)),
+            want,
+            "{a:?} {b:?} {c:?} {d:?} w = {w:e}"
+        );
+        // A larger `w` is a promise too, and a weaker one.
+        assert_eq!(ExactWithin::for_differences(2.0 * w).cross(a, b, c, d), got);
+        let (l, r) = cross_products(a, b, c, d);
+        if l - r > kw.two || l - r < kw.neg_two {
+            decided += 1;
+        } else {
+            undecided += 1;
+        }
+        let kb = ExactWithin::new([box_of(&[a, b]), box_of(&[c, d])]);
+        if l - r > kb.two || l - r < kb.neg_two {
+            boxes_decided += 1;
+        }
+    }
+    assert!(decided > 10_000, "the edges' bound decided only {decided}");
+    assert!(undecided > 1_000, "too few calls left undecided: {undecided}");
+    assert!(
+        decided > 2 * boxes_decided,
+        "edges' bound {decided}, boxes' bound {boxes_decided}"
+    );
+    // Beside f64::MAX: edges of length 2^1000 there (w² overflows: infinite bounds),
+    // and an edge whose difference overflows (w infinite).
+    let m = f64::MAX;
+    let h = 2f64.powi(1000);
+    let (a, b) = (Point::new(m - h, m - h), Point::new(m, m - h));
+    let (c, d) = (Point::new(m - h, m), Point::new(m, m.next_down()));
+    let kw = ExactWithin::for_differences(h);
+    assert_eq!(kw.two, f64::INFINITY);
+    let want = sign_slow(&CrossPoly(a, b, c, d));
+    assert_eq!(Sign::of(as_value_of(kw.cross(a, b, c, d))), want);
+    let (e, f) = (Point::new(-m, 0.0), Point::new(m, 1.0));
+    let kw = ExactWithin::for_differences(f.x - e.x);
+    assert_eq!(kw.two, f64::INFINITY);
+    assert_eq!(
+        Sign::of(as_value_of(kw.cross(e, f, a, b))),
+        sign_slow(&CrossPoly(e, f, a, b))
+    );
+    // A promise that cannot hold gives infinite bounds.
+    for w in [-1.0, f64::NAN, f64::INFINITY] {
+        let kw = ExactWithin::for_differences(w);
+        assert_eq!((kw.two, kw.four), (f64::INFINITY, f64::INFINITY), "{w}");
+    }
+}
+
+/// Every pair of edges of two polygons, under [`Kernel::within_differences`] of their
+/// larger [`edge_extent`](crate::ConvexPolygon::edge_extent): the big integers' sign,
+/// at scales from 2^-1074 to 2^1000 (polygons of 96 vertices on an ellipse, 2^20 of
+/// their size apart, so that their edges are short next to their boxes). Where the
+/// edges' products stay normal and finite (scales 2^-300 to 2^480) the bound decides
+/// nearly every call; elsewhere the bound is infinite or its products underflow, and
+/// the exact layers answer.
+#[test]
+fn polygon_edges_cross_under_their_extent() {
+    use crate::ConvexPolygon;
+    let mut rng = SmallRng::seed_from_u64(0x0ed9_e006);
+    let mut decided = 0usize;
+    let mut calls = 0usize;
+    for e in [0, -1074, -1000, -600, -300, 250, 480, 600, 1000] {
+        let in_range = [0, -300, 250, 480].contains(&e);
+        let (s1, s2) = (2f64.powi(e / 2), 2f64.powi(e - e / 2));
+        let poly = |cx: f64, rng: &mut SmallRng| {
+            let (rx, ry): (f64, f64) = (rng.random_range(1.0..4.0), rng.random_range(1.0..4.0));
+            let turn: f64 = rng.random_range(0.0..1.0);
+            let pts: Vec<Point> = (0..96)
+                .map(|i| {
+                    let t = std::f64::consts::TAU * (i as f64 + turn) / 96.0;
+                    let p = Point::new(cx + 2f64.powi(20) * rx * t.cos(), 2f64.powi(20) * ry * t.sin());
+                    Point::new(p.x * s1 * s2, p.y * s1 * s2)
+                })
+                .collect();
+            ConvexPolygon::new(pts)
+        };
+        let (Ok(p), Ok(q)) = (poly(0.0, &mut rng), poly(2f64.powi(22), &mut rng)) else {
+            continue;
+        };
+        let (pv, qv) = (p.vertices(), q.vertices());
+        let next = |v: &[Point], i: usize| v[(i + 1) % v.len()];
+        let largest = |v: &[Point]| {
+            (0..v.len())
+                .map(|i| {
+                    let (a, b) = (v[i], next(v, i));
+                    (b.x - a.x).abs().max((b.y - a.y).abs())
+                })
+                .fold(0.0f64, f64::max)
+        };
+        assert_eq!(p.edge_extent(), largest(pv));
+        assert_eq!(q.edge_extent(), largest(qv));
+        let kw = Exact.within_differences(p.edge_extent().max(q.edge_extent()));
+        for i in 0..pv.len() {
+            for j in 0..qv.len() {
+                let (a, b, c, d) = (pv[i], next(pv, i), qv[j], next(qv, j));
+                let got = kw.cross(a, b, c, d);
+                assert_eq!(
+                    Sign::of(as_value_of(got)),
+                    sign_slow(&CrossPoly(a, b, c, d)),
+                    "2^{e}: {a:?} {b:?} {c:?} {d:?}"
+                );
+                let (l, r) = cross_products(a, b, c, d);
+                if in_range {
+                    decided += usize::from(l - r > kw.two || l - r < kw.neg_two);
+                    calls += 1;
+                }
+            }
+        }
+    }
+    assert_eq!(calls, 4 * 96 * 96, "a polygon was refused");
+    assert!(
+        decided >= calls - calls / 100,
+        "the edges' bound decided {decided} of {calls}"
+    );
+}
