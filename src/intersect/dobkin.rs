@@ -737,11 +737,17 @@ impl<'a> PairSearch<'a> {
         None
     }
 
-    /// The position of vertex `p` in its chain (chains are strictly monotone in y):
-    /// a binary search on heights, for certificates only.
+    /// The position of vertex `p` in its chain (chains are strictly monotone in y), for
+    /// certificates only. A bound of I is an end of its chain's remaining range (a cut
+    /// at a median edge moves the range's end and the bound to the same vertex), so the
+    /// two ends are compared first; a binary search on heights otherwise.
     fn position(&self, b: Bound) -> usize {
         match b.side {
+            Side::Left if self.lp(self.i1) == b.p => self.i1,
+            Side::Left if self.lp(self.i0) == b.p => self.i0,
             Side::Left => first(self.l.len, |i| self.lp(i).y > b.p.y),
+            Side::Right if self.rp(self.j0) == b.p => self.j0,
+            Side::Right if self.rp(self.j1) == b.p => self.j1,
             Side::Right => first(self.r.len, |j| self.rp(j).y < b.p.y),
         }
     }
