@@ -915,22 +915,39 @@ impl<'a> PairSearch<'a> {
             len = 2;
         }
         let (wv, ev) = if t.w.side == Side::Left { (a, b) } else { (b, a) };
+        // The certificate names the left chain's polygon as P.
+        let (e_of, w_of) = if t.w.side == Side::Left {
+            (Which::Q, Which::P)
+        } else {
+            (Which::P, Which::Q)
+        };
+        let edge_of = |of, u: usize, v: usize, poly: &[Point]| Certificate::Separated {
+            of,
+            from: poly[u],
+            to: poly[v],
+        };
+        if len == 2 {
+            // Where g is maximal inside I the other chain's edge there is the separating
+            // edge (the slopes bracket it): try it first; then the faces {w} and e as
+            // `from_faces` would, without e again: the edges next to e against w, w's
+            // edges against e's ends.
+            let (e0, e1) = (edge[0], edge[1]);
+            if separates(k, ev[e0], ev[e1], wv, w) {
+                return Some(edge_of(e_of, e0, e1, ev));
+            }
+            for (u, v) in [(ev.prev(e0), e0), (e1, ev.next(e1))] {
+                if separates(k, ev[u], ev[v], wv, w) {
+                    return Some(edge_of(e_of, u, v, ev));
+                }
+            }
+            for (u, v) in [(wv.prev(w), w), (w, wv.next(w))] {
+                if separates(k, wv[u], wv[v], ev, e0) || separates(k, wv[u], wv[v], ev, e1) {
+                    return Some(edge_of(w_of, u, v, wv));
+                }
+            }
+        }
         let wide_w = [w, wv.prev(w), wv.next(w)];
         let wide_e = [ev.prev(edge[0]), edge[0], edge[len - 1], ev.next(edge[len - 1])];
-        // Where g is maximal inside I the other chain's edge there is the separating
-        // edge (the slopes bracket it): try it first.
-        if len == 2 && separates(k, ev[edge[0]], ev[edge[1]], wv, w) {
-            let of = if t.w.side == Side::Left {
-                Which::Q
-            } else {
-                Which::P
-            };
-            return Some(Certificate::Separated {
-                of,
-                from: ev[edge[0]],
-                to: ev[edge[1]],
-            });
-        }
         let found = |fw: &[usize], fe: &[usize]| {
             if t.w.side == Side::Left {
                 from_faces(k, a, fw, b, fe)
@@ -938,7 +955,12 @@ impl<'a> PairSearch<'a> {
                 from_faces(k, b, fw, a, fe).map(Certificate::swapped)
             }
         };
-        found(&[w], &edge[..len]).or_else(|| found(&wide_w, &wide_e))
+        if len == 1
+            && let Some(c) = found(&[w], &edge[..1])
+        {
+            return Some(c);
+        }
+        found(&wide_w, &wide_e)
     }
 }
 
