@@ -67,8 +67,8 @@
 //!   (one binary search on heights and one `orient`), w is a vertex inside. Otherwise
 //!   that chain's edge g at w's height passes beyond w at a point Z; if Z is in w's
 //!   polygon, it lies in the triangle of w and that polygon's edge r at the same height
-//!   on its other chain (one more binary search), so r and g cross, or an end of g is
-//!   in the triangle, or g crosses a chord from w to an end of r (resolved by one more
+//!   on its other chain (one more binary search), so an end of g is in the triangle,
+//!   or r and g cross, or g crosses a chord from w to an end of r (resolved by one more
 //!   search). Each search's vertex is tried first, then each triangle; where none
 //!   holds (2 of 2,700 queries of the test families) only the answer, completed with
 //!   [`Barba`](super::Barba)'s witness.
@@ -276,8 +276,8 @@ fn vertex_inside<K: Kernel>(
 /// w's side, whose edge g at that height (at position `g` of that chain) passes beyond
 /// w at the point Z. If Z is in X, it lies on the horizontal segment from w to X's
 /// other chain, inside the triangle of w and X's edge r at that height (one binary
-/// search on heights): then r meets g (crossing edges), or an end of g lies in the
-/// triangle (a vertex inside), or g crosses a chord from w to an end of r, resolved
+/// search on heights): then an end of g lies in the triangle (a vertex inside), or r
+/// meets g (crossing edges), or g crosses a chord from w to an end of r, resolved
 /// with [`resolve_chords`]. `None` when Z is not in X (the polygons meet at other
 /// heights).
 fn beside<K: Kernel>(
@@ -313,18 +313,19 @@ fn beside<K: Kernel>(
     if x_poly[iw] != w {
         return None;
     }
-    let found = resolve_chords(k, x_poly, (xi[0], xi[1]), y_poly, (yi[0], yi[1]))
-        .or_else(|| {
-            let tri = [w, x_poly[xi[0]], x_poly[xi[1]]];
-            let o = k.orient(tri[0], tri[1], tri[2]);
-            if o == Orientation::Collinear {
-                return None;
-            }
-            yi.iter()
-                .map(|&i| y_poly[i])
-                .find(|&y| (0..3).all(|a| k.orient(tri[a], tri[(a + 1) % 3], y) != o.reverse()))
-                .map(|point| Certificate::VertexInside { of: Which::Q, point })
-        })
+    let inside = || {
+        let tri = [w, x_poly[xi[0]], x_poly[xi[1]]];
+        let o = k.orient(tri[0], tri[1], tri[2]);
+        if o == Orientation::Collinear {
+            return None;
+        }
+        yi.iter()
+            .map(|&i| y_poly[i])
+            .find(|&y| (0..3).all(|a| k.orient(tri[a], tri[(a + 1) % 3], y) != o.reverse()))
+            .map(|point| Certificate::VertexInside { of: Which::Q, point })
+    };
+    let found = inside()
+        .or_else(|| resolve_chords(k, x_poly, (xi[0], xi[1]), y_poly, (yi[0], yi[1])))
         .or_else(|| {
             xi.iter()
                 .filter(|&&i| i != iw)
