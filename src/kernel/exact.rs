@@ -204,6 +204,11 @@ pub struct ExactWithin {
     /// `−B₂` and `−B₄`, kept so that a call compares without negating.
     neg_two: f64,
     neg_four: f64,
+    /// `48u·P` and `2^-1069·P + 2^-1072`, or `+∞` when not valid: the edge-scaled
+    /// degree-4 bound of [`Kernel::cross_products_sign_of_short_edges`] is
+    /// `edges·(m₀m₁ + m₂m₃) + floor`.
+    four_edges: f64,
+    four_floor: f64,
 }
 
 impl Default for ExactWithin {
@@ -213,6 +218,8 @@ impl Default for ExactWithin {
             four: f64::INFINITY,
             neg_two: f64::NEG_INFINITY,
             neg_four: f64::NEG_INFINITY,
+            four_edges: f64::INFINITY,
+            four_floor: f64::INFINITY,
         }
     }
 }
@@ -236,6 +243,9 @@ impl ExactWithin {
         const FOUR_MAX: f64 = f64::from_bits((1023 + 250) << 52); // 2^250
         const C2: f64 = 2.0 * ORIENT_ERR * (1.0 + 1.0 / (1u64 << 30) as f64);
         const C4: f64 = 96.0 * (f64::EPSILON / 2.0);
+        const C4_EDGES: f64 = 48.0 * (f64::EPSILON / 2.0);
+        const FLOOR: f64 = f64::from_bits((1023 - 1022) << 52) / (1u64 << 47) as f64; // 2^-1069
+        const FLOOR_MIN: f64 = f64::from_bits(1 << 2); // 2^-1072
         // Both sides from both boxes; a NaN or infinite corner makes a side NaN or
         // infinite (a corner is never dropped: no `min`/`max` that ignores NaN), and
         // then `p` fails both range tests.
@@ -260,11 +270,18 @@ impl ExactWithin {
         } else {
             f64::INFINITY
         };
+        let (four_edges, four_floor) = if p <= FOUR_MAX {
+            (C4_EDGES * p, FLOOR * p + FLOOR_MIN)
+        } else {
+            (f64::INFINITY, f64::INFINITY)
+        };
         ExactWithin {
             two,
             four,
             neg_two: -two,
             neg_four: -four,
+            four_edges,
+            four_floor,
         }
     }
 
@@ -391,6 +408,54 @@ impl Kernel for ExactWithin {
             // argument area, written on this path only): passed as an array, the
             // array had to be in memory before the comparison, which cost the
             // algorithms' hot paths sixteen stores per call.
+            let [
+                [a0, b0, c0, d0],
+                [a1, b1, c1, d1],
+                [a2, b2, c2, d2],
+                [a3, b3, c3, d3],
+            ] = factors;
+            cross_products_within_slow(a0, b0, c0, d0, a1, b1, c1, d1, a2, b2, c2, d2, a3, b3, c3, d3)
+        }
+    }
+
+    /// The semi-static test, then a bound scaled to the short directions, inline;
+    /// [`Exact`]'s static filter and what follows it out of line.
+    ///
+    /// With mᵢ = max(|bᵢ.x − aᵢ.x|, |bᵢ.y − aᵢ.y|) (computed differences) and `w` the
+    /// boxes' side, every computed difference of `dᵢ − cᵢ` is at most `w` (see the type's
+    /// docs), so factor i's product magnitude is Pᵢ ≤ 2mᵢw, and the static filter's
+    /// analysis (at `cross_products_filtered`) bounds the rounding error by
+    /// 10.2u·(P₀P₁ + P₂P₃) ≤ 40.8u·w²·(m₀m₁ + m₂m₃). Underflow adds at most 2^-1074 per
+    /// factor times the other factor (≤ 2.02w²), four times, plus 2^-1075 per product
+    /// of factors: below 2^-1070.9·w² + 2^-1074. The bound used is
+    /// `48u·P·(m₀m₁ + m₂m₃) + 2^-1069·P + 2^-1072` (P = fl(w²); the margins cover its
+    /// own roundings, and an underflowing m₀m₁ loses at most 48u·P·2^-1074), valid for
+    /// `P ≤ 2^250`: no difference exceeds 2^125, no value overflows. Beyond, the
+    /// bound is infinite and every call goes out of line. As `mᵢ ≤ w` it is never
+    /// looser than `B₄`; for edges of length `e` it is about `B₄·e²/w²`.
+    #[inline(always)]
+    fn cross_products_sign_of_short_edges(self, factors: [[Point; 4]; 4]) -> Sign {
+        let cross = |[ux, uy, vx, vy]: [f64; 4]| ux * vy - uy * vx;
+        let d = factors.map(factor_differences);
+        let s = cross(d[0]) * cross(d[1]) + cross(d[2]) * cross(d[3]);
+        if s > self.four {
+            return Sign::Positive;
+        } else if s < self.neg_four {
+            return Sign::Negative;
+        }
+        // Plain comparisons: a NaN difference (outside the boxes' contract) gives a NaN
+        // `s`, which fails both tests below.
+        let short = |[ux, uy, _, _]: [f64; 4]| {
+            let (x, y) = (ux.abs(), uy.abs());
+            if x > y { x } else { y }
+        };
+        let bound =
+            self.four_edges * (short(d[0]) * short(d[1]) + short(d[2]) * short(d[3])) + self.four_floor;
+        if s > bound {
+            Sign::Positive
+        } else if s < -bound {
+            Sign::Negative
+        } else {
             let [
                 [a0, b0, c0, d0],
                 [a1, b1, c1, d1],
