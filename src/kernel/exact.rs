@@ -204,11 +204,6 @@ pub struct ExactWithin {
     /// `−B₂` and `−B₄`, kept so that a call compares without negating.
     neg_two: f64,
     neg_four: f64,
-    /// `48u·P` and `2^-1069·P + 2^-1072`, or `+∞` when not valid: the edge-scaled
-    /// degree-4 bound of [`Kernel::cross_products_sign_of_short_edges`] is
-    /// `edges·(m₀m₁ + m₂m₃) + floor`.
-    four_edges: f64,
-    four_floor: f64,
 }
 
 impl Default for ExactWithin {
@@ -218,8 +213,6 @@ impl Default for ExactWithin {
             four: f64::INFINITY,
             neg_two: f64::NEG_INFINITY,
             neg_four: f64::NEG_INFINITY,
-            four_edges: f64::INFINITY,
-            four_floor: f64::INFINITY,
         }
     }
 }
@@ -243,9 +236,6 @@ impl ExactWithin {
         const FOUR_MAX: f64 = f64::from_bits((1023 + 250) << 52); // 2^250
         const C2: f64 = 2.0 * ORIENT_ERR * (1.0 + 1.0 / (1u64 << 30) as f64);
         const C4: f64 = 96.0 * (f64::EPSILON / 2.0);
-        const C4_EDGES: f64 = 48.0 * (f64::EPSILON / 2.0);
-        const FLOOR: f64 = f64::from_bits((1023 - 1022) << 52) / (1u64 << 47) as f64; // 2^-1069
-        const FLOOR_MIN: f64 = f64::from_bits(1 << 2); // 2^-1072
         // Both sides from both boxes; a NaN or infinite corner makes a side NaN or
         // infinite (a corner is never dropped: no `min`/`max` that ignores NaN), and
         // then `p` fails both range tests.
@@ -270,18 +260,11 @@ impl ExactWithin {
         } else {
             f64::INFINITY
         };
-        let (four_edges, four_floor) = if p <= FOUR_MAX {
-            (C4_EDGES * p, FLOOR * p + FLOOR_MIN)
-        } else {
-            (f64::INFINITY, f64::INFINITY)
-        };
         ExactWithin {
             two,
             four,
             neg_two: -two,
             neg_four: -four,
-            four_edges,
-            four_floor,
         }
     }
 
@@ -293,6 +276,18 @@ impl ExactWithin {
     /// The degree-4 bound `B₄` (`+∞` when not valid).
     pub fn degree_four_bound(&self) -> f64 {
         self.four
+    }
+
+    /// The bound of [`Kernel::cross_products_sign_of_short_edges`] for
+    /// `m = m₀m₁ + m₂m₃` (see there), from the two bounds the kernel keeps, so that it
+    /// costs no field: `8B₂·m + 2^-620·B₄ + 2^-1072`. As `B₂ ≥ 6u·P`, the first term is
+    /// at least `48u·P·m` (less one rounding); for `P ∈ [2^-400, 2^250]` the second is
+    /// at least `2^-1069·P`; outside that range `B₄` is infinite and so is the bound.
+    #[inline(always)]
+    pub(crate) fn short_edges_bound(&self, m: f64) -> f64 {
+        const SCALE: f64 = f64::from_bits((1023 - 620) << 52); // 2^-620
+        const FLOOR: f64 = f64::from_bits(1 << 2); // 2^-1072
+        self.two * (8.0 * m) + (self.four * SCALE + FLOOR)
     }
 }
 
@@ -427,12 +422,13 @@ impl Kernel for ExactWithin {
     /// analysis (at `cross_products_filtered`) bounds the rounding error by
     /// 10.2u·(P₀P₁ + P₂P₃) ≤ 40.8u·w²·(m₀m₁ + m₂m₃). Underflow adds at most 2^-1074 per
     /// factor times the other factor (≤ 2.02w²), four times, plus 2^-1075 per product
-    /// of factors: below 2^-1070.9·w² + 2^-1074. The bound used is
+    /// of factors: below 2^-1070.9·w² + 2^-1074. The bound used
+    /// (`ExactWithin::short_edges_bound`) is at least
     /// `48u·P·(m₀m₁ + m₂m₃) + 2^-1069·P + 2^-1072` (P = fl(w²); the margins cover its
-    /// own roundings, and an underflowing m₀m₁ loses at most 48u·P·2^-1074), valid for
-    /// `P ≤ 2^250`: no difference exceeds 2^125, no value overflows. Beyond, the
-    /// bound is infinite and every call goes out of line. As `mᵢ ≤ w` it is never
-    /// looser than `B₄`; for edges of length `e` it is about `B₄·e²/w²`.
+    /// own roundings, and an underflowing m₀m₁ loses at most 48u·P·2^-1074), and it is
+    /// finite only where `B₄` is, `P ∈ [2^-400, 2^250]`: no difference exceeds 2^125,
+    /// no value overflows. Elsewhere every undecided call goes out of line. For edges
+    /// of length `e` it is about `B₄·e²/w²`.
     #[inline(always)]
     fn cross_products_sign_of_short_edges(self, factors: [[Point; 4]; 4]) -> Sign {
         let cross = |[ux, uy, vx, vy]: [f64; 4]| ux * vy - uy * vx;
@@ -449,8 +445,7 @@ impl Kernel for ExactWithin {
             let (x, y) = (ux.abs(), uy.abs());
             if x > y { x } else { y }
         };
-        let bound =
-            self.four_edges * (short(d[0]) * short(d[1]) + short(d[2]) * short(d[3])) + self.four_floor;
+        let bound = self.short_edges_bound(short(d[0]) * short(d[1]) + short(d[2]) * short(d[3]));
         if s > bound {
             Sign::Positive
         } else if s < -bound {

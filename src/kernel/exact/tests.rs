@@ -987,8 +987,8 @@ fn short_edges_cross_products_at_its_bound() {
         let m = |[ux, uy, _, _]: [f64; 4]| ux.abs().max(uy.abs());
         let d = factors.map(factor_differences);
         let s = cr(d[0]) * cr(d[1]) + cr(d[2]) * cr(d[3]);
-        let bound = kw.four_edges * (m(d[0]) * m(d[1]) + m(d[2]) * m(d[3])) + kw.four_floor;
-        assert!(bound <= kw.four || kw.four == f64::INFINITY, "{factors:?}");
+        let bound = kw.short_edges_bound(m(d[0]) * m(d[1]) + m(d[2]) * m(d[3]));
+        assert_eq!(bound.is_finite(), kw.four.is_finite(), "{factors:?}");
         if s > kw.four || s < kw.neg_four {
             semi += 1;
         } else if s > bound || s < -bound {
