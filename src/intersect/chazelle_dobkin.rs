@@ -99,7 +99,7 @@
 //! # Precision
 //! Every decision is the sign of a polynomial in input coordinates: `orient`, and
 //! one degree-4 slope comparison in the projective frame (below), a kernel predicate
-//! ([`Kernel::cross_products_sign`]). Nothing is constructed, so the test is exact
+//! ([`Kernel::cross_products_sign_of_short_edges`]). Nothing is constructed, so the test is exact
 //! under [`Exact`](crate::Exact). Under
 //! [`Fast`](crate::Fast) wrong signs near degeneracies can give wrong answers but
 //! every step still shortens a chain, so the test always terminates.

@@ -61,8 +61,9 @@
 //! filter inline where the algorithms cross short edges
 //! ([`Kernel::cross_of_short_edges`]), exact/fast instructions at n = 2^10 / 2^14 /
 //! 2^18: Barba 1.11 / 1.14 / 1.13, Dobkin 1.11 / 1.11 / 1.12, Linear 1.15 / 1.15 /
-//! 1.40, Chazelle–Dobkin 1.19 / 1.17 / 1.23 (before the semi-static filter:
-//! 1.3–1.6×). Validation plus the crossings sweep at 2^±600 and 2^1016 cost
+//! 1.40, Chazelle–Dobkin 1.19 / 1.17 / 1.19 with its slope comparison's bound scaled to
+//! the edges ([`Kernel::cross_products_sign_of_short_edges`]; 1.23 at 2^18 before)
+//! (before the semi-static filter: 1.3–1.6×). Validation plus the crossings sweep at 2^±600 and 2^1016 cost
 //! 1.38–1.46× the instructions of the same input at scale 1 (before the fixed
 //! rescaling: 1.65×).
 //! Predicates that mix magnitudes more than 2^1022 apart within one call fall to big
@@ -190,11 +191,11 @@ impl Kernel for Exact {
 /// which is `+∞`) goes to [`Exact`]'s own layers, out of line, except that a degree-4
 /// call first tries [`Exact`]'s static filter inline (its derivation at
 /// `cross_products_filtered`; it refuses what it cannot vouch for, including
-/// overflow and underflow, and those calls go on out of line): at large n the
-/// semi-static bound decides few of Chazelle–Dobkin's slope comparisons, whose
-/// factors are short edges times long vectors, and the out-of-line call cost more
-/// than the filter. The default value has infinite bounds: every call goes to
-/// [`Exact`].
+/// overflow and underflow, and those calls go on out of line), and that
+/// [`Kernel::cross_products_sign_of_short_edges`] (Chazelle–Dobkin's slope comparison,
+/// whose factors are short edges times long vectors, seldom decided by `B₄` at large
+/// n) tries a bound scaled to the edges inline instead. The default value has
+/// infinite bounds: every call goes to [`Exact`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ExactWithin {
     /// `B₂`, or `+∞` when not valid.
