@@ -99,7 +99,7 @@
 //! # Precision
 //! Every decision is the sign of a polynomial in input coordinates: `orient`, and
 //! one degree-4 slope comparison in the projective frame (below), a kernel predicate
-//! ([`Kernel::cross_products_sign`]). Nothing is constructed, so the test is exact
+//! ([`Kernel::cross_products_sign_of_short_edges`]). Nothing is constructed, so the test is exact
 //! under [`Exact`](crate::Exact). Under
 //! [`Fast`](crate::Fast) wrong signs near degeneracies can give wrong answers but
 //! every step still shortens a chain, so the test always terminates.
@@ -384,16 +384,21 @@ impl<K: Kernel> Frame<K> {
     ///
     /// sign(slope_u − slope_v) = sign(cross(u2 − u1, c)·orient(a, v1, v2) − cross(v2 − v1, c)·orient(a, u1, u2)),
     ///
-    /// a polynomial of degree 4 in the input coordinates, which the kernel's
-    /// [`Kernel::cross_products_sign`] decides (with a static filter under `Exact`).
+    /// a polynomial of degree 4 in the input coordinates. Each factor is written with
+    /// the edge first, orient(a, v1, v2) as (v2 − v1) × (a − v1) and
+    /// −orient(a, u1, u2) as (u2 − u1) × (u1 − a) (the same polynomial), so that every
+    /// factor crosses a short edge with a long vector: the kernel's
+    /// [`Kernel::cross_products_sign_of_short_edges`] decides it (under `Exact`, with a
+    /// bound scaled to the edges), and the ten differences are four fewer than with
+    /// both orientations' own.
     #[inline]
     fn slope_cmp(&self, u: (Point, Point), v: (Point, Point)) -> Sign {
         let (a, c0, c1) = (self.a, self.ql, self.qr);
-        self.k.cross_products_sign([
+        self.k.cross_products_sign_of_short_edges([
             [u.0, u.1, c0, c1],
-            [a, v.0, a, v.1],
-            [v.1, v.0, c0, c1],
-            [a, u.0, a, u.1],
+            [v.0, v.1, v.0, a],
+            [v.0, v.1, c0, c1],
+            [u.0, u.1, a, u.0],
         ])
     }
 }

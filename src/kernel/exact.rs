@@ -64,7 +64,9 @@
 //! filter inline where the algorithms cross short edges
 //! ([`Kernel::cross_of_short_edges`]), exact/fast instructions at n = 2^10 / 2^14 /
 //! 2^18: Barba 1.11 / 1.14 / 1.13, Dobkin 1.11 / 1.11 / 1.12, Linear 1.13 / 1.13 /
-//! 1.13 (its walk under the edges' bound), Chazelle–Dobkin 1.19 / 1.17 / 1.23
+//! 1.13 (its walk under the edges' bound), Chazelle–Dobkin 1.19 / 1.17 / 1.19 with its
+//! slope comparison's bound scaled to the edges
+//! ([`Kernel::cross_products_sign_of_short_edges`]; 1.23 at 2^18 before)
 //! (before the semi-static filter: 1.3–1.6×). Validation plus the crossings sweep at 2^±600 and 2^1016 cost
 //! 1.38–1.46× the instructions of the same input at scale 1 (before the fixed
 //! rescaling: 1.65×).
@@ -201,11 +203,11 @@ impl Kernel for Exact {
 /// which is `+∞`) goes to [`Exact`]'s own layers, out of line, except that a degree-4
 /// call first tries [`Exact`]'s static filter inline (its derivation at
 /// `cross_products_filtered`; it refuses what it cannot vouch for, including
-/// overflow and underflow, and those calls go on out of line): at large n the
-/// semi-static bound decides few of Chazelle–Dobkin's slope comparisons, whose
-/// factors are short edges times long vectors, and the out-of-line call cost more
-/// than the filter. The default value has infinite bounds: every call goes to
-/// [`Exact`].
+/// overflow and underflow, and those calls go on out of line), and that
+/// [`Kernel::cross_products_sign_of_short_edges`] (Chazelle–Dobkin's slope comparison,
+/// whose factors are short edges times long vectors, seldom decided by `B₄` at large
+/// n) tries a bound scaled to the edges inline instead. The default value has
+/// infinite bounds: every call goes to [`Exact`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ExactWithin {
     /// `B₂`, or `+∞` when not valid.
@@ -322,6 +324,18 @@ impl ExactWithin {
     /// The degree-4 bound `B₄` (`+∞` when not valid).
     pub fn degree_four_bound(&self) -> f64 {
         self.four
+    }
+
+    /// The bound of [`Kernel::cross_products_sign_of_short_edges`] for
+    /// `m = m₀m₁ + m₂m₃` (see there), from the two bounds the kernel keeps, so that it
+    /// costs no field: `8B₂·m + 2^-620·B₄ + 2^-1072`. As `B₂ ≥ 6u·P`, the first term is
+    /// at least `48u·P·m` (less one rounding); for `P ∈ [2^-400, 2^250]` the second is
+    /// at least `2^-1069·P`; outside that range `B₄` is infinite and so is the bound.
+    #[inline(always)]
+    pub(crate) fn short_edges_bound(&self, m: f64) -> f64 {
+        const SCALE: f64 = f64::from_bits((1023 - 620) << 52); // 2^-620
+        const FLOOR: f64 = f64::from_bits(1 << 2); // 2^-1072
+        self.two * (8.0 * m) + (self.four * SCALE + FLOOR)
     }
 }
 
@@ -442,6 +456,54 @@ impl Kernel for ExactWithin {
             // argument area, written on this path only): passed as an array, the
             // array had to be in memory before the comparison, which cost the
             // algorithms' hot paths sixteen stores per call.
+            let [
+                [a0, b0, c0, d0],
+                [a1, b1, c1, d1],
+                [a2, b2, c2, d2],
+                [a3, b3, c3, d3],
+            ] = factors;
+            cross_products_within_slow(a0, b0, c0, d0, a1, b1, c1, d1, a2, b2, c2, d2, a3, b3, c3, d3)
+        }
+    }
+
+    /// The semi-static test, then a bound scaled to the short directions, inline;
+    /// [`Exact`]'s static filter and what follows it out of line.
+    ///
+    /// With mᵢ = max(|bᵢ.x − aᵢ.x|, |bᵢ.y − aᵢ.y|) (computed differences) and `w` the
+    /// boxes' side, every computed difference of `dᵢ − cᵢ` is at most `w` (see the type's
+    /// docs), so factor i's product magnitude is Pᵢ ≤ 2mᵢw, and the static filter's
+    /// analysis (at `cross_products_filtered`) bounds the rounding error by
+    /// 10.2u·(P₀P₁ + P₂P₃) ≤ 40.8u·w²·(m₀m₁ + m₂m₃). Underflow adds at most 2^-1074 per
+    /// factor times the other factor (≤ 2.02w²), four times, plus 2^-1075 per product
+    /// of factors: below 2^-1070.9·w² + 2^-1074. The bound used
+    /// (`ExactWithin::short_edges_bound`) is at least
+    /// `48u·P·(m₀m₁ + m₂m₃) + 2^-1069·P + 2^-1072` (P = fl(w²); the margins cover its
+    /// own roundings, and an underflowing m₀m₁ loses at most 48u·P·2^-1074), and it is
+    /// finite only where `B₄` is, `P ∈ [2^-400, 2^250]`: no difference exceeds 2^125,
+    /// no value overflows. Elsewhere every undecided call goes out of line. For edges
+    /// of length `e` it is about `B₄·e²/w²`.
+    #[inline(always)]
+    fn cross_products_sign_of_short_edges(self, factors: [[Point; 4]; 4]) -> Sign {
+        let cross = |[ux, uy, vx, vy]: [f64; 4]| ux * vy - uy * vx;
+        let d = factors.map(factor_differences);
+        let s = cross(d[0]) * cross(d[1]) + cross(d[2]) * cross(d[3]);
+        if s > self.four {
+            return Sign::Positive;
+        } else if s < self.neg_four {
+            return Sign::Negative;
+        }
+        // Plain comparisons: a NaN difference (outside the boxes' contract) gives a NaN
+        // `s`, which fails both tests below.
+        let short = |[ux, uy, _, _]: [f64; 4]| {
+            let (x, y) = (ux.abs(), uy.abs());
+            if x > y { x } else { y }
+        };
+        let bound = self.short_edges_bound(short(d[0]) * short(d[1]) + short(d[2]) * short(d[3]));
+        if s > bound {
+            Sign::Positive
+        } else if s < -bound {
+            Sign::Negative
+        } else {
             let [
                 [a0, b0, c0, d0],
                 [a1, b1, c1, d1],

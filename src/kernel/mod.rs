@@ -322,6 +322,19 @@ pub trait Kernel: Copy + Clone + Default + fmt::Debug + Send + Sync + 'static {
     fn cross_products_sign(self, factors: [[Point; 4]; 4]) -> Sign {
         self.sign(&CrossProductsPoly(factors))
     }
+
+    /// [`cross_products_sign`](Kernel::cross_products_sign) for call sites whose
+    /// factors each cross a short direction with a long one, the short one first: in
+    /// every `factors[i] = [aᵢ, bᵢ, cᵢ, dᵢ]`, `bᵢ − aᵢ` is an edge of a large polygon and
+    /// `dᵢ − cᵢ` may span the boxes of a [`within`](Kernel::within) kernel (the slope
+    /// comparison of Chazelle–Dobkin). The same answer, possibly decided differently:
+    /// [`ExactWithin`] scales its bound to the lengths of the short directions, which
+    /// decides at large n the calls its box-sized bound leaves open. The default is
+    /// `cross_products_sign`.
+    #[inline]
+    fn cross_products_sign_of_short_edges(self, factors: [[Point; 4]; 4]) -> Sign {
+        self.cross_products_sign(factors)
+    }
 }
 
 /// A directed line through two points with its direction `to − from` (computed once,
@@ -490,6 +503,11 @@ impl<K: Kernel> Kernel for ShortEdges<K> {
     #[inline]
     fn cross_products_sign(self, factors: [[Point; 4]; 4]) -> Sign {
         self.0.cross_products_sign(factors)
+    }
+
+    #[inline]
+    fn cross_products_sign_of_short_edges(self, factors: [[Point; 4]; 4]) -> Sign {
+        self.0.cross_products_sign_of_short_edges(factors)
     }
 }
 

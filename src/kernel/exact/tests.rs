@@ -1082,4 +1082,79 @@ fn polygon_edges_cross_under_their_extent() {
         decided >= calls - calls / 100,
         "the edges' bound decided {decided} of {calls}"
     );
+
+/// [`Kernel::cross_products_sign_of_short_edges`] under [`ExactWithin`]: Chazelle–Dobkin's
+/// slope comparison of two short edges (the second a copy of the first moved by up to
+/// 60 ulps, so that the slopes nearly agree) seen from a pivot, inside boxes up to
+/// 2^40 times longer than the edges, at scales from 2^-1074 to 2^1000. Its answer is
+/// always the big integers' sign; the edge-scaled bound decides calls that the
+/// box-sized bound `B₄` leaves open (the point of the entry), is right whenever it
+/// decides, and both outcomes occur within a factor of four of it.
+#[test]
+fn short_edges_cross_products_at_its_bound() {
+    use crate::kernel::ShortEdges;
+    let mut rng = SmallRng::seed_from_u64(0x5_10_9e);
+    let scales = [0, 0, 0, -1074, -1000, -600, -300, 120, 250, 600, 1000];
+    let (mut semi, mut edges, mut slow) = (0usize, 0usize, 0usize);
+    let mut near = [0usize; 2];
+    for i in 0..40_000 {
+        let e = scales[i % scales.len()];
+        let (s1, s2) = (2f64.powi(e / 2), 2f64.powi(e - e / 2));
+        let span = 2f64.powi([0, 10, 20, 40][(i / 16) % 4]);
+        let k = rng.random_range(-60..=60);
+        let mut r = || Point::new(rng.random_range(-span..span), rng.random_range(-span..span));
+        let (a, c0, c1, u0) = (r(), r(), r(), r());
+        let dir = Point::new(rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0));
+        let u1 = Point::new(u0.x + dir.x, u0.y + dir.y);
+        let shift = if i % 3 == 0 {
+            Point::new(0.0, 0.0)
+        } else {
+            Point::new(rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0))
+        };
+        let v0 = Point::new(u0.x + shift.x, ulps(u0.y + shift.y, k));
+        let v1 = Point::new(ulps(u1.x + shift.x, k / 2), u1.y + shift.y);
+        let sc = |p: Point| Point::new(p.x * s1 * s2, p.y * s1 * s2);
+        let corner = Point::new(span * s1 * s2, span * s1 * s2);
+        let [a, c0, c1, u0, u1, v0, v1, corner] = [a, c0, c1, u0, u1, v0, v1, corner].map(sc);
+        if [a, c0, c1, u0, u1, v0, v1, corner].iter().any(|p| !p.is_finite()) {
+            continue;
+        }
+        let factors = [
+            [u0, u1, c0, c1],
+            [v0, v1, v0, a],
+            [v0, v1, c0, c1],
+            [u0, u1, a, u0],
+        ];
+        let kw = ExactWithin::new([(-corner, corner), box_of(&[a, c0, c1, u0, u1, v0, v1])]);
+        let want = exact_products(factors);
+        let got = kw.cross_products_sign_of_short_edges(factors);
+        assert_eq!(got, want, "{factors:?}");
+        assert_eq!(kw.cross_products_sign(factors), want, "{factors:?}");
+        assert_eq!(ShortEdges(kw).cross_products_sign_of_short_edges(factors), want);
+        assert_eq!(Exact.cross_products_sign_of_short_edges(factors), want);
+        // The same tests as the kernel's, on the same computed values.
+        let cr = |[ux, uy, vx, vy]: [f64; 4]| ux * vy - uy * vx;
+        let m = |[ux, uy, _, _]: [f64; 4]| ux.abs().max(uy.abs());
+        let d = factors.map(factor_differences);
+        let s = cr(d[0]) * cr(d[1]) + cr(d[2]) * cr(d[3]);
+        let bound = kw.short_edges_bound(m(d[0]) * m(d[1]) + m(d[2]) * m(d[3]));
+        assert_eq!(bound.is_finite(), kw.four.is_finite(), "{factors:?}");
+        if s > kw.four || s < kw.neg_four {
+            semi += 1;
+        } else if s > bound || s < -bound {
+            edges += 1;
+            assert_eq!(Sign::of(s), want, "edge-scaled bound: {factors:?}");
+        } else {
+            slow += 1;
+        }
+        if bound.is_finite() && s.abs() > bound / 4.0 && s.abs() < bound * 4.0 {
+            near[usize::from(s.abs() <= bound)] += 1;
+        }
+    }
+    assert!(
+        edges > 5_000,
+        "the edge-scaled bound decided only {edges} ({semi} by B₄)"
+    );
+    assert!(slow > 1_000, "too few calls left for the slow path: {slow}");
+    assert!(near[0] > 50 && near[1] > 50, "near the bound: {near:?}");
 }
