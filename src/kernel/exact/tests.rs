@@ -1082,6 +1082,7 @@ fn polygon_edges_cross_under_their_extent() {
         decided >= calls - calls / 100,
         "the edges' bound decided {decided} of {calls}"
     );
+}
 
 /// [`Kernel::cross_products_sign_of_short_edges`] under [`ExactWithin`]: Chazelle–Dobkin's
 /// slope comparison of two short edges (the second a copy of the first moved by up to
