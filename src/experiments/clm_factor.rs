@@ -2,7 +2,8 @@
 //! per polygon) at a few sizes, on rotated ellipses: the median over the pairs of each
 //! relation apart (pooled, the median of half cheap intersecting and half costly
 //! disjoint queries falls between the two groups and says nothing). The table shows
-//! the disjoint medians, which the choice of c is about; the CSV has both.
+//! the disjoint medians, which the choice of c is about; the CSV has both. Each pair
+//! times all factors in turn, three rounds (its time is the median of the three).
 
 use super::measure::{median, time_per_query};
 use super::plot::{Chart, Series};
@@ -41,25 +42,37 @@ pub(crate) fn run(config: &Config) -> io::Result<Report> {
         let total = 2.0 * n as f64;
         let mut s = Series::new(format!("n = 2^{l}, disjoint"), Vec::new());
         t.push_str(&format!("| 2^{l} |"));
-        for &c in &config.factors {
-            for (relation, pairs) in &mut prepared {
-                let mut times: Vec<f64> = pairs
-                    .iter_mut()
-                    .map(|pp| time_per_query(config.min_time, || pp.query_clm_factor(c)))
-                    .collect();
-                let m = median(&mut times);
-                csv.row(&[
-                    n.to_string(),
-                    relation_name(*relation).into(),
-                    c.to_string(),
-                    pairs.len().to_string(),
-                    ns(m),
-                    ns(m / total.sqrt()),
-                ]);
-                if *relation == Relation::Disjoint {
-                    s.points.push((c, m / total.sqrt()));
-                    t.push_str(&format!(" {} |", short_ns(m)));
+        // Every pair times every factor in turn, three rounds, so that a change of the
+        // machine's load falls on all factors alike; each pair's time is its median.
+        let mut cells = Vec::new();
+        for (relation, pairs) in &mut prepared {
+            let mut times = vec![vec![Vec::new(); pairs.len()]; config.factors.len()];
+            for _ in 0..3 {
+                for (i, pp) in pairs.iter_mut().enumerate() {
+                    for (f, &c) in config.factors.iter().enumerate() {
+                        times[f][i].push(time_per_query(config.min_time, || pp.query_clm_factor(c)));
+                    }
                 }
+            }
+            for (f, per_pair) in times.iter_mut().enumerate() {
+                let mut medians: Vec<f64> = per_pair.iter_mut().map(|ts| median(ts)).collect();
+                cells.push((f, *relation, pairs.len(), median(&mut medians)));
+            }
+        }
+        cells.sort_by_key(|&(f, relation, _, _)| (f, relation != Relation::Intersecting));
+        for (f, relation, count, m) in cells {
+            let c = config.factors[f];
+            csv.row(&[
+                n.to_string(),
+                relation_name(relation).into(),
+                c.to_string(),
+                count.to_string(),
+                ns(m),
+                ns(m / total.sqrt()),
+            ]);
+            if relation == Relation::Disjoint {
+                s.points.push((c, m / total.sqrt()));
+                t.push_str(&format!(" {} |", short_ns(m)));
             }
         }
         t.push('\n');

@@ -92,7 +92,7 @@ use super::certificate::{
 };
 use super::linked::LinkedIntersection;
 use super::{Certificate, Derivation, Probe, Which};
-use crate::kernel::{Kernel, Orientation, Point};
+use crate::kernel::{DirectedLine, Kernel, Orientation, Point};
 use crate::lp::{ArenaPoints, Bitangent, LpError, LpWorkspace, Separation, WitnessPoint, separating_line};
 use crate::polygon::{LinkedPolygon, SampleWorkspace, box_of};
 use rand::Rng;
@@ -477,7 +477,14 @@ fn gather(poly: &LinkedPolygon, positions: &[u32], out: &mut Vec<Point>) {
 /// bookkeeping; this runs for every sampled vertex and every chain vertex.)
 #[inline]
 fn below<R: Rng + ?Sized>(rng: &mut R, n: u32) -> u32 {
-    let mut m = u64::from(rng.next_u32()) * u64::from(n);
+    below_from(rng.next_u32(), rng, n)
+}
+
+/// [`below`] with the first 32 random bits given (`bits`, uniform and independent of
+/// `rng`'s further output); a rejection draws from `rng`.
+#[inline]
+fn below_from<R: Rng + ?Sized>(bits: u32, rng: &mut R, n: u32) -> u32 {
+    let mut m = u64::from(bits) * u64::from(n);
     if (m as u32) < n {
         let threshold = n.wrapping_neg() % n;
         while (m as u32) < threshold {
@@ -488,16 +495,26 @@ fn below<R: Rng + ?Sized>(rng: &mut R, n: u32) -> u32 {
 }
 
 /// Shuffles `positions` uniformly (Fisher–Yates), and `points` the same way when it is
-/// not empty (then it has the same length).
+/// not empty (then it has the same length). Each 64-bit draw serves two swaps (its
+/// halves are independent uniform 32-bit words).
 fn shuffle<R: Rng + ?Sized>(positions: &mut [u32], points: &mut [Point], rng: &mut R) {
     let with_points = !points.is_empty();
     debug_assert!(!with_points || points.len() == positions.len());
-    for i in (1..positions.len()).rev() {
-        let j = below(rng, i as u32 + 1) as usize;
-        positions.swap(i, j);
+    let mut i = positions.len().saturating_sub(1);
+    let mut swap = |i: usize, j: u32| {
+        positions.swap(i, j as usize);
         if with_points {
-            points.swap(i, j);
+            points.swap(i, j as usize);
         }
+    };
+    while i >= 2 {
+        let bits = rng.next_u64();
+        swap(i, below_from(bits as u32, rng, i as u32 + 1));
+        swap(i - 1, below_from((bits >> 32) as u32, rng, i as u32));
+        i -= 2;
+    }
+    if i == 1 {
+        swap(1, below(rng, 2));
     }
 }
 
@@ -663,15 +680,32 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
 struct Chains([Vec<u32>; 4], [Vec<Point>; 4]);
 
 impl Chains {
+    #[inline]
     fn get(&self, s: Set) -> &[u32] {
         &self.0[s.chain_index()]
     }
 
+    #[inline]
     fn points(&self, s: Set) -> &[Point] {
         &self.1[s.chain_index()]
     }
 
-    /// Both buffers of a chain, to be written.
+    /// Both buffers of a chain, taken out to be written by a walk.
+    #[inline]
+    fn take(&mut self, s: Set) -> (Vec<u32>, Vec<Point>) {
+        let i = s.chain_index();
+        (std::mem::take(&mut self.0[i]), std::mem::take(&mut self.1[i]))
+    }
+
+    /// Puts back the buffers of a finished walk.
+    #[inline]
+    fn put(&mut self, s: Set, (positions, points): (Vec<u32>, Vec<Point>)) {
+        let i = s.chain_index();
+        (self.0[i], self.1[i]) = (positions, points);
+    }
+
+    /// Both buffers of a chain in place.
+    #[inline]
     fn buffers(&mut self, s: Set) -> (&mut Vec<u32>, &mut Vec<Point>) {
         let i = s.chain_index();
         (&mut self.0[i], &mut self.1[i])
@@ -680,6 +714,7 @@ impl Chains {
 
 impl Set {
     /// The buffer of a chain set in [`Chains`] (samples have none).
+    #[inline]
     fn chain_index(self) -> usize {
         match self {
             Set::Cp => 0,
@@ -691,11 +726,27 @@ impl Set {
     }
 }
 
-/// A walk in progress in one of the lockstep slots: the chain set it fills.
+/// A walk in progress in one of the lockstep slots: the chain set it fills, and that
+/// set's buffers (positions and points), taken out of [`Chains`] while it walks.
 struct Active<'a> {
     set: Set,
     walk: Walk<'a>,
     cursor: Cursor,
+    buffers: (Vec<u32>, Vec<Point>),
+}
+
+impl<'a> Active<'a> {
+    /// Starts `walk` into the buffers of `set`.
+    fn start<K: Kernel>(k: K, set: Set, walk: Walk<'a>, chains: &mut Chains) -> Self {
+        let mut buffers = chains.take(set);
+        let cursor = walk.start(k, &mut buffers);
+        Active {
+            set,
+            walk,
+            cursor,
+            buffers,
+        }
+    }
 }
 
 /// Steps 3–5 of the module docs after the first LP, as a schedule of chain walks kept
@@ -738,20 +789,21 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     let q_open = rq.len() < q.len();
     let mut slots: [Option<Active<'_>>; 2] = [None, None];
     for (slot, (walk, set)) in slots.iter_mut().zip(first.into_iter().zip([Set::Cp, Set::Cq])) {
-        let cursor = walk.start(k, chains.buffers(set));
-        *slot = Some(Active { set, walk, cursor });
+        *slot = Some(Active::start(k, set, walk, chains));
     }
+    // At the top of this loop at least one slot walks: the loop returns when none does.
     loop {
-        for a in slots.iter_mut().flatten() {
-            if !a.cursor.done {
-                a.walk.advance(k, &mut a.cursor, chains.buffers(a.set));
+        // Step every active walk until one of them ends.
+        while !slots.iter().flatten().any(|a| a.cursor.done) {
+            for a in slots.iter_mut().flatten() {
+                a.walk.advance(k, &mut a.cursor, &mut a.buffers);
             }
         }
         for slot in &mut slots {
-            let Some(set) = slot.as_ref().filter(|a| a.cursor.done).map(|a| a.set) else {
+            let Some(Active { set, buffers, .. }) = slot.take_if(|a| a.cursor.done) else {
                 continue;
             };
-            *slot = None;
+            chains.put(set, buffers);
             let len = chains.get(set).len();
             probe.chain_walk(&ArenaPoints {
                 polygon: if set.of() == Which::P { p } else { q },
@@ -803,8 +855,7 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
             };
             if let Some((set, poly, t)) = next {
                 let walk = Walk::new(poly, line.start, line.end, Orientation::Ccw, t as usize);
-                let cursor = walk.start(k, chains.buffers(set));
-                *slot = Some(Active { set, walk, cursor });
+                *slot = Some(Active::start(k, set, walk, chains));
             }
         }
         if slots.iter().all(Option::is_none) {
@@ -818,15 +869,20 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
 /// directed line (s, e).
 struct Walk<'a> {
     poly: &'a LinkedPolygon,
-    s: Point,
-    e: Point,
+    /// The line, its direction computed once for all the walk's side tests.
+    line: DirectedLine,
     far: Orientation,
     t: usize,
 }
 
 impl<'a> Walk<'a> {
     fn new(poly: &'a LinkedPolygon, s: Point, e: Point, far: Orientation, t: usize) -> Self {
-        Walk { poly, s, e, far, t }
+        Walk {
+            poly,
+            line: DirectedLine::new(s, e),
+            far,
+            t,
+        }
     }
 }
 
@@ -841,11 +897,11 @@ struct Cursor {
 impl Walk<'_> {
     #[inline]
     fn is_far<K: Kernel>(&self, k: K, x: Point) -> bool {
-        k.orient(self.s, self.e, x) == self.far
+        k.orient_line(&self.line, x) == self.far
     }
 
     /// Starts the walk, writing its first vertices and their points to `out`.
-    fn start<K: Kernel>(&self, k: K, (out, points): (&mut Vec<u32>, &mut Vec<Point>)) -> Cursor {
+    fn start<K: Kernel>(&self, k: K, (out, points): &mut (Vec<u32>, Vec<Point>)) -> Cursor {
         out.clear();
         points.clear();
         let done = Cursor {
@@ -880,8 +936,8 @@ impl Walk<'_> {
 
     /// One step: records the current vertex and its point, and moves on unless it
     /// closes the chain.
-    #[inline]
-    fn advance<K: Kernel>(&self, k: K, c: &mut Cursor, (out, points): (&mut Vec<u32>, &mut Vec<Point>)) {
+    #[inline(always)]
+    fn advance<K: Kernel>(&self, k: K, c: &mut Cursor, (out, points): &mut (Vec<u32>, Vec<Point>)) {
         let x = self.poly.point_at(c.v);
         out.push(c.v as u32);
         points.push(x);

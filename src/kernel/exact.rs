@@ -92,6 +92,7 @@ pub struct Exact;
 
 impl Kernel for Exact {
     const NAME: &'static str = "exact";
+    const EXACT: bool = true;
     type Within = ExactWithin;
 
     #[inline]
@@ -341,6 +342,7 @@ impl ExactWithin {
 
 impl Kernel for ExactWithin {
     const NAME: &'static str = "exact";
+    const EXACT: bool = true;
     type Within = ExactWithin;
 
     #[inline]

@@ -210,6 +210,11 @@ pub trait Kernel: Copy + Clone + Default + fmt::Debug + Send + Sync + 'static {
     /// A short name (`"fast"` or `"exact"`).
     const NAME: &'static str;
 
+    /// Whether every predicate is exact, so that answers never contradict each other:
+    /// an algorithm may then skip tests that only re-check earlier answers (the LP's
+    /// final certification). `false` unless a kernel says so.
+    const EXACT: bool = false;
+
     /// The kernel [`within`](Kernel::within) returns.
     type Within: Kernel;
 
@@ -458,6 +463,7 @@ pub(crate) struct ShortEdges<K>(pub(crate) K);
 
 impl<K: Kernel> Kernel for ShortEdges<K> {
     const NAME: &'static str = K::NAME;
+    const EXACT: bool = K::EXACT;
     type Within = ShortEdges<K::Within>;
 
     #[inline]

@@ -410,8 +410,9 @@ impl Line {
 
 /// The outcome of a one-dimensional step.
 enum Step {
-    /// The new optimum, tight on the violating point and on `partner`.
-    Line(Line, Item),
+    /// The new optimum, tight on the violating point and on `partner`; under an exact
+    /// kernel also the extremes along it of the earlier points found on it.
+    Line(Line, Item, Collinear),
     /// The constraints seen so far admit no separator: the hulls intersect. No line
     /// through the violating point satisfies these one or two earlier points.
     Infeasible(Item, Item),
@@ -657,7 +658,9 @@ fn solve<K: Kernel, R: Rng + ?Sized, S: Load, const RECORD: bool>(
                 tb,
                 on_line,
                 last_change,
-            } => (line, ta, tb, on_line, last_change + 1),
+                // An exact kernel's step tested every point before the last change against
+                // the final line (and collected those on it): nothing is left to test.
+            } => (line, ta, tb, on_line, if K::EXACT { 0 } else { last_change + 1 }),
             StepOut::Infeasible => return Some(Separation::Intersecting),
             StepOut::Inconsistent => return None,
         }
@@ -699,6 +702,48 @@ impl OnLine {
             *min = x;
         } else if k.dot(s, e, *max, x) == Sign::Positive {
             *max = x;
+        }
+    }
+}
+
+/// Points of each set found on a line, by their extremes along it (`None`: none yet):
+/// what [`step`] collects of the earlier points for the line it returns, so that under
+/// an exact kernel they need no second test.
+#[derive(Clone, Copy, Debug, Default)]
+struct Collinear {
+    a: Option<(Point, Point)>,
+    b: Option<(Point, Point)>,
+}
+
+impl Collinear {
+    /// Adds `x`, a point on the directed line (s, e). Out of line: points on the line
+    /// are rare, and the loops that find them are the LP's hottest.
+    #[cold]
+    #[inline(never)]
+    fn add<K: Kernel>(&mut self, k: K, s: Point, e: Point, x: Point, in_b: bool) {
+        let slot = if in_b { &mut self.b } else { &mut self.a };
+        match slot {
+            None => *slot = Some((x, x)),
+            Some((min, max)) => {
+                if x == *min || x == *max {
+                    return;
+                }
+                if k.dot(s, e, *min, x) == Sign::Negative {
+                    *min = x;
+                } else if k.dot(s, e, *max, x) == Sign::Positive {
+                    *max = x;
+                }
+            }
+        }
+    }
+
+    /// Adds the extremes to `on_line` (points on the same line).
+    fn merge_into<K: Kernel>(self, k: K, on_line: &mut OnLine, s: Point, e: Point) {
+        for (set, in_b) in [(self.a, false), (self.b, true)] {
+            if let Some((min, max)) = set {
+                on_line.add(k, s, e, min, in_b);
+                on_line.add(k, s, e, max, in_b);
+            }
         }
     }
 }
@@ -756,7 +801,7 @@ fn incremental<K: Kernel, S: Load, const RECORD: bool>(
             loaded: true,
         };
         match step(k, p, in_b, &items[..t], a0, b0, guess, &mut w) {
-            Step::Line(l, partner) => {
+            Step::Line(l, partner, collinear) => {
                 line = l;
                 let partner_in_b = partner.enc & B_BIT != 0;
                 if in_b {
@@ -771,6 +816,9 @@ fn incremental<K: Kernel, S: Load, const RECORD: bool>(
                     }
                 }
                 on_line = OnLine::at(ta.1, tb.1);
+                if K::EXACT {
+                    collinear.merge_into(k, &mut on_line, line.s, line.e);
+                }
                 last_change = t;
             }
             Step::Infeasible(q, q2) => {
@@ -892,6 +940,8 @@ fn step<K: Kernel>(
     }
     // A point of the other set than the bound's on the current line, if any.
     let mut partner: Option<Item> = None;
+    // Under an exact kernel, the points on the current line (for `certify`).
+    let mut collinear = Collinear::default();
     // The points before this index were tested against an older line, or none.
     let mut recheck = 0;
     for (i, it) in earlier.iter().enumerate() {
@@ -907,6 +957,9 @@ fn step<K: Kernel>(
             let (wrong, on) = violates(k, &line, q, q_in_b);
             if !wrong {
                 if on {
+                    if K::EXACT {
+                        collinear.add(k, line.from(), line.to(), q, q_in_b);
+                    }
                     if q == p {
                         if opposite {
                             return Step::Infeasible(*it, *it); // a point of both sets
@@ -927,6 +980,7 @@ fn step<K: Kernel>(
             Bound::Upper(from, to) => {
                 best = Some((DirectedLine::new(from, to), *it));
                 partner = None;
+                collinear = Collinear::default();
                 recheck = i;
             }
             Bound::Lower => {
@@ -958,8 +1012,13 @@ fn step<K: Kernel>(
         // above), so it neither violates nor becomes the partner.
         let (wrong, on) = violates(k, &line, q, q_in_b);
         if !wrong {
-            if on && !b_opposite && partner.is_none() && q_in_b != p_in_b {
-                partner = Some(*it);
+            if on {
+                if K::EXACT {
+                    collinear.add(k, line.from(), line.to(), q, q_in_b);
+                }
+                if !b_opposite && partner.is_none() && q_in_b != p_in_b {
+                    partner = Some(*it);
+                }
             }
             continue;
         }
@@ -971,6 +1030,10 @@ fn step<K: Kernel>(
         };
     }
     let partner = if b_opposite { b } else { partner.unwrap_or(b) };
+    if K::EXACT {
+        // The bound's own point, on its line, was skipped by the tests.
+        collinear.add(k, line.from(), line.to(), b.p, b.enc & B_BIT != 0);
+    }
     Step::Line(
         Line {
             s: line.from(),
@@ -978,6 +1041,7 @@ fn step<K: Kernel>(
             d: line,
         },
         partner,
+        collinear,
     )
 }
 
