@@ -218,7 +218,7 @@ fn pivot_edge_apart<K: Kernel>(k: K, pv: &[Point], ql: Point, qr: Point) -> Opti
 /// strictly on its outer side (at most three orientations). An edge of F is accepted
 /// at once if G holds the minimum of g minus its line ([`bracketed`]); else a candidate
 /// is accepted only if the other polygon's vertex deepest towards it, found by an
-/// O(log) binary search ([`extreme_on_visible`] for P's edges, [`extreme_left`] for
+/// O(log) binary search ([`visible_extreme_outside`] for P's edges, [`extreme_left`] for
 /// Q's), lies strictly outside and is extreme ([`separates`]). So every certificate
 /// returned here holds for the whole polygons.
 fn from_final_edges<K: Kernel>(
@@ -231,7 +231,16 @@ fn from_final_edges<K: Kernel>(
 ) -> Option<Certificate> {
     let outside = |c: &Chain<'_>, s: Point, u: Point| {
         let line = DirectedLine::new(s, u);
-        (c.lo..=c.hi).all(|i| k.orient_line(&line, c.at(i)) == Cw)
+        let mut i = c.lo;
+        loop {
+            if k.orient_line(&line, c.at(i)) != Cw {
+                return false;
+            }
+            if i >= c.hi {
+                return true;
+            }
+            i += 1;
+        }
     };
     let (n, m) = (pv.len(), qv.len());
     // The visible chain runs counter-clockwise from q_R to q_L: G's positions 0..=visible.
@@ -251,15 +260,14 @@ fn from_final_edges<K: Kernel>(
     for i in f.lo..f.hi {
         let (s, u) = (f.at(i), f.at(i + 1));
         if outside(g, s, u)
-            && (bracketed(&fr, g, visible, (s, u))
-                || separates(k, s, u, qv, extreme_on_visible(k, qv, qr, visible, (s, u))))
+            && (bracketed(&fr, g, visible, (s, u)) || visible_extreme_outside(k, qv, qr, visible, (s, u)))
         {
             return Some(separated(s, u));
         }
     }
     // P's edges at the pivot.
     for (s, u) in [(pv[0], pv[1]), (pv[n - 1], pv[0])] {
-        if outside(g, s, u) && separates(k, s, u, qv, extreme_on_visible(k, qv, qr, visible, (s, u))) {
+        if outside(g, s, u) && visible_extreme_outside(k, qv, qr, visible, (s, u)) {
             return Some(separated(s, u));
         }
     }
@@ -297,8 +305,8 @@ fn bracketed<K: Kernel>(fr: &Frame<K>, g: &Chain<'_>, visible: usize, e: (Point,
         && (g.hi >= visible || fr.slope_cmp((g.at(g.hi), g.at(g.hi + 1)), e) != Sign::Negative)
 }
 
-/// The vertex of Q deepest to the left of P's edge `s` → `u`, searched on the chain
-/// visible from the pivot only: positions `0..=len` counter-clockwise from `qr`.
+/// Whether Q lies strictly right of P's edge `s` → `u`, by its vertex deepest to the
+/// left of the edge, searched on the chain visible from the pivot only: positions `0..=len` counter-clockwise from `qr`.
 ///
 /// If the edge separates, that vertex lies on this chain: the line through it parallel
 /// to the edge supports Q and has the pivot (a vertex of P, on the edge's closed inner
@@ -306,9 +314,17 @@ fn bracketed<K: Kernel>(fr: &Frame<K>, g: &Chain<'_>, visible: usize, e: (Point,
 /// outside and is visible. The visible edges' directions span less than π, so the
 /// sign of their cross product with the edge's direction changes at most once along
 /// the chain: leftness grows, then shrinks, and the first edge along which it stops
-/// growing starts at the deepest vertex. One cross product per step. When the edge
-/// does not separate the answer may be any vertex; [`separates`] then rejects it.
-fn extreme_on_visible<K: Kernel>(k: K, qv: &[Point], qr: usize, len: usize, (s, u): (Point, Point)) -> usize {
+/// growing starts at the deepest vertex. One cross product per step. Returns whether
+/// that vertex is strictly outside and extreme (the search compared both its edges
+/// unless it ends the chain; else [`separates`]), so a `true` proves separation
+/// whatever the chain holds.
+fn visible_extreme_outside<K: Kernel>(
+    k: K,
+    qv: &[Point],
+    qr: usize,
+    len: usize,
+    (s, u): (Point, Point),
+) -> bool {
     let m = qv.len();
     let index = |j: usize| if qr + j >= m { qr + j - m } else { qr + j };
     let (mut lo, mut hi) = (0, len);
@@ -320,7 +336,12 @@ fn extreme_on_visible<K: Kernel>(k: K, qv: &[Point], qr: usize, len: usize, (s, 
             hi = mid;
         }
     }
-    index(lo)
+    if lo > 0 && lo < len {
+        // The search compared both edges at the vertex: it is extreme.
+        k.orient(s, u, qv[index(lo)]) == Cw
+    } else {
+        separates(k, s, u, qv, index(lo))
+    }
 }
 
 /// A contiguous piece of a polygon's boundary, walked forward or backward, with
