@@ -257,11 +257,21 @@ fn from_final_edges<K: Kernel>(
         ql: qv[ql],
         qr: qv[qr],
     };
+    // F's first edge has F's largest slope, so G's right neighbour is the side its
+    // bracket may fail on; for the others the left one. Test that side first.
+    let mut candidates = [false; 2];
     for i in f.lo..f.hi {
         let (s, u) = (f.at(i), f.at(i + 1));
-        if outside(g, s, u)
-            && (bracketed(&fr, g, visible, (s, u)) || visible_extreme_outside(k, qv, qr, visible, (s, u)))
-        {
+        if outside(g, s, u) {
+            candidates[i - f.lo] = true;
+            if bracketed(&fr, g, visible, (s, u), i == f.lo) {
+                return Some(separated(s, u));
+            }
+        }
+    }
+    for i in f.lo..f.hi {
+        let (s, u) = (f.at(i), f.at(i + 1));
+        if candidates[i - f.lo] && visible_extreme_outside(k, qv, qr, visible, (s, u)) {
             return Some(separated(s, u));
         }
     }
@@ -292,7 +302,8 @@ fn from_final_edges<K: Kernel>(
 /// Whether the final chain G holds the minimum over the whole visible chain of g − ℓ,
 /// where ℓ is the frame's image of the line of F's edge `e` (left to right): the
 /// visible edge just left of G (if any) is no steeper than ℓ and the one just right of
-/// it (if any) no less steep. Two slope comparisons.
+/// it (if any) no less steep. Two slope comparisons, the right one first if
+/// `right_first`.
 ///
 /// Then an edge of F whose line has every vertex of G strictly above it (strictly on
 /// its outer side) has the whole visible chain strictly above it: g − ℓ is convex and
@@ -300,9 +311,20 @@ fn from_final_edges<K: Kernel>(
 /// wedge, above g in the frame, so Q is strictly on the edge's outer side and the edge
 /// separates, with no search. This is the case when the maximum of h lies inside the
 /// edge's span (h's maximum is where F's slope is among g's slopes there).
-fn bracketed<K: Kernel>(fr: &Frame<K>, g: &Chain<'_>, visible: usize, e: (Point, Point)) -> bool {
-    (g.lo == 0 || fr.slope_cmp((g.at(g.lo - 1), g.at(g.lo)), e) != Sign::Positive)
-        && (g.hi >= visible || fr.slope_cmp((g.at(g.hi), g.at(g.hi + 1)), e) != Sign::Negative)
+fn bracketed<K: Kernel>(
+    fr: &Frame<K>,
+    g: &Chain<'_>,
+    visible: usize,
+    e: (Point, Point),
+    right_first: bool,
+) -> bool {
+    let left = || g.lo == 0 || fr.slope_cmp((g.at(g.lo - 1), g.at(g.lo)), e) != Sign::Positive;
+    let right = || g.hi >= visible || fr.slope_cmp((g.at(g.hi), g.at(g.hi + 1)), e) != Sign::Negative;
+    if right_first {
+        right() && left()
+    } else {
+        left() && right()
+    }
 }
 
 /// Whether Q lies strictly right of P's edge `s` → `u`, by its vertex deepest to the
