@@ -257,21 +257,34 @@ fn from_final_edges<K: Kernel>(
         ql: qv[ql],
         qr: qv[qr],
     };
+    // G's vertices and the visible edges' ends just beyond them, fetched once.
+    let w = [g.at(g.lo), g.at((g.lo + 1).min(g.hi)), g.at(g.hi)];
+    let beyond = [
+        (g.lo > 0).then(|| g.at(g.lo - 1)),
+        (g.hi < visible).then(|| g.at(g.hi + 1)),
+    ];
+    let below_g = |s: Point, u: Point| {
+        let line = DirectedLine::new(s, u);
+        w.iter().all(|&x| k.orient_line(&line, x) == Cw)
+    };
     // F's first edge has F's largest slope, so G's right neighbour is the side its
     // bracket may fail on; for the others the left one. Test that side first.
+    // F has one or two edges (the pruning stops at two): its vertices, fetched once.
+    let fe = f.edges().min(2);
+    let z = [f.at(f.lo), f.at(f.lo + 1), f.at(f.lo + fe)];
     let mut candidates = [false; 2];
-    for i in f.lo..f.hi {
-        let (s, u) = (f.at(i), f.at(i + 1));
-        if outside(g, s, u) {
-            candidates[i - f.lo] = true;
-            if bracketed(&fr, g, visible, (s, u), i == f.lo) {
+    for i in 0..fe {
+        let (s, u) = (z[i], z[i + 1]);
+        if below_g(s, u) {
+            candidates[i] = true;
+            if bracketed(&fr, [w[0], w[2]], beyond, (s, u), i == 0) {
                 return Some(separated(s, u));
             }
         }
     }
-    for i in f.lo..f.hi {
-        let (s, u) = (f.at(i), f.at(i + 1));
-        if candidates[i - f.lo] && visible_extreme_outside(k, qv, qr, visible, (s, u)) {
+    for i in 0..fe {
+        let (s, u) = (z[i], z[i + 1]);
+        if candidates[i] && visible_extreme_outside(k, qv, qr, visible, (s, u)) {
             return Some(separated(s, u));
         }
     }
@@ -299,10 +312,10 @@ fn from_final_edges<K: Kernel>(
     None
 }
 
-/// Whether the final chain G holds the minimum over the whole visible chain of g − ℓ,
-/// where ℓ is the frame's image of the line of F's edge `e` (left to right): the
-/// visible edge just left of G (if any) is no steeper than ℓ and the one just right of
-/// it (if any) no less steep. Two slope comparisons, the right one first if
+/// Whether the final chain G (from `first` to `last`) holds the minimum over the whole
+/// visible chain of g − ℓ, where ℓ is the frame's image of the line of F's edge `e`
+/// (left to right): the visible edge just left of G (from `before`, if any) is no
+/// steeper than ℓ and the one just right of it (to `after`, if any) no less steep. Two slope comparisons, the right one first if
 /// `right_first`.
 ///
 /// Then an edge of F whose line has every vertex of G strictly above it (strictly on
@@ -313,17 +326,24 @@ fn from_final_edges<K: Kernel>(
 /// edge's span (h's maximum is where F's slope is among g's slopes there).
 fn bracketed<K: Kernel>(
     fr: &Frame<K>,
-    g: &Chain<'_>,
-    visible: usize,
+    [first, last]: [Point; 2],
+    [before, after]: [Option<Point>; 2],
     e: (Point, Point),
     right_first: bool,
 ) -> bool {
-    let left = || g.lo == 0 || fr.slope_cmp((g.at(g.lo - 1), g.at(g.lo)), e) != Sign::Positive;
-    let right = || g.hi >= visible || fr.slope_cmp((g.at(g.hi), g.at(g.hi + 1)), e) != Sign::Negative;
+    let left = || before.is_none_or(|b| fr.slope_cmp((b, first), e) != Sign::Positive);
+    let right = || after.is_none_or(|a| fr.slope_cmp((last, a), e) != Sign::Negative);
+    // The side that may fail first: both are pure, only the order of work differs.
     if right_first {
-        right() && left()
+        if !right() {
+            return false;
+        }
+        left()
     } else {
-        left() && right()
+        if !left() {
+            return false;
+        }
+        right()
     }
 }
 
