@@ -74,10 +74,15 @@
 //!   separate (O(1)).
 //! * The finish found h < 0 on the window: the final chains' edges (≤ 2 of F, ≤ 2 of G)
 //!   P's edges at A and Q's edges just outside G at the tangent points are candidates when the other
-//!   final chain lies strictly on their outer side (≤ 3 orientations); a candidate is
-//!   accepted when the other polygon's vertex extreme against it (one O(log) binary
-//!   search) is strictly outside and extreme, so every accepted edge separates the
-//!   whole polygons. Then the faces at the final chains' vertices and the pencil lines
+//!   final chain lies strictly on their outer side (≤ 3 orientations). An edge of F is
+//!   accepted with no search when the visible edges just beyond G's ends bracket its
+//!   slope in the frame (two slope comparisons): g minus the edge's line is convex, so
+//!   its minimum over the whole visible chain is then at a vertex of G, and Q lies
+//!   above g. This holds when h's maximum lies inside the edge's span (about three
+//!   queries in four on the Rotated pairs). Otherwise a candidate is accepted when the
+//!   other polygon's vertex extreme against it (one O(log) binary search, for an edge
+//!   of P only on the chain of Q visible from A) is strictly outside and extreme. So
+//!   every accepted edge separates the whole polygons. Then the faces at the final chains' vertices and the pencil lines
 //!   (O(1)). The maximum of h in the projective frame need not be where the polygons
 //!   are closest, so all of these can fail; then only the answer is returned
 //!   (completed by [`Dobkin`](super::Dobkin)'s separation, which tests/certificates.rs
@@ -106,7 +111,7 @@
 
 use super::certificate::{extreme_left, from_faces, from_support, resolve_chords, separates};
 use super::{ArrayIntersection, Certificate, Derivation, Probe, Which};
-use crate::kernel::{Kernel, Orientation, Point, Sign};
+use crate::kernel::{DirectedLine, Kernel, Orientation, Point, Sign};
 use crate::polygon::ConvexPolygon;
 
 /// The Chazelle–Dobkin O(log n + log m) test; see the module docs.
@@ -210,10 +215,12 @@ fn pivot_edge_apart<K: Kernel>(k: K, pv: &[Point], ql: Point, qr: Point) -> Opti
 /// A separating edge among the final chains' edges (at most two of F, two of G), P's
 /// edges at the pivot and Q's edges just outside G at the tangent points, for a
 /// disjoint finish. An edge qualifies as a candidate when the other final chain lies
-/// strictly on its outer side (at most three orientations); a candidate is accepted
-/// only if the other polygon's vertex deepest towards it, found by an O(log) binary
-/// search ([`extreme_left`]), lies strictly outside and is extreme ([`separates`]), so
-/// every certificate returned here is checked against the whole polygon.
+/// strictly on its outer side (at most three orientations). An edge of F is accepted
+/// at once if G holds the minimum of g minus its line ([`bracketed`]); else a candidate
+/// is accepted only if the other polygon's vertex deepest towards it, found by an
+/// O(log) binary search ([`visible_extreme_outside`] for P's edges, [`extreme_left`] for
+/// Q's), lies strictly outside and is extreme ([`separates`]). So every certificate
+/// returned here holds for the whole polygons.
 fn from_final_edges<K: Kernel>(
     k: K,
     pv: &[Point],
@@ -222,20 +229,69 @@ fn from_final_edges<K: Kernel>(
     g: &Chain<'_>,
     [ql, qr]: [usize; 2],
 ) -> Option<Certificate> {
-    let outside = |c: &Chain<'_>, s: Point, u: Point| (c.lo..=c.hi).all(|i| k.orient(s, u, c.at(i)) == Cw);
+    let outside = |c: &Chain<'_>, s: Point, u: Point| {
+        let line = DirectedLine::new(s, u);
+        let mut i = c.lo;
+        loop {
+            if k.orient_line(&line, c.at(i)) != Cw {
+                return false;
+            }
+            if i >= c.hi {
+                return true;
+            }
+            i += 1;
+        }
+    };
     let (n, m) = (pv.len(), qv.len());
-    // F runs forward along P; then P's edges at the pivot.
-    let p_edges = (f.lo..f.hi)
-        .map(|i| (f.index(i), f.index(i + 1)))
-        .chain([(0, 1), (n - 1, 0)]);
-    for (s, u) in p_edges {
-        let (s, u) = (pv[s], pv[u]);
-        if outside(g, s, u) && separates(k, s, u, qv, extreme_left(k, qv, (s, u))) {
-            return Some(Certificate::Separated {
-                of: Which::P,
-                from: s,
-                to: u,
-            });
+    // The visible chain runs counter-clockwise from q_R to q_L: G's positions 0..=visible.
+    let visible = (ql + m - qr) % m;
+    let separated = |s: Point, u: Point| Certificate::Separated {
+        of: Which::P,
+        from: s,
+        to: u,
+    };
+    // F's edges: first the frame's bracket (no search), else Q's extreme vertex.
+    let fr = Frame {
+        k,
+        a: pv[0],
+        ql: qv[ql],
+        qr: qv[qr],
+    };
+    // G's vertices and the visible edges' ends just beyond them, fetched once.
+    let w = [g.at(g.lo), g.at((g.lo + 1).min(g.hi)), g.at(g.hi)];
+    let beyond = [
+        (g.lo > 0).then(|| g.at(g.lo - 1)),
+        (g.hi < visible).then(|| g.at(g.hi + 1)),
+    ];
+    let below_g = |s: Point, u: Point| {
+        let line = DirectedLine::new(s, u);
+        w.iter().all(|&x| k.orient_line(&line, x) == Cw)
+    };
+    // F's first edge has F's largest slope, so G's right neighbour is the side its
+    // bracket may fail on; for the others the left one. Test that side first.
+    // F has one or two edges (the pruning stops at two): its vertices, fetched once.
+    let fe = f.edges().min(2);
+    let z = [f.at(f.lo), f.at(f.lo + 1), f.at(f.lo + fe)];
+    let mut candidates = [false; 2];
+    for i in 0..fe {
+        let (s, u) = (z[i], z[i + 1]);
+        if below_g(s, u) {
+            candidates[i] = true;
+            if bracketed(&fr, [w[0], w[2]], beyond, (s, u), i == 0) {
+                return Some(separated(s, u));
+            }
+        }
+    }
+    for i in 0..fe {
+        let (s, u) = (z[i], z[i + 1]);
+        if candidates[i] && visible_extreme_outside(k, qv, qr, visible, (s, u)) {
+            return Some(separated(s, u));
+        }
+    }
+    // P's edges at the pivot.
+    for (s, u) in [(pv[0], pv[1]), (pv[n - 1], pv[0])] {
+        if outside(g, s, u) && visible_extreme_outside(k, qv, qr, visible, (s, u)) {
+            return Some(separated(s, u));
         }
     }
     // G runs backward along Q: Q's counter-clockwise edge is at(e + 1) → at(e). Then
@@ -254,6 +310,80 @@ fn from_final_edges<K: Kernel>(
         }
     }
     None
+}
+
+/// Whether the final chain G (from `first` to `last`) holds the minimum over the whole
+/// visible chain of g − ℓ, where ℓ is the frame's image of the line of F's edge `e`
+/// (left to right): the visible edge just left of G (from `before`, if any) is no
+/// steeper than ℓ and the one just right of it (to `after`, if any) no less steep. Two slope comparisons, the right one first if
+/// `right_first`.
+///
+/// Then an edge of F whose line has every vertex of G strictly above it (strictly on
+/// its outer side) has the whole visible chain strictly above it: g − ℓ is convex and
+/// piecewise linear, so its minimum over the chain is at a vertex of G. Q lies in the
+/// wedge, above g in the frame, so Q is strictly on the edge's outer side and the edge
+/// separates, with no search. This is the case when the maximum of h lies inside the
+/// edge's span (h's maximum is where F's slope is among g's slopes there).
+fn bracketed<K: Kernel>(
+    fr: &Frame<K>,
+    [first, last]: [Point; 2],
+    [before, after]: [Option<Point>; 2],
+    e: (Point, Point),
+    right_first: bool,
+) -> bool {
+    let left = || before.is_none_or(|b| fr.slope_cmp((b, first), e) != Sign::Positive);
+    let right = || after.is_none_or(|a| fr.slope_cmp((last, a), e) != Sign::Negative);
+    // The side that may fail first: both are pure, only the order of work differs.
+    if right_first {
+        if !right() {
+            return false;
+        }
+        left()
+    } else {
+        if !left() {
+            return false;
+        }
+        right()
+    }
+}
+
+/// Whether Q lies strictly right of P's edge `s` → `u`, by its vertex deepest to the
+/// left of the edge, searched on the chain visible from the pivot only: positions `0..=len` counter-clockwise from `qr`.
+///
+/// If the edge separates, that vertex lies on this chain: the line through it parallel
+/// to the edge supports Q and has the pivot (a vertex of P, on the edge's closed inner
+/// side) strictly on its other side, so one of its two edges has the pivot strictly
+/// outside and is visible. The visible edges' directions span less than π, so the
+/// sign of their cross product with the edge's direction changes at most once along
+/// the chain: leftness grows, then shrinks, and the first edge along which it stops
+/// growing starts at the deepest vertex. One cross product per step. Returns whether
+/// that vertex is strictly outside and extreme (the search compared both its edges
+/// unless it ends the chain; else [`separates`]), so a `true` proves separation
+/// whatever the chain holds.
+fn visible_extreme_outside<K: Kernel>(
+    k: K,
+    qv: &[Point],
+    qr: usize,
+    len: usize,
+    (s, u): (Point, Point),
+) -> bool {
+    let m = qv.len();
+    let index = |j: usize| if qr + j >= m { qr + j - m } else { qr + j };
+    let (mut lo, mut hi) = (0, len);
+    while lo < hi {
+        let mid = lo + (hi - lo) / 2;
+        if k.cross_of_short_edges(s, u, qv[index(mid)], qv[index(mid + 1)]) == Ccw {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    if lo > 0 && lo < len {
+        // The search compared both edges at the vertex: it is extreme.
+        k.orient(s, u, qv[index(lo)]) == Cw
+    } else {
+        separates(k, s, u, qv, index(lo))
+    }
 }
 
 /// A contiguous piece of a polygon's boundary, walked forward or backward, with
