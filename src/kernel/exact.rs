@@ -454,17 +454,7 @@ impl Kernel for ExactWithin {
         if valid && s.abs() > bound {
             nonzero_sign(s)
         } else {
-            // The points go to the cold function one by one (registers and the
-            // argument area, written on this path only): passed as an array, the
-            // array had to be in memory before the comparison, which cost the
-            // algorithms' hot paths sixteen stores per call.
-            let [
-                [a0, b0, c0, d0],
-                [a1, b1, c1, d1],
-                [a2, b2, c2, d2],
-                [a3, b3, c3, d3],
-            ] = factors;
-            cross_products_within_slow(a0, b0, c0, d0, a1, b1, c1, d1, a2, b2, c2, d2, a3, b3, c3, d3)
+            cross_products_out_of_line(factors)
         }
     }
 
@@ -506,13 +496,7 @@ impl Kernel for ExactWithin {
         } else if s < -bound {
             Sign::Negative
         } else {
-            let [
-                [a0, b0, c0, d0],
-                [a1, b1, c1, d1],
-                [a2, b2, c2, d2],
-                [a3, b3, c3, d3],
-            ] = factors;
-            cross_products_within_slow(a0, b0, c0, d0, a1, b1, c1, d1, a2, b2, c2, d2, a3, b3, c3, d3)
+            cross_products_out_of_line(factors)
         }
     }
 }
@@ -543,6 +527,21 @@ fn cross_within_slow(a: Point, b: Point, c: Point, d: Point) -> Orientation {
 #[inline(never)]
 fn dot_within_slow(a: Point, b: Point, c: Point, d: Point) -> Sign {
     Exact.dot(a, b, c, d)
+}
+
+/// Hands the factors of an undecided degree-4 call to [`cross_products_within_slow`]
+/// point by point (registers and the argument area, written on this path only):
+/// passed as an array, the array had to be in memory before the comparison, which cost
+/// the algorithms' hot paths sixteen stores per call.
+#[inline(always)]
+fn cross_products_out_of_line(factors: [[Point; 4]; 4]) -> Sign {
+    let [
+        [a0, b0, c0, d0],
+        [a1, b1, c1, d1],
+        [a2, b2, c2, d2],
+        [a3, b3, c3, d3],
+    ] = factors;
+    cross_products_within_slow(a0, b0, c0, d0, a1, b1, c1, d1, a2, b2, c2, d2, a3, b3, c3, d3)
 }
 
 /// [`ExactWithin::cross_products_sign`]'s undecided calls, the sixteen points of its
