@@ -6,7 +6,7 @@
 //! line through an input point of A and an input point of B with all of A on its closed
 //! right side and all of B on its closed left side (an inner common tangent of the two
 //! hulls), plus the indices of the two tangent points. The Chazelle–Liu–Magen test
-//! ([`crate::intersect::Clm`]) runs it on samples and chains of linked polygons, on
+//! (`intersect::Clm`) runs it on samples and chains of linked polygons, on
 //! contiguous copies of their points made once per set (several LPs read the same
 //! sample); [`ArenaPoints`] reads a polygon's arena positions in place instead.
 //!
