@@ -908,23 +908,20 @@ impl SmallSet {
     /// Inserts `x` in lexicographic order (insertion sort: a few points), unless it is
     /// there already or the set is full.
     #[inline]
-    fn insert(&mut self, x: Point, pos: Option<usize>) {
-        let mut i = self.len;
-        while i > 0 {
-            match self.pts[i - 1].lex_cmp(x) {
-                std::cmp::Ordering::Greater => i -= 1,
-                std::cmp::Ordering::Equal if self.pts[i - 1] == x => return,
-                _ => break,
-            }
-        }
-        if self.len == WITNESS_MAX {
+    fn insert(&mut self, x: Point, pos: usize) {
+        let n = self.len;
+        if n == WITNESS_MAX || self.pts[..n].contains(&x) {
             return;
         }
-        self.pts.copy_within(i..self.len, i + 1);
-        self.pos.copy_within(i..self.len, i + 1);
+        let mut i = n;
+        while i > 0 && self.pts[i - 1].lex_cmp(x) == std::cmp::Ordering::Greater {
+            self.pts[i] = self.pts[i - 1];
+            self.pos[i] = self.pos[i - 1];
+            i -= 1;
+        }
         self.pts[i] = x;
-        self.pos[i] = pos.unwrap_or(usize::MAX);
-        self.len += 1;
+        self.pos[i] = pos;
+        self.len = n + 1;
     }
 
     /// The hull (Andrew's monotone chain on the sorted points), computed once.
@@ -998,7 +995,7 @@ pub(crate) enum Radon {
 pub(crate) fn witness_certificate<K: Kernel>(k: K, points: impl Iterator<Item = WitnessVertex>) -> Radon {
     let mut sets = [SmallSet::EMPTY, SmallSet::EMPTY];
     for w in points {
-        sets[(w.of == Which::Q) as usize].insert(w.point, w.pos);
+        sets[(w.of == Which::Q) as usize].insert(w.point, w.pos.unwrap_or(usize::MAX));
     }
     let [ps, qs] = &mut sets;
     // Each hull is built only when needed: Q's first, for P's points.
@@ -1427,6 +1424,146 @@ mod tests {
             resolve_chords(Exact, h.vertices(), (0, 2), far.vertices(), (0, 1)),
             None
         );
+    }
+
+    /// The positions of a linked polygon in boundary order.
+    fn boundary_order(lp: &LinkedPolygon) -> Vec<usize> {
+        let mut at = lp.position(lp.first()).unwrap();
+        (0..lp.len())
+            .map(|_| {
+                let here = at;
+                at = lp.next_at(at);
+                here
+            })
+            .collect()
+    }
+
+    /// Chords of crossing polygons resolved by walks on linked polygons, with the walks'
+    /// starts chosen by `f64` distances: at ordinary scale, where those distances
+    /// overflow (2^1000: every one is infinite or NaN) and where they underflow to zero
+    /// (2^-1000), so that the exact check and the fallback to the chord's own end are
+    /// used. Every certificate found verifies, and chords that meet always give one.
+    #[test]
+    fn linked_chords_resolve_at_every_scale() {
+        use crate::generate::{Family, Relation, map_pair, pair};
+        use rand::SeedableRng;
+        let mut rng = rand::rngs::SmallRng::seed_from_u64(0x11c4);
+        let scales = [1.0, 2f64.powi(1000), 2f64.powi(-1000)];
+        let mut resolved = [0; 3];
+        for round in 0..6 {
+            let base = pair(Family::Rotated, 40 + 7 * round, Relation::Intersecting, &mut rng);
+            for (&scale, resolved) in scales.iter().zip(&mut resolved) {
+                let Some((p, q)) = map_pair(&base, |v| Point::new(v.x * scale, v.y * scale)) else {
+                    continue;
+                };
+                let lp = LinkedPolygon::from_convex_shuffled(&p, &mut rng);
+                let lq = LinkedPolygon::from_convex_shuffled(&q, &mut rng);
+                let (op, oq) = (boundary_order(&lp), boundary_order(&lq));
+                // Every fifth vertex serves as a walk's possible start.
+                let starts = |lp: &LinkedPolygon, o: &[usize]| -> (Vec<u32>, Vec<Point>) {
+                    o.iter().step_by(5).map(|&i| (i as u32, lp.point_at(i))).unzip()
+                };
+                let (sp, sq) = (starts(&lp, &op), starts(&lq, &oq));
+                for i in (0..op.len()).step_by(2) {
+                    for j in (0..oq.len()).step_by(2) {
+                        let a = (op[i], op[(i + 7) % op.len()]);
+                        let b = (oq[j], oq[(j + 9) % oq.len()]);
+                        let meets = segment_contact(
+                            Exact,
+                            lp.point_at(a.0),
+                            lp.point_at(a.1),
+                            lq.point_at(b.0),
+                            lq.point_at(b.1),
+                        )
+                        .meets();
+                        let c = resolve_linked_chords(Exact, &lp, a, (&sp.0, &sp.1), &lq, b, (&sq.0, &sq.1));
+                        assert_eq!(c.is_some(), meets, "scale {scale}, chords {a:?} {b:?}");
+                        if let Some(c) = c {
+                            assert_eq!(verify_linked(&lp, &lq, &c), Ok(()), "scale {scale}: {c:?}");
+                            *resolved += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert!(
+            resolved.iter().all(|&r| r > 20),
+            "chords resolved per scale: {resolved:?}"
+        );
+    }
+
+    /// The LP's witness points: a vertex inside (on a vertex, on an edge, strictly
+    /// inside), repeats, and crossing segments with no vertex inside.
+    #[test]
+    fn witness_points_give_a_vertex_inside_or_chords() {
+        let w = |x: f64, y: f64, of: Which, pos: usize| WitnessVertex {
+            point: Point::new(x, y),
+            of,
+            pos: Some(pos),
+        };
+        let (p, q) = (Which::P, Which::Q);
+        // A point of P on an edge of Q's triangle (touching), repeated.
+        let pts = [
+            w(1., 0., p, 0),
+            w(1., 0., p, 0),
+            w(5., 5., p, 1),
+            w(0., 0., q, 2),
+            w(2., 0., q, 3),
+            w(0., 2., q, 4),
+        ];
+        match witness_certificate(Exact, pts.into_iter()) {
+            Radon::Inside(Certificate::VertexInside { of, point }) => {
+                assert_eq!((of, point), (Which::P, Point::new(1., 0.)));
+            }
+            _ => panic!("expected a vertex inside"),
+        }
+        // A vertex of Q strictly inside P's triangle, P's points listed after Q's.
+        let pts = [
+            w(1., 1., q, 0),
+            w(9., 9., q, 1),
+            w(0., 0., p, 2),
+            w(4., 0., p, 3),
+            w(0., 4., p, 4),
+        ];
+        assert!(matches!(
+            witness_certificate(Exact, pts.into_iter()),
+            Radon::Inside(Certificate::VertexInside { of: Which::Q, .. })
+        ));
+        // Two crossing segments, no vertex inside: the chords with their positions.
+        let pts = [
+            w(-1., 0., p, 7),
+            w(1., 0., p, 8),
+            w(0., -1., q, 5),
+            w(0., 1., q, 6),
+        ];
+        match witness_certificate(Exact, pts.into_iter()) {
+            Radon::Chords(a, b) => {
+                let (mut a, mut b) = (a.map(Option::unwrap), b.map(Option::unwrap));
+                a.sort_unstable();
+                b.sort_unstable();
+                assert_eq!((a, b), ([7, 8], [5, 6]));
+            }
+            _ => panic!("expected crossing chords"),
+        }
+        // Apart: nothing.
+        let pts = [w(0., 0., p, 0), w(1., 0., p, 1), w(5., 5., q, 2), w(6., 5., q, 3)];
+        assert!(matches!(
+            witness_certificate(Exact, pts.into_iter()),
+            Radon::Nothing
+        ));
+        // A one-ulp gap between a vertex of P and Q's edge: no contact.
+        let below = -f64::from_bits(1);
+        let pts = [
+            w(1., below, p, 0),
+            w(1., -3., p, 1),
+            w(0., 0., q, 2),
+            w(2., 0., q, 3),
+            w(1., 2., q, 4),
+        ];
+        assert!(matches!(
+            witness_certificate(Exact, pts.into_iter()),
+            Radon::Nothing
+        ));
     }
 
     #[test]

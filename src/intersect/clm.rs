@@ -425,7 +425,7 @@ fn certify_with<K: Kernel>(
                 pos: w.index.map(|i| positions[i] as usize),
             }
         };
-        let (pc, qc) = match witness_certificate(k, ws.lp.witness().map(vertex)) {
+        let (pc, qc) = match witness_certificate(k, ws.lp.witness_points().iter().map(|&w| vertex(w))) {
             Radon::Inside(c) => return Some(c),
             Radon::Chords(pc, qc) => (pc, qc),
             Radon::Nothing => return None,
