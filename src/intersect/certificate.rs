@@ -54,7 +54,7 @@
 //! inconsistent kernel leaves even those without one.
 
 use crate::kernel::{
-    Exact, Kernel, Orientation, Point, SegmentContact, Sign, point_on_segment, segment_contact,
+    DirectedLine, Exact, Kernel, Orientation, Point, SegmentContact, Sign, point_on_segment, segment_contact,
 };
 use crate::polygon::{ConvexPolygon, LinkedPolygon};
 use std::fmt;
@@ -1192,7 +1192,9 @@ fn reduce_linked<K: Kernel>(
     if best.1 != usize::MAX && k.orient(s, t, start_points[best.1]) == sigma {
         v = starts[best.1] as usize;
     }
-    let on_side = |pos: usize| k.orient(s, t, poly.point_at(pos)) == sigma;
+    // The walk tests many points against one line: its direction is computed once.
+    let line = DirectedLine::new(s, t);
+    let on_side = |pos: usize| k.orient_line(&line, poly.point_at(pos)) == sigma;
     let (mut cur, forward) = {
         let (next, prev) = (poly.next_at(v), poly.prev_at(v));
         if !on_side(next) || (on_side(prev) && !nearer(poly.point_at(prev), poly.point_at(next))) {
