@@ -54,7 +54,7 @@
 //! inconsistent kernel leaves even those without one.
 
 use crate::kernel::{
-    Exact, Kernel, Orientation, Point, SegmentContact, Sign, point_on_segment, segment_contact,
+    DirectedLine, Exact, Kernel, Orientation, Point, SegmentContact, Sign, point_on_segment, segment_contact,
 };
 use crate::polygon::{ConvexPolygon, LinkedPolygon};
 use std::fmt;
@@ -886,70 +886,96 @@ pub(crate) struct WitnessVertex {
 /// At most this many witness points per polygon.
 const WITNESS_MAX: usize = 9;
 
-/// The convex hull of at most [`WITNESS_MAX`] points (indices into them), counter-clockwise
-/// without collinear points: one point, a segment, or a polygon.
-fn small_hull<K: Kernel>(k: K, pts: &[Point]) -> ([usize; WITNESS_MAX], usize) {
-    let mut order = [0usize; WITNESS_MAX];
-    let n = pts.len().min(WITNESS_MAX);
-    for (i, o) in order.iter_mut().enumerate().take(n) {
-        *o = i;
-    }
-    if n == 0 {
-        return (order, 0);
-    }
-    order[..n].sort_by(|&a, &b| pts[a].lex_cmp(pts[b]));
-    // Andrew's monotone chain, lower then upper, dropping collinear points.
-    let mut hull = [0usize; 2 * WITNESS_MAX];
-    let mut h = 0;
-    for pass in 0..2 {
-        let start = h;
-        for step in 0..n {
-            let i = if pass == 0 {
-                order[step]
-            } else {
-                order[n - 1 - step]
-            };
-            while h >= start + 2 && k.orient(pts[hull[h - 2]], pts[hull[h - 1]], pts[i]) != Ccw {
-                h -= 1;
-            }
-            hull[h] = i;
-            h += 1;
-        }
-        h -= 1; // the last point starts the other chain
-    }
-    let mut out = [0usize; WITNESS_MAX];
-    let mut len = 0;
-    for &i in &hull[..h.max(1)] {
-        if (len == 0 || pts[out[len - 1]] != pts[i]) && len < WITNESS_MAX {
-            out[len] = i;
-            len += 1;
-        }
-    }
-    while len > 1 && pts[out[len - 1]] == pts[out[0]] {
-        len -= 1;
-    }
-    (out, len)
+/// At most [`WITNESS_MAX`] vertices of one polygon, sorted lexicographically without
+/// repeats, with their positions (`usize::MAX`: unknown), and their convex hull.
+struct SmallSet {
+    pts: [Point; WITNESS_MAX],
+    pos: [usize; WITNESS_MAX],
+    len: usize,
+    /// The hull, counter-clockwise without collinear points (indices into `pts`): one
+    /// point, a segment, or a polygon; `None` until [`hull`](Self::hull) runs.
+    hull: Option<([u8; WITNESS_MAX], usize)>,
 }
 
-/// Whether `x` lies in the hull `hull` (indices into `pts`) of [`small_hull`].
-fn in_small_hull<K: Kernel>(k: K, pts: &[Point], hull: &[usize], x: Point) -> bool {
-    match hull.len() {
-        0 => false,
-        1 => pts[hull[0]] == x,
-        2 => point_on_segment(k, pts[hull[0]], pts[hull[1]], x),
-        n => (0..n).all(|i| k.orient(pts[hull[i]], pts[hull[(i + 1) % n]], x) != Cw),
-    }
-}
-
-/// The segments bounding a hull of [`small_hull`]: (i, j) index pairs.
-fn hull_edges(hull: &[usize]) -> impl Iterator<Item = (usize, usize)> + '_ {
-    let n = hull.len();
-    let count = match n {
-        0 | 1 => 0,
-        2 => 1,
-        _ => n,
+impl SmallSet {
+    const EMPTY: SmallSet = SmallSet {
+        pts: [Point { x: 0.0, y: 0.0 }; WITNESS_MAX],
+        pos: [usize::MAX; WITNESS_MAX],
+        len: 0,
+        hull: None,
     };
-    (0..count).map(move |i| (hull[i], hull[(i + 1) % n]))
+
+    /// Inserts `x` in lexicographic order (insertion sort: a few points), unless it is
+    /// there already or the set is full.
+    #[inline]
+    fn insert(&mut self, x: Point, pos: usize) {
+        let n = self.len;
+        if n == WITNESS_MAX || self.pts[..n].contains(&x) {
+            return;
+        }
+        let mut i = n;
+        while i > 0 && self.pts[i - 1].lex_cmp(x) == std::cmp::Ordering::Greater {
+            self.pts[i] = self.pts[i - 1];
+            self.pos[i] = self.pos[i - 1];
+            i -= 1;
+        }
+        self.pts[i] = x;
+        self.pos[i] = pos;
+        self.len = n + 1;
+    }
+
+    /// The hull (Andrew's monotone chain on the sorted points), computed once.
+    fn hull<K: Kernel>(&mut self, k: K) -> ([u8; WITNESS_MAX], usize) {
+        if self.hull.is_none() {
+            let (pts, n) = (&self.pts, self.len);
+            let mut chain = [0u8; 2 * WITNESS_MAX];
+            let mut h = 0;
+            if n > 0 {
+                for pass in 0..2 {
+                    let start = h;
+                    for step in 0..n {
+                        let i = if pass == 0 { step } else { n - 1 - step };
+                        while h >= start + 2
+                            && k.orient(pts[chain[h - 2] as usize], pts[chain[h - 1] as usize], pts[i]) != Ccw
+                        {
+                            h -= 1;
+                        }
+                        chain[h] = i as u8;
+                        h += 1;
+                    }
+                    h -= 1; // the last point starts the other chain
+                }
+            }
+            // One point gives [0, 0]: keep it once. Points are distinct, so only the
+            // closing repeat of the first point remains to drop.
+            let mut len = h.max(usize::from(n > 0)).min(WITNESS_MAX);
+            while len > 1 && chain[len - 1] == chain[0] {
+                len -= 1;
+            }
+            let mut out = [0u8; WITNESS_MAX];
+            out[..len].copy_from_slice(&chain[..len]);
+            self.hull = Some((out, len));
+        }
+        self.hull.expect("computed above")
+    }
+
+    /// The first of `xs` in the hull (closed).
+    fn first_inside<K: Kernel>(&mut self, k: K, xs: &[Point]) -> Option<Point> {
+        let (h, n) = self.hull(k);
+        let (pts, h) = (&self.pts, &h[..n]);
+        xs.iter().copied().find(|&x| match n {
+            0 => false,
+            1 => pts[h[0] as usize] == x,
+            2 => point_on_segment(k, pts[h[0] as usize], pts[h[1] as usize], x),
+            _ => (0..n).all(|i| {
+                k.orient(
+                    pts[h[i] as usize],
+                    pts[h[if i + 1 == n { 0 } else { i + 1 }] as usize],
+                    x,
+                ) != Cw
+            }),
+        })
+    }
 }
 
 /// What [`witness_certificate`] found among a few vertices of P and of Q.
@@ -967,41 +993,41 @@ pub(crate) enum Radon {
 /// Q's) intersect, as the LP reports them: a vertex of one in the hull of the other's
 /// (so in that polygon), or else two crossing chords.
 pub(crate) fn witness_certificate<K: Kernel>(k: K, points: impl Iterator<Item = WitnessVertex>) -> Radon {
-    let blank = WitnessVertex {
-        point: Point::default(),
-        of: Which::P,
-        pos: None,
-    };
-    let mut sets = [[blank; WITNESS_MAX]; 2];
-    let mut lens = [0usize; 2];
+    let mut sets = [SmallSet::EMPTY, SmallSet::EMPTY];
     for w in points {
-        let s = (w.of == Which::Q) as usize;
-        if lens[s] < WITNESS_MAX {
-            sets[s][lens[s]] = w;
-            lens[s] += 1;
-        }
+        sets[(w.of == Which::Q) as usize].insert(w.point, w.pos.unwrap_or(usize::MAX));
     }
-    let pts: [[Point; WITNESS_MAX]; 2] = [0, 1].map(|s| sets[s].map(|w| w.point));
-    let (pp, qp) = (&pts[0][..lens[0]], &pts[1][..lens[1]]);
-    let (hp, lp) = small_hull(k, pp);
-    let (hq, lq) = small_hull(k, qp);
-    let (hp, hq) = (&hp[..lp], &hq[..lq]);
-    if let Some(&x) = pp.iter().find(|&&x| in_small_hull(k, qp, hq, x)) {
+    let [ps, qs] = &mut sets;
+    // Each hull is built only when needed: Q's first, for P's points.
+    if let Some(x) = qs.first_inside(k, &ps.pts[..ps.len]) {
         return Radon::Inside(Certificate::VertexInside {
             of: Which::P,
             point: x,
         });
     }
-    if let Some(&x) = qp.iter().find(|&&x| in_small_hull(k, pp, hp, x)) {
+    if let Some(x) = ps.first_inside(k, &qs.pts[..qs.len]) {
         return Radon::Inside(Certificate::VertexInside {
             of: Which::Q,
             point: x,
         });
     }
-    for (a, b) in hull_edges(hp) {
-        for (c, d) in hull_edges(hq) {
-            if segment_contact(k, pp[a], pp[b], qp[c], qp[d]).meets() {
-                return Radon::Chords([sets[0][a].pos, sets[0][b].pos], [sets[1][c].pos, sets[1][d].pos]);
+    let edges = |s: &mut SmallSet| {
+        let (h, n) = s.hull(k);
+        let count = match n {
+            0 | 1 => 0,
+            2 => 1,
+            _ => n,
+        };
+        (h, n, count)
+    };
+    let ((hp, np, cp), (hq, nq, cq)) = (edges(ps), edges(qs));
+    let pos = |p: usize| (p != usize::MAX).then_some(p);
+    for i in 0..cp {
+        let (a, b) = (hp[i] as usize, hp[if i + 1 == np { 0 } else { i + 1 }] as usize);
+        for j in 0..cq {
+            let (c, d) = (hq[j] as usize, hq[if j + 1 == nq { 0 } else { j + 1 }] as usize);
+            if segment_contact(k, ps.pts[a], ps.pts[b], qs.pts[c], qs.pts[d]).meets() {
+                return Radon::Chords([pos(ps.pos[a]), pos(ps.pos[b])], [pos(qs.pos[c]), pos(qs.pos[d])]);
             }
         }
     }
@@ -1028,21 +1054,21 @@ fn hull_into<K: Kernel>(k: K, pts: &mut Vec<Point>, out: &mut Vec<Point>) {
         out.extend_from_slice(pts);
         return;
     }
-    for pass in 0..2 {
-        let start = out.len();
-        let iter: Box<dyn Iterator<Item = &Point>> = if pass == 0 {
-            Box::new(pts.iter())
-        } else {
-            Box::new(pts.iter().rev())
-        };
-        for &x in iter {
-            while out.len() >= start + 2 && k.orient(out[out.len() - 2], out[out.len() - 1], x) != Ccw {
-                out.pop();
-            }
-            out.push(x);
+    let push = |out: &mut Vec<Point>, start: usize, x: Point| {
+        while out.len() >= start + 2 && k.orient(out[out.len() - 2], out[out.len() - 1], x) != Ccw {
+            out.pop();
         }
-        out.pop(); // the last point starts the other chain
+        out.push(x);
+    };
+    for &x in pts.iter() {
+        push(out, 0, x);
     }
+    out.pop(); // the last point starts the other chain
+    let start = out.len();
+    for &x in pts.iter().rev() {
+        push(out, start, x);
+    }
+    out.pop();
     if out.len() < 3 {
         // All collinear: keep the two extremes.
         out.clear();
@@ -1129,31 +1155,46 @@ fn linked_edge(poly: &LinkedPolygon, u: usize, w: usize) -> Option<usize> {
 /// the segment st). The boundary's part strictly on side σ is one run of vertices; its
 /// ends are the two edges where the boundary crosses the line, at Y1 and Y2, and the
 /// polygon meets the line in [Y1, Y2], which holds the crossing X of chord and segment.
-/// From the vertex of `starts` ∪ {`start`} on side σ nearest the line, the walk towards
-/// the line reaches one end (distances along the run are unimodal) without passing
-/// another vertex of `starts`. If that edge misses the segment, the segment's endpoint
-/// nearer its line lies between X and Y1, inside the polygon.
+/// From a vertex of the run, the walk towards the line reaches one end (distances along
+/// the run are unimodal). It starts from the vertex of `starts` (positions, and the
+/// points at them) ∪ {`start`} on side σ nearest the line, so that it passes no other
+/// vertex of `starts`. That vertex is chosen by the distances as computed in `f64` (one
+/// pass over the contiguous points, no predicate), and checked with one exact
+/// orientation: the walk's correctness needs only a start on side σ, the choice bounds
+/// its length. If the end's edge misses the segment, the segment's endpoint nearer its
+/// line lies between X and Y1, inside the polygon.
 fn reduce_linked<K: Kernel>(
     k: K,
     poly: &LinkedPolygon,
     start: usize,
-    starts: &[u32],
+    (starts, start_points): (&[u32], &[Point]),
     (s, t): (Point, Point),
 ) -> Reduced {
+    debug_assert_eq!(starts.len(), start_points.len());
     let sigma = k.orient(s, t, poly.point_at(start));
     if sigma == Collinear {
         return Reduced::Fail;
     }
     // x is nearer the line than y (both on side σ).
     let nearer = |x: Point, y: Point| k.cross(s, t, y, x) == sigma.reverse();
-    let mut v = start;
-    for &pos in starts {
-        let x = poly.point_at(pos as usize);
-        if k.orient(s, t, x) == sigma && nearer(x, poly.point_at(v)) {
-            v = pos as usize;
+    // The signed distance (times |t − s|) towards side σ, rounded: only a guide.
+    let (dx, dy) = (t.x - s.x, t.y - s.y);
+    let flip = if sigma == Ccw { 1.0 } else { -1.0 };
+    let height = |x: Point| flip * (dx * (x.y - s.y) - dy * (x.x - s.x));
+    let mut best = (height(poly.point_at(start)), usize::MAX);
+    for (i, &x) in start_points.iter().enumerate() {
+        let h = height(x);
+        if h > 0.0 && h < best.0 {
+            best = (h, i);
         }
     }
-    let on_side = |pos: usize| k.orient(s, t, poly.point_at(pos)) == sigma;
+    let mut v = start;
+    if best.1 != usize::MAX && k.orient(s, t, start_points[best.1]) == sigma {
+        v = starts[best.1] as usize;
+    }
+    // The walk tests many points against one line: its direction is computed once.
+    let line = DirectedLine::new(s, t);
+    let on_side = |pos: usize| k.orient_line(&line, poly.point_at(pos)) == sigma;
     let (mut cur, forward) = {
         let (next, prev) = (poly.next_at(v), poly.prev_at(v));
         if !on_side(next) || (on_side(prev) && !nearer(poly.point_at(prev), poly.point_at(next))) {
@@ -1200,10 +1241,10 @@ pub(crate) fn resolve_linked_chords<K: Kernel>(
     k: K,
     p: &LinkedPolygon,
     (a1, a2): (usize, usize),
-    p_starts: &[u32],
+    p_starts: (&[u32], &[Point]),
     q: &LinkedPolygon,
     (b1, b2): (usize, usize),
-    q_starts: &[u32],
+    q_starts: (&[u32], &[Point]),
 ) -> Option<Certificate> {
     let (a, b, s, t) = (p.point_at(a1), p.point_at(a2), q.point_at(b1), q.point_at(b2));
     let contact = segment_contact(k, a, b, s, t);
@@ -1385,6 +1426,146 @@ mod tests {
             resolve_chords(Exact, h.vertices(), (0, 2), far.vertices(), (0, 1)),
             None
         );
+    }
+
+    /// The positions of a linked polygon in boundary order.
+    fn boundary_order(lp: &LinkedPolygon) -> Vec<usize> {
+        let mut at = lp.position(lp.first()).unwrap();
+        (0..lp.len())
+            .map(|_| {
+                let here = at;
+                at = lp.next_at(at);
+                here
+            })
+            .collect()
+    }
+
+    /// Chords of crossing polygons resolved by walks on linked polygons, with the walks'
+    /// starts chosen by `f64` distances: at ordinary scale, where those distances
+    /// overflow (2^1000: every one is infinite or NaN) and where they underflow to zero
+    /// (2^-1000), so that the exact check and the fallback to the chord's own end are
+    /// used. Every certificate found verifies, and chords that meet always give one.
+    #[test]
+    fn linked_chords_resolve_at_every_scale() {
+        use crate::generate::{Family, Relation, map_pair, pair};
+        use rand::SeedableRng;
+        let mut rng = rand::rngs::SmallRng::seed_from_u64(0x11c4);
+        let scales = [1.0, 2f64.powi(1000), 2f64.powi(-1000)];
+        let mut resolved = [0; 3];
+        for round in 0..6 {
+            let base = pair(Family::Rotated, 40 + 7 * round, Relation::Intersecting, &mut rng);
+            for (&scale, resolved) in scales.iter().zip(&mut resolved) {
+                let Some((p, q)) = map_pair(&base, |v| Point::new(v.x * scale, v.y * scale)) else {
+                    continue;
+                };
+                let lp = LinkedPolygon::from_convex_shuffled(&p, &mut rng);
+                let lq = LinkedPolygon::from_convex_shuffled(&q, &mut rng);
+                let (op, oq) = (boundary_order(&lp), boundary_order(&lq));
+                // Every fifth vertex serves as a walk's possible start.
+                let starts = |lp: &LinkedPolygon, o: &[usize]| -> (Vec<u32>, Vec<Point>) {
+                    o.iter().step_by(5).map(|&i| (i as u32, lp.point_at(i))).unzip()
+                };
+                let (sp, sq) = (starts(&lp, &op), starts(&lq, &oq));
+                for i in (0..op.len()).step_by(2) {
+                    for j in (0..oq.len()).step_by(2) {
+                        let a = (op[i], op[(i + 7) % op.len()]);
+                        let b = (oq[j], oq[(j + 9) % oq.len()]);
+                        let meets = segment_contact(
+                            Exact,
+                            lp.point_at(a.0),
+                            lp.point_at(a.1),
+                            lq.point_at(b.0),
+                            lq.point_at(b.1),
+                        )
+                        .meets();
+                        let c = resolve_linked_chords(Exact, &lp, a, (&sp.0, &sp.1), &lq, b, (&sq.0, &sq.1));
+                        assert_eq!(c.is_some(), meets, "scale {scale}, chords {a:?} {b:?}");
+                        if let Some(c) = c {
+                            assert_eq!(verify_linked(&lp, &lq, &c), Ok(()), "scale {scale}: {c:?}");
+                            *resolved += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert!(
+            resolved.iter().all(|&r| r > 20),
+            "chords resolved per scale: {resolved:?}"
+        );
+    }
+
+    /// The LP's witness points: a vertex inside (on a vertex, on an edge, strictly
+    /// inside), repeats, and crossing segments with no vertex inside.
+    #[test]
+    fn witness_points_give_a_vertex_inside_or_chords() {
+        let w = |x: f64, y: f64, of: Which, pos: usize| WitnessVertex {
+            point: Point::new(x, y),
+            of,
+            pos: Some(pos),
+        };
+        let (p, q) = (Which::P, Which::Q);
+        // A point of P on an edge of Q's triangle (touching), repeated.
+        let pts = [
+            w(1., 0., p, 0),
+            w(1., 0., p, 0),
+            w(5., 5., p, 1),
+            w(0., 0., q, 2),
+            w(2., 0., q, 3),
+            w(0., 2., q, 4),
+        ];
+        match witness_certificate(Exact, pts.into_iter()) {
+            Radon::Inside(Certificate::VertexInside { of, point }) => {
+                assert_eq!((of, point), (Which::P, Point::new(1., 0.)));
+            }
+            _ => panic!("expected a vertex inside"),
+        }
+        // A vertex of Q strictly inside P's triangle, P's points listed after Q's.
+        let pts = [
+            w(1., 1., q, 0),
+            w(9., 9., q, 1),
+            w(0., 0., p, 2),
+            w(4., 0., p, 3),
+            w(0., 4., p, 4),
+        ];
+        assert!(matches!(
+            witness_certificate(Exact, pts.into_iter()),
+            Radon::Inside(Certificate::VertexInside { of: Which::Q, .. })
+        ));
+        // Two crossing segments, no vertex inside: the chords with their positions.
+        let pts = [
+            w(-1., 0., p, 7),
+            w(1., 0., p, 8),
+            w(0., -1., q, 5),
+            w(0., 1., q, 6),
+        ];
+        match witness_certificate(Exact, pts.into_iter()) {
+            Radon::Chords(a, b) => {
+                let (mut a, mut b) = (a.map(Option::unwrap), b.map(Option::unwrap));
+                a.sort_unstable();
+                b.sort_unstable();
+                assert_eq!((a, b), ([7, 8], [5, 6]));
+            }
+            _ => panic!("expected crossing chords"),
+        }
+        // Apart: nothing.
+        let pts = [w(0., 0., p, 0), w(1., 0., p, 1), w(5., 5., q, 2), w(6., 5., q, 3)];
+        assert!(matches!(
+            witness_certificate(Exact, pts.into_iter()),
+            Radon::Nothing
+        ));
+        // A one-ulp gap between a vertex of P and Q's edge: no contact.
+        let below = -f64::from_bits(1);
+        let pts = [
+            w(1., below, p, 0),
+            w(1., -3., p, 1),
+            w(0., 0., q, 2),
+            w(2., 0., q, 3),
+            w(1., 2., q, 4),
+        ];
+        assert!(matches!(
+            witness_certificate(Exact, pts.into_iter()),
+            Radon::Nothing
+        ));
     }
 
     #[test]

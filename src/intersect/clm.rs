@@ -404,6 +404,14 @@ fn certify_with<K: Kernel>(
         };
         (positions, if s.of() == Which::P { p } else { q })
     };
+    // The points at a set's positions, index for index.
+    let points = |s: Set| -> &[Point] {
+        match s {
+            Set::Rp => &ws.rp_points,
+            Set::Rq => &ws.rq_points,
+            Set::Cp | Set::Cq | Set::Chain | Set::Chain2 => &ws.chain_points[s.chain_index()],
+        }
+    };
     if answer {
         // The LP's witness; else a vertex inside among the points it examined; else its
         // two crossing chords, resolved by walks from the nearest sample or chain vertex.
@@ -417,7 +425,7 @@ fn certify_with<K: Kernel>(
                 pos: w.index.map(|i| positions[i] as usize),
             }
         };
-        let (pc, qc) = match witness_certificate(k, ws.lp.witness().map(vertex)) {
+        let (pc, qc) = match witness_certificate(k, ws.lp.witness_points().iter().map(|&w| vertex(w))) {
             Radon::Inside(c) => return Some(c),
             Radon::Chords(pc, qc) => (pc, qc),
             Radon::Nothing => return None,
@@ -425,10 +433,11 @@ fn certify_with<K: Kernel>(
         if let Some(c) = examined_witness(k, ws.lp.examined().map(vertex), scratch) {
             return Some(c);
         }
+        let starts = |s: Set| (set(s).0, points(s));
         let (p_starts, q_starts) = if a.of() == Which::P {
-            (a_pos, b_pos)
+            (starts(a), starts(b))
         } else {
-            (b_pos, a_pos)
+            (starts(b), starts(a))
         };
         return resolve_linked_chords(k, p, (pc[0]?, pc[1]?), p_starts, q, (qc[0]?, qc[1]?), q_starts);
     }

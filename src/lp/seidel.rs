@@ -213,6 +213,12 @@ impl LpWorkspace {
             .map(|(_, &x)| x)
     }
 
+    /// The points of [`witness`](Self::witness) as recorded, repeats included (at most
+    /// nine, in the same order): for callers that drop repeats themselves.
+    pub fn witness_points(&self) -> &[WitnessPoint] {
+        &self.witness.points[..self.witness.len]
+    }
+
     /// After an answer [`Separation::Intersecting`] found by the incremental loop: every
     /// point it had examined (a few dozen, usually), whose hulls intersect; a superset
     /// of [`witness`](Self::witness) that more often holds a point of one set inside
