@@ -940,15 +940,32 @@ fn lift<K: Kernel>(k: K, pv: &[Point], qv: &[Point], pr: Range, q: SmallQ, line:
     match line {
         Sep::QLine(i, j) if (i + 1) % m == j => {
             let (s, u) = (qv[i], qv[j]);
-            let w = deepest((s, u), pv, &pr.triangle(n))?;
+            let t = deepest((s, u), pv, &pr.triangle(n))?;
             // P' lies strictly right of the edge; so does P if P''s deepest vertex is
-            // P's, else P's deepest vertex is outside P' and a search finds it.
-            let w = if separates(k, s, u, pv, w) {
-                w
-            } else {
-                extreme_left(k, pv, (s, u))
-            };
-            separates(k, s, u, pv, w).then_some(Certificate::Separated {
+            // P's.
+            if separates(k, s, u, pv, t) {
+                return Some(Certificate::Separated {
+                    of: Which::Q,
+                    from: s,
+                    to: u,
+                });
+            }
+            // Otherwise P crosses the edge's line away from P' (a chain pruned by an
+            // earlier line), and the separating directions are turned away from this
+            // edge's normal towards those of P's edges at P''s vertex t nearest the
+            // line: each is checked against Q's extreme vertex (one search).
+            if let Some(c) = [(t + n - 1) % n, t].into_iter().find_map(|e| {
+                let (a, b) = (pv[e], pv[(e + 1) % n]);
+                separates(k, a, b, qv, extreme_left(k, qv, (a, b))).then_some(Certificate::Separated {
+                    of: Which::P,
+                    from: a,
+                    to: b,
+                })
+            }) {
+                return Some(c);
+            }
+            // Else P's deepest vertex, found by a search, may still be strictly outside.
+            separates(k, s, u, pv, extreme_left(k, pv, (s, u))).then_some(Certificate::Separated {
                 of: Which::Q,
                 from: s,
                 to: u,
