@@ -78,10 +78,13 @@
 //!   there, so this is the certified call's extra work on intersecting pairs.
 //! * disjoint pieces: the last separating line is an edge of Q with P' strictly
 //!   outside (or an edge of P with Q' outside). If P's vertex deepest towards it is
-//!   extreme in all of P (two predicates), or P's extreme vertex found by a binary
-//!   search lies strictly outside, that edge separates P and Q. Otherwise the pieces'
-//!   separator is not one for the polygons (Q-pruning keeps only a pocket of Q), and a
-//!   second run with the roles exchanged usually ends on one that is; failing that,
+//!   extreme in all of P (two predicates), that edge separates P and Q. Otherwise P
+//!   crosses its line away from P' (a chain pruned by an earlier line) and P's edges
+//!   at that vertex are tried, each against Q's extreme vertex (one binary search in
+//!   Q; the edge ending there nearly always separates), then P's extreme vertex against
+//!   the Q edge (one binary search in P). Otherwise the pieces' separator is not one
+//!   for the polygons, and a second run with the roles exchanged usually ends on one
+//!   that is (1 ellipse-family pair in 360); failing that,
 //!   only the answer is returned and the certified call completes it
 //!   ([`Fallback`](super::Fallback)).
 //!
