@@ -139,7 +139,7 @@ impl ArrayIntersection for ChazelleDobkin {
         probe: &mut P,
     ) -> bool {
         let k = k.within([p.bounding_box(), q.bounding_box()]);
-        run(k, p.vertices(), q.vertices(), probe).meets()
+        run(k, p.vertices(), q.vertices(), || short_edges(p, q), probe).meets()
     }
 
     /// See the module docs' "Certificate" section.
@@ -152,7 +152,7 @@ impl ArrayIntersection for ChazelleDobkin {
     ) -> Derivation {
         let k = k.within([p.bounding_box(), q.bounding_box()]);
         let (pv, qv) = (p.vertices(), q.vertices());
-        let exit = run(k, pv, qv, probe);
+        let exit = run(k, pv, qv, || short_edges(p, q), probe);
         let found = match exit {
             Exit::AInside => Some(Certificate::VertexInside {
                 of: Which::P,
@@ -599,7 +599,23 @@ fn pencil<K: Kernel>(k: K, q: &[Point], a: Point) -> Option<(usize, usize)> {
     Some((first, last))
 }
 
-fn run<'a, K: Kernel, P: Probe>(k: K, pv: &'a [Point], qv: &'a [Point], probe: &mut P) -> Exit<'a> {
+/// The largest edge extent of the two polygons: every slope comparison crosses edges
+/// of P or Q (the short directions) with vectors between their vertices, the
+/// contract of [`Kernel::within_short_edges`].
+#[inline]
+fn short_edges(p: &ConvexPolygon, q: &ConvexPolygon) -> f64 {
+    let (ep, eq) = (p.edge_extent(), q.edge_extent());
+    if ep > eq || ep.is_nan() { ep } else { eq }
+}
+
+/// The pruning itself; `e` gives [`short_edges`] of the polygons, for the frame's kernel.
+fn run<'a, K: Kernel, P: Probe>(
+    k: K,
+    pv: &'a [Point],
+    qv: &'a [Point],
+    e: impl FnOnce() -> f64,
+    probe: &mut P,
+) -> Exit<'a> {
     let (n, m) = (pv.len(), qv.len());
     let a = pv[0];
     let Some((first, last)) = pencil(k, qv, a) else {
@@ -619,7 +635,14 @@ fn run<'a, K: Kernel, P: Probe>(k: K, pv: &'a [Point], qv: &'a [Point], probe: &
         hi: g_edges,
     };
     let (ql, qr) = (g.at(0), g.at(g_edges));
-    let fr = Frame { k, a, ql, qr };
+    // The frame's kernel asks `orient` and the slope comparison only, whose factors'
+    // short directions are edges of P and Q.
+    let fr = Frame {
+        k: k.within_short_edges(e),
+        a,
+        ql,
+        qr,
+    };
     // The window: directions common to the pencil and to the angle of P at A.
     let (p1, pl) = (pv[1], pv[n - 1]);
     let (mut dlo, k0) = if fr.in_arc(ql, p1, pl) {

@@ -329,14 +329,20 @@ impl ExactWithin {
 
     /// The bound of [`Kernel::cross_products_sign_of_short_edges`] for
     /// `m = m₀m₁ + m₂m₃` (see there), from the two bounds the kernel keeps, so that it
-    /// costs no field: `8B₂·m + 2^-620·B₄ + 2^-1072`. As `B₂ ≥ 6u·P`, the first term is
-    /// at least `48u·P·m` (less one rounding); for `P ∈ [2^-400, 2^250]` the second is
-    /// at least `2^-1069·P`; outside that range `B₄` is infinite and so is the bound.
+    /// costs no field: `8B₂·m + (0·B₄ + 2^-1010·B₂ + 2^-1072)`. As `B₂ ≥ 6u·P` (less
+    /// two roundings), the first term is at least `48u·P·m` (less one rounding) and the
+    /// second at least `2^-1060·P` (less one rounding of at most 2^-1075): at least
+    /// `2^-1069·P` for `P ≥ 2^-6`; for smaller `P` the underflow terms it must cover,
+    /// `2^-1070.9·w² + 2^-1074` (see there), are below `2^-1072`. `0·B₄` is zero for a
+    /// finite `B₄`, that is `P ∈ [2^-400, 2^250]`, and NaN outside, where the bound must
+    /// not decide: NaN fails both comparisons. It uses `B₄` only as that range flag, so
+    /// it stays valid on a kernel from [`Kernel::within_short_edges`], whose `B₄` is
+    /// replaced by a smaller (finite) bound.
     #[inline(always)]
     pub(crate) fn short_edges_bound(&self, m: f64) -> f64 {
-        const SCALE: f64 = f64::from_bits((1023 - 620) << 52); // 2^-620
+        const SCALE: f64 = f64::from_bits((1023 - 1010) << 52); // 2^-1010
         const FLOOR: f64 = f64::from_bits(1 << 2); // 2^-1072
-        self.two * (8.0 * m) + (self.four * SCALE + FLOOR)
+        self.two * (8.0 * m) + (self.four * 0.0 + (self.two * SCALE + FLOOR))
     }
 }
 
@@ -474,6 +480,31 @@ impl Kernel for ExactWithin {
     /// finite only where `B₄` is, `P ∈ [2^-400, 2^250]`: no difference exceeds 2^125,
     /// no value overflows. Elsewhere every undecided call goes out of line. For edges
     /// of length `e` it is about `B₄·e²/w²`.
+    /// `B₄` replaced by [`short_edges_bound`](ExactWithin::short_edges_bound) of
+    /// `M = 2·fl(e·e)`, `e = e()`, when that is smaller (the other bounds unchanged). Every call
+    /// within the contract has `mᵢ ≤ e` for each factor's short direction, so its own
+    /// computed `m = fl(fl(m₀m₁) + fl(m₂m₃))` is at most `fl(fl(e·e) + fl(e·e)) = M`
+    /// (rounding is monotonic), and the bound is monotonic in `m`: `M`'s bound is at
+    /// least the call's, which the derivation at
+    /// [`cross_products_sign_of_short_edges`](Kernel::cross_products_sign_of_short_edges)
+    /// proves valid. The replaced `B₄` is finite only where the old one was (an
+    /// infinite `B₄` makes the bound NaN, and the comparison keeps `B₄`), and the
+    /// short-edge bound does not depend on `B₄`'s value, so it stays valid when this
+    /// is applied again. A negative or NaN `e` promises nothing: the bound is NaN
+    /// and `B₄` is kept.
+    #[inline]
+    fn within_short_edges(self, e: impl FnOnce() -> f64) -> ExactWithin {
+        let e = e();
+        let e = if e >= 0.0 { e } else { f64::NAN };
+        let bound = self.short_edges_bound(2.0 * (e * e));
+        let four = if bound < self.four { bound } else { self.four };
+        ExactWithin {
+            four,
+            neg_four: -four,
+            ..self
+        }
+    }
+
     #[inline(always)]
     fn cross_products_sign_of_short_edges(self, factors: [[Point; 4]; 4]) -> Sign {
         let cross = |[ux, uy, vx, vy]: [f64; 4]| ux * vy - uy * vx;
@@ -484,20 +515,15 @@ impl Kernel for ExactWithin {
         } else if s < self.neg_four {
             return Sign::Negative;
         }
-        // Plain comparisons: a NaN difference (outside the boxes' contract) gives a NaN
-        // `s`, which fails both tests below.
-        let short = |[ux, uy, _, _]: [f64; 4]| {
-            let (x, y) = (ux.abs(), uy.abs());
-            if x > y { x } else { y }
-        };
-        let bound = self.short_edges_bound(short(d[0]) * short(d[1]) + short(d[2]) * short(d[3]));
-        if s > bound {
-            Sign::Positive
-        } else if s < -bound {
-            Sign::Negative
-        } else {
-            cross_products_out_of_line(factors)
-        }
+        let [
+            [a0, b0, c0, d0],
+            [a1, b1, c1, d1],
+            [a2, b2, c2, d2],
+            [a3, b3, c3, d3],
+        ] = factors;
+        short_edges_within_slow(
+            self.two, self.four, a0, b0, c0, d0, a1, b1, c1, d1, a2, b2, c2, d2, a3, b3, c3, d3,
+        )
     }
 }
 
@@ -573,6 +599,66 @@ fn cross_products_within_slow(
         [a2, b2, c2, d2],
         [a3, b3, c3, d3],
     ])
+}
+
+/// [`ExactWithin::cross_products_sign_of_short_edges`]'s calls that `B₄` leaves open
+/// (with `B₂` and `B₄` of the kernel, and the sixteen points of the factors in order):
+/// the bound scaled to the short directions' lengths (derivation at the method), then
+/// [`Exact`]'s static filter and what follows it. Out of line: on a kernel from
+/// [`Kernel::within_short_edges`] the per-query bound leaves almost nothing to it, and
+/// the per-call bound's dozen instructions and registers stay out of the caller's loop.
+#[cold]
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+fn short_edges_within_slow(
+    two: f64,
+    four: f64,
+    a0: Point,
+    b0: Point,
+    c0: Point,
+    d0: Point,
+    a1: Point,
+    b1: Point,
+    c1: Point,
+    d1: Point,
+    a2: Point,
+    b2: Point,
+    c2: Point,
+    d2: Point,
+    a3: Point,
+    b3: Point,
+    c3: Point,
+    d3: Point,
+) -> Sign {
+    let k = ExactWithin {
+        two,
+        four,
+        neg_two: -two,
+        neg_four: -four,
+    };
+    let factors = [
+        [a0, b0, c0, d0],
+        [a1, b1, c1, d1],
+        [a2, b2, c2, d2],
+        [a3, b3, c3, d3],
+    ];
+    let cross = |[ux, uy, vx, vy]: [f64; 4]| ux * vy - uy * vx;
+    let d = factors.map(factor_differences);
+    let s = cross(d[0]) * cross(d[1]) + cross(d[2]) * cross(d[3]);
+    // Plain comparisons: a NaN difference (outside the boxes' contract) gives a NaN
+    // `s`, which fails both tests below.
+    let short = |[ux, uy, _, _]: [f64; 4]| {
+        let (x, y) = (ux.abs(), uy.abs());
+        if x > y { x } else { y }
+    };
+    let bound = k.short_edges_bound(short(d[0]) * short(d[1]) + short(d[2]) * short(d[3]));
+    if s > bound {
+        Sign::Positive
+    } else if s < -bound {
+        Sign::Negative
+    } else {
+        Exact.cross_products_sign(factors)
+    }
 }
 
 /// The static filter for `det = l − r` or `det = l + r`, `l` and `r` each a product of

@@ -340,6 +340,35 @@ pub trait Kernel: Copy + Clone + Default + fmt::Debug + Send + Sync + 'static {
     fn cross_products_sign_of_short_edges(self, factors: [[Point; 4]; 4]) -> Sign {
         self.cross_products_sign(factors)
     }
+
+    /// The same kernel for a query whose degree-4 calls are all
+    /// [`cross_products_sign_of_short_edges`](Kernel::cross_products_sign_of_short_edges)
+    /// calls (or [`cross_products_sign`](Kernel::cross_products_sign) calls of that
+    /// form) whose short directions `bᵢ − aᵢ` have computed coordinate differences at
+    /// most `e` in magnitude (edges of polygons whose
+    /// [`ConvexPolygon::edge_extent`](crate::ConvexPolygon::edge_extent) is at most `e()`),
+    /// the long ones staying within this kernel's contract. [`ExactWithin`] then
+    /// decides those calls with one per-query bound scaled to `e()`, the comparisons the
+    /// fast kernel makes, instead of computing a bound per call. A degree-4 call
+    /// outside this contract may answer wrongly; the other predicates are unchanged.
+    /// `e` is called only by a kernel that uses it. The default returns the kernel
+    /// itself.
+    ///
+    /// ```
+    /// use polysect::{ConvexPolygon, Exact, Kernel, Sign};
+    /// let p = ConvexPolygon::new([[0.0, 0.0], [4.0, 0.0], [4.0, 1.0], [0.0, 3.0]])?;
+    /// let v = p.vertices();
+    /// let k = Exact.within([p.bounding_box(), p.bounding_box()]).within_short_edges(|| p.edge_extent());
+    /// // (v1 − v0) × (v3 − v0) times (v2 − v1) × (v0 − v2), plus 0 × anything.
+    /// let f = [[v[0], v[1], v[0], v[3]], [v[1], v[2], v[2], v[0]], [v[0], v[0], v[1], v[2]], [v[2], v[3], v[0], v[1]]];
+    /// assert_eq!(k.cross_products_sign_of_short_edges(f), Sign::Positive);
+    /// # Ok::<(), polysect::PolygonError>(())
+    /// ```
+    #[inline]
+    fn within_short_edges(self, e: impl FnOnce() -> f64) -> Self {
+        let _ = e;
+        self
+    }
 }
 
 /// A directed line through two points with its direction `to − from` (computed once,
@@ -514,6 +543,11 @@ impl<K: Kernel> Kernel for ShortEdges<K> {
     #[inline]
     fn cross_products_sign_of_short_edges(self, factors: [[Point; 4]; 4]) -> Sign {
         self.0.cross_products_sign_of_short_edges(factors)
+    }
+
+    #[inline]
+    fn within_short_edges(self, e: impl FnOnce() -> f64) -> Self {
+        ShortEdges(self.0.within_short_edges(e))
     }
 }
 

@@ -1098,6 +1098,7 @@ fn short_edges_cross_products_at_its_bound() {
     let scales = [0, 0, 0, -1074, -1000, -600, -300, 120, 250, 600, 1000];
     let (mut semi, mut edges, mut slow) = (0usize, 0usize, 0usize);
     let mut near = [0usize; 2];
+    let (mut per_query, mut near_query) = (0usize, [0usize; 2]);
     for i in 0..40_000 {
         let e = scales[i % scales.len()];
         let (s1, s2) = (2f64.powi(e / 2), 2f64.powi(e - e / 2));
@@ -1133,6 +1134,32 @@ fn short_edges_cross_products_at_its_bound() {
         assert_eq!(kw.cross_products_sign(factors), want, "{factors:?}");
         assert_eq!(ShortEdges(kw).cross_products_sign_of_short_edges(factors), want);
         assert_eq!(Exact.cross_products_sign_of_short_edges(factors), want);
+        // The per-query bound for edges at most `extent` (both short directions' own
+        // computed differences, so the call is on the contract's edge), applied once
+        // and twice; and a larger promise, which must stay right.
+        let extent = [u1.x - u0.x, u1.y - u0.y, v1.x - v0.x, v1.y - v0.y]
+            .iter()
+            .fold(0.0f64, |w, d| w.max(d.abs()));
+        let ke = kw.within_short_edges(|| extent);
+        assert!(ke.four <= kw.four || !kw.four.is_finite(), "{factors:?}");
+        assert_eq!(ke.four.is_finite(), kw.four.is_finite(), "{factors:?}");
+        assert_eq!(
+            ke.cross_products_sign_of_short_edges(factors),
+            want,
+            "{factors:?}"
+        );
+        let twice = ke.within_short_edges(|| extent);
+        assert_eq!(
+            twice.cross_products_sign_of_short_edges(factors),
+            want,
+            "{factors:?}"
+        );
+        assert_eq!(
+            kw.within_short_edges(|| extent * 3.0)
+                .cross_products_sign_of_short_edges(factors),
+            want
+        );
+        assert_eq!(kw.within_short_edges(|| -1.0).four.to_bits(), kw.four.to_bits());
         // The same tests as the kernel's, on the same computed values.
         let cr = |[ux, uy, vx, vy]: [f64; 4]| ux * vy - uy * vx;
         let m = |[ux, uy, _, _]: [f64; 4]| ux.abs().max(uy.abs());
@@ -1140,6 +1167,13 @@ fn short_edges_cross_products_at_its_bound() {
         let s = cr(d[0]) * cr(d[1]) + cr(d[2]) * cr(d[3]);
         let bound = kw.short_edges_bound(m(d[0]) * m(d[1]) + m(d[2]) * m(d[3]));
         assert_eq!(bound.is_finite(), kw.four.is_finite(), "{factors:?}");
+        if (s > ke.four || s < ke.neg_four) && !(s > kw.four || s < kw.neg_four) {
+            per_query += 1;
+            assert_eq!(Sign::of(s), want, "per-query edge bound: {factors:?}");
+        }
+        if ke.four.is_finite() && s.abs() > ke.four / 4.0 && s.abs() < ke.four * 4.0 {
+            near_query[usize::from(s.abs() <= ke.four)] += 1;
+        }
         if s > kw.four || s < kw.neg_four {
             semi += 1;
         } else if s > bound || s < -bound {
@@ -1158,4 +1192,12 @@ fn short_edges_cross_products_at_its_bound() {
     );
     assert!(slow > 1_000, "too few calls left for the slow path: {slow}");
     assert!(near[0] > 50 && near[1] > 50, "near the bound: {near:?}");
+    assert!(
+        per_query > 5_000,
+        "the per-query bound decided only {per_query} beyond B₄"
+    );
+    assert!(
+        near_query[0] > 50 && near_query[1] > 50,
+        "near the per-query bound: {near_query:?}"
+    );
 }
