@@ -23,6 +23,9 @@
 //! 5. P against CH(C_Q): the LP on R_P and C_Q; intersecting hulls mean P ∩ Q ≠ ∅. Else
 //!    its line L′ gives the chain C′_P of P beyond L′ (step 3 again), and P ∩ CH(C_Q) ≠ ∅
 //!    iff CH(C′_P) ∩ CH(C_Q) ≠ ∅, one more LP. Q against CH(C_P) symmetrically.
+//!    Both chains are convex and come in boundary order, so this last LP is a
+//!    galloping walk along them ([`separate_chains`], exact, from C′_P's first vertex
+//!    and C_Q's tangent vertex on L′), the LP only when the walk gives no answer.
 //!    Order of work: chain walks run two at a time in lockstep, so that their cache
 //!    misses (each step is a dependent load at a random arena position) overlap, and
 //!    each LP runs as soon as the chain it needs is walked (either sample-against-chain
