@@ -106,7 +106,7 @@ fn variants(config: &Config, report: &mut Report) -> io::Result<String> {
             true,
         ),
         (
-            "default, chain-against-chain by the LP",
+            "default with chain-against-chain by the LP",
             Sampling::Independent,
             LpOrder::Caller,
             false,
