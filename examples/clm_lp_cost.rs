@@ -1,6 +1,7 @@
 //! CLM's LP cost per constraint, for instruction counters and profilers:
-//! `clm_lp_cost intersecting|disjoint LOG2 QUERIES` runs QUERIES CLM queries (exact
-//! kernel, default variant) on 16 Rotated pairs of 2^LOG2 vertices per polygon in
+//! `clm_lp_cost intersecting|disjoint LOG2 QUERIES [walk|lp]` runs QUERIES CLM queries
+//! (exact kernel, default variant; with `lp` the chain-against-chain LPs by the LP, not
+//! the walk) on 16 Rotated pairs of 2^LOG2 vertices per polygon in
 //! shuffled arena order, cycled, and prints the wall time per query (timed pass), and
 //! the LPs' constraints, examined points and walked chain vertices per query (a
 //! separate counted pass over the same queries). Count instructions with `valgrind
@@ -8,7 +9,7 @@
 //! queries (the setup): docs/results.md, "The LP's cost per constraint".
 
 use polysect::generate::{self, Family, Relation};
-use polysect::intersect::{ArrayIntersection, Clm, ClmWorkspace, Counts, Linear, LinkedIntersection};
+use polysect::intersect::{ArrayIntersection, ClmVariant, ClmWorkspace, Counts, Linear, LinkedIntersection};
 use polysect::{Exact, LinkedPolygon};
 use rand::SeedableRng;
 use rand::rngs::SmallRng;
@@ -17,10 +18,18 @@ use std::time::Instant;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let usage = "usage: clm_lp_cost intersecting|disjoint LOG2 QUERIES";
-    let [relation, log2, queries] = args.as_slice() else {
-        eprintln!("{usage}");
-        std::process::exit(2);
+    let usage = "usage: clm_lp_cost intersecting|disjoint LOG2 QUERIES [walk|lp]";
+    let (relation, log2, queries, chain_walk) = match args.as_slice() {
+        [r, l, q] => (r, l, q, true),
+        [r, l, q, m] if m == "walk" || m == "lp" => (r, l, q, m == "walk"),
+        _ => {
+            eprintln!("{usage}");
+            std::process::exit(2);
+        }
+    };
+    let clm = ClmVariant {
+        chain_walk,
+        ..ClmVariant::default()
     };
     let (want, rel) = match relation.as_str() {
         "intersecting" => (true, Relation::Intersecting),
@@ -54,7 +63,7 @@ fn main() {
     let mut qrng = SmallRng::seed_from_u64(7);
     for i in 0..queries {
         let (p, q) = &pairs[i % pairs.len()];
-        let hit = Clm.intersects_in(Exact, p, q, &mut qrng, &mut ws, &mut counts);
+        let hit = clm.intersects_in(Exact, p, q, &mut qrng, &mut ws, &mut counts);
         assert_eq!(hit, want);
     }
     let mut qrng = SmallRng::seed_from_u64(7);
@@ -63,7 +72,7 @@ fn main() {
     for i in 0..queries {
         let (p, q) = &pairs[i % pairs.len()];
         hits +=
-            usize::from(Clm.intersects_with_workspace(Exact, black_box(p), black_box(q), &mut qrng, &mut ws));
+            usize::from(clm.intersects_with_workspace(Exact, black_box(p), black_box(q), &mut qrng, &mut ws));
     }
     let secs = start.elapsed().as_secs_f64();
     let per = |x: u64| x as f64 / queries.max(1) as f64;

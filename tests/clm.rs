@@ -314,17 +314,18 @@ fn algorithm_enum_and_probe() {
     }
 }
 
-/// The thesis's variants (Fisher–Yates sampling, the caller randomising the LP) answer
-/// as `Linear` does under the exact kernel, on the touching families and random
+/// The thesis's variants (Fisher–Yates sampling, the caller randomising the LP), with
+/// and without the chain-against-chain walk, answer as `Linear` does under the exact kernel, on the touching families and random
 /// pairs, several seeds per pair.
 #[test]
 fn thesis_variants_agree_with_linear() {
     let mut rng = SmallRng::seed_from_u64(SEED + 9);
     let mut ws = ClmWorkspace::default();
     let variants = [
-        (Sampling::FisherYates, LpOrder::Lp),
-        (Sampling::Independent, LpOrder::Caller),
-        (Sampling::FisherYates, LpOrder::Caller),
+        (Sampling::FisherYates, LpOrder::Lp, true),
+        (Sampling::Independent, LpOrder::Caller, false),
+        (Sampling::FisherYates, LpOrder::Caller, false),
+        (Sampling::Independent, LpOrder::Lp, false),
     ];
     let (mut queries, mut intersecting) = (0u32, 0u32);
     for &family in Family::TOUCHING.iter().chain([Family::Rotated].iter()) {
@@ -335,15 +336,19 @@ fn thesis_variants_agree_with_linear() {
                 let truth = Linear.intersects_with(Exact, &p, &q);
                 let lp = LinkedPolygon::from_convex_shuffled(&p, &mut rng);
                 let lq = LinkedPolygon::from_convex_shuffled(&q, &mut rng);
-                for (sampling, lp_order) in variants {
+                for (sampling, lp_order, chain_walk) in variants {
                     let v = ClmVariant {
                         sampling,
                         lp_order,
+                        chain_walk,
                         ..ClmVariant::default()
                     };
                     for _ in 0..3 {
                         let got = v.intersects_in(Exact, &lp, &lq, &mut rng, &mut ws, &mut ());
-                        assert_eq!(got, truth, "{family:?} n = {n}, {sampling:?}, {lp_order:?}");
+                        assert_eq!(
+                            got, truth,
+                            "{family:?} n = {n}, {sampling:?}, {lp_order:?}, {chain_walk}"
+                        );
                         queries += 1;
                         intersecting += u32::from(got);
                     }

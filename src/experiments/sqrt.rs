@@ -91,7 +91,9 @@ pub(crate) fn run(config: &Config) -> io::Result<Report> {
 
 /// The implementation variants of sampling (independent draws, or the thesis's 3.3.1
 /// Fisher–Yates) and of the LP's randomisation (the caller's, thesis 3.3.5, the
-/// default; or the LP's own shuffle) against the default, at a few sizes: per pair the four variants
+/// default; or the LP's own shuffle), and the chain-against-chain LPs by the LP instead
+/// of [`separate_chains`](crate::lp::separate_chains), against the default, at a few
+/// sizes: per pair the five variants
 /// are timed in turn, three rounds, the pair's figure the median of each; the point's
 /// the median over pairs. Writes `clm_variants.csv`; returns a Markdown table.
 fn variants(config: &Config, report: &mut Report) -> io::Result<String> {
@@ -101,21 +103,40 @@ fn variants(config: &Config, report: &mut Report) -> io::Result<String> {
             "default: independent + caller shuffles",
             Sampling::Independent,
             LpOrder::Caller,
+            true,
         ),
-        ("independent + LP shuffles", Sampling::Independent, LpOrder::Lp),
+        (
+            "default with chain-against-chain by the LP",
+            Sampling::Independent,
+            LpOrder::Caller,
+            false,
+        ),
+        (
+            "independent + LP shuffles",
+            Sampling::Independent,
+            LpOrder::Lp,
+            true,
+        ),
         (
             "thesis: Fisher–Yates + caller shuffles",
             Sampling::FisherYates,
             LpOrder::Caller,
+            true,
         ),
-        ("Fisher–Yates + LP shuffles", Sampling::FisherYates, LpOrder::Lp),
+        (
+            "Fisher–Yates + LP shuffles",
+            Sampling::FisherYates,
+            LpOrder::Lp,
+            true,
+        ),
     ]
-    .map(|(name, sampling, lp_order)| {
+    .map(|(name, sampling, lp_order, chain_walk)| {
         (
             name,
             ClmVariant {
                 sampling,
                 lp_order,
+                chain_walk,
                 ..ClmVariant::default()
             },
         )

@@ -23,6 +23,9 @@
 //! 5. P against CH(C_Q): the LP on R_P and C_Q; intersecting hulls mean P ∩ Q ≠ ∅. Else
 //!    its line L′ gives the chain C′_P of P beyond L′ (step 3 again), and P ∩ CH(C_Q) ≠ ∅
 //!    iff CH(C′_P) ∩ CH(C_Q) ≠ ∅, one more LP. Q against CH(C_P) symmetrically.
+//!    Both chains are convex and come in boundary order, so this last LP is a
+//!    galloping walk along them ([`separate_chains`], exact, from C′_P's first vertex
+//!    and C_Q's tangent vertex on L′), the LP only when the walk gives no answer.
 //!    Order of work: chain walks run two at a time in lockstep, so that their cache
 //!    misses (each step is a dependent load at a random arena position) overlap, and
 //!    each LP runs as soon as the chain it needs is walked (either sample-against-chain
@@ -93,7 +96,9 @@ use super::certificate::{
 use super::linked::LinkedIntersection;
 use super::{Certificate, Derivation, Probe, Which};
 use crate::kernel::{DirectedLine, Kernel, Orientation, Point};
-use crate::lp::{ArenaPoints, Bitangent, LpError, LpWorkspace, Separation, WitnessPoint, separating_line};
+use crate::lp::{
+    ArenaPoints, Bitangent, LpError, LpWorkspace, Separation, WitnessPoint, separate_chains, separating_line,
+};
 use crate::polygon::{LinkedPolygon, SampleWorkspace, box_of};
 use rand::Rng;
 
@@ -176,6 +181,11 @@ pub struct ClmVariant {
     pub sampling: Sampling,
     /// Who randomises the LPs' order.
     pub lp_order: LpOrder,
+    /// Whether the two chain-against-chain LPs (step 5's second LP) are decided by
+    /// [`separate_chains`], a walk along both chains in their order, instead of the LP
+    /// (the default; the LP still runs when the walk gives no answer, and for the
+    /// witness of a certified query whose chains intersect).
+    pub chain_walk: bool,
 }
 
 impl Default for ClmVariant {
@@ -184,6 +194,7 @@ impl Default for ClmVariant {
             factor: Clm::SAMPLE_FACTOR,
             sampling: Sampling::default(),
             lp_order: LpOrder::default(),
+            chain_walk: true,
         }
     }
 }
@@ -206,6 +217,9 @@ pub struct ClmWorkspace {
     /// The points of the chains, in the order of `cp`, `cq`, `chain`, `chain2`,
     /// recorded by the walks as they read them.
     chain_points: [Vec<Point>; 4],
+    /// C_P and C_Q (positions and points) in walk order, before the shuffle, for
+    /// [`separate_chains`] ([`ClmVariant::chain_walk`]).
+    ordered: [(Vec<u32>, Vec<Point>); 2],
     walked: u64,
     /// The index array of [`Sampling::FisherYates`] (the identity between draws) and
     /// the swaps of one draw, to restore it.
@@ -675,13 +689,25 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         ],
         std::mem::take(&mut ws.chain_points),
     );
-    let shuffle_chains = v.lp_order == LpOrder::Caller;
-    let answer =
-        walk_and_decide::<K, R, P, CERT>(k, p, q, first, &mut chains, shuffle_chains, rng, ws, probe);
+    let order = ChainOrder {
+        shuffle: v.lp_order == LpOrder::Caller,
+        walk: v.chain_walk,
+    };
+    let answer = walk_and_decide::<K, R, P, CERT>(k, p, q, first, &mut chains, order, rng, ws, probe);
     let Chains([cp, cq, chain, chain2], points) = chains;
     (ws.cp, ws.cq, ws.chain, ws.chain2) = (cp, cq, chain, chain2);
     ws.chain_points = points;
     answer
+}
+
+/// How [`walk_and_decide`] treats walked chains: shuffled for the LP
+/// ([`LpOrder::Caller`]), and whether the chain-against-chain LPs are walks
+/// ([`ClmVariant::chain_walk`]; then C′_P and C′_Q stay in walk order, and C_P and C_Q
+/// are copied in walk order before their shuffle).
+#[derive(Clone, Copy)]
+struct ChainOrder {
+    shuffle: bool,
+    walk: bool,
 }
 
 /// The four chain buffers (positions, and the points at them), indexed by
@@ -770,8 +796,11 @@ impl<'a> Active<'a> {
 ///
 /// The answer is the disjunction of the four LPs' verdicts, so the order in which
 /// walks end does not change it. A sample that is its whole polygon has decided its
-/// sub-test already: its second chain is not walked. With `shuffle_chains` each chain
-/// is shuffled when walked ([`LpOrder::Caller`]).
+/// sub-test already: its second chain is not walked. With `order.shuffle` each chain
+/// is shuffled when walked ([`LpOrder::Caller`]); with `order.walk` the last two LPs are
+/// [`separate_chains`] on the chains in walk order, started from C′'s first vertex (the
+/// tangent vertex it was walked from) and the far chain's tangent vertex on the line
+/// that started C′ (see [`chain_against_chain`]).
 #[allow(clippy::too_many_arguments)]
 fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     k: K,
@@ -779,7 +808,7 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     q: &LinkedPolygon,
     first: [Walk<'_>; 2],
     chains: &mut Chains,
-    shuffle_chains: bool,
+    order: ChainOrder,
     rng: &mut R,
     ws: &mut ClmWorkspace,
     probe: &mut P,
@@ -792,8 +821,12 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         lp,
         walked,
         trace,
+        ordered,
         ..
     } = ws;
+    // Per polygon (P, Q): the position of its first chain's tangent vertex on the line
+    // of the sample-against-chain LP, where the chain-against-chain walk starts.
+    let mut far_tangent = [0u32; 2];
     let p_open = rp.len() < p.len();
     let q_open = rq.len() < q.len();
     let mut slots: [Option<Active<'_>>; 2] = [None, None];
@@ -818,11 +851,56 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
                 polygon: if set.of() == Which::P { p } else { q },
                 positions: chains.get(set),
             });
-            if shuffle_chains {
+            *walked += len as u64;
+            let side = usize::from(set.of() == Which::Q);
+            let second = matches!(set, Set::Chain | Set::Chain2);
+            if order.walk && !second {
+                let (positions, points) = &mut ordered[side];
+                positions.clone_from(&chains.0[set.chain_index()]);
+                points.clone_from(&chains.1[set.chain_index()]);
+            }
+            if order.walk && second {
+                let far = if set == Set::Chain { Set::Cq } else { Set::Cp };
+                let far_side = usize::from(far.of() == Which::Q);
+                let before = lp.work;
+                match chain_against_chain(k, set, far, chains, &ordered[far_side], far_tangent[far_side], lp)
+                {
+                    Some(Separation::Separated(line)) => {
+                        report_lp(
+                            p,
+                            q,
+                            (set, far),
+                            chains,
+                            lp.work - before,
+                            Separation::Separated(line),
+                            probe,
+                        );
+                        if CERT {
+                            trace.lines.push((line, set, far));
+                        }
+                        continue;
+                    }
+                    Some(Separation::Intersecting) if !CERT => {
+                        report_lp(
+                            p,
+                            q,
+                            (set, far),
+                            chains,
+                            lp.work - before,
+                            Separation::Intersecting,
+                            probe,
+                        );
+                        return true;
+                    }
+                    // No answer, or a certified query's intersection (the LP records the
+                    // witness): the LP decides.
+                    _ => {}
+                }
+            }
+            if order.shuffle {
                 let (positions, points) = chains.buffers(set);
                 shuffle(positions, points, rng);
             }
-            *walked += len as u64;
             // The LP this chain completes: (near set, its polygon, far chain, its polygon).
             let (near, far) = match set {
                 Set::Cq => (Set::Rp, Set::Cq),
@@ -855,6 +933,9 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
             if CERT {
                 trace.lines.push((line, near, far));
             }
+            if matches!(near, Set::Rp | Set::Rq) {
+                far_tangent[usize::from(far.of() == Which::Q)] = chains.get(far)[line.b];
+            }
             // After a first chain, the second chain of the other polygon, beyond the line
             // (the near set is on its right: its far side is the left).
             let next = match near {
@@ -871,6 +952,50 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
             return false;
         }
     }
+}
+
+/// [`separate_chains`] on the second chain `near` (C′_P or C′_Q, in walk order: its
+/// first vertex is the tangent vertex it was walked from) and the first chain `far` of
+/// the other polygon in walk order (`ordered`: its positions and points), started at
+/// the far chain's vertex at position `tangent`. The answer's index into `far` is into
+/// its (shuffled) buffer in `chains`, as the LP's would be. `None` when the walk gives
+/// no answer.
+fn chain_against_chain<K: Kernel>(
+    k: K,
+    near: Set,
+    far: Set,
+    chains: &Chains,
+    (positions, points): &(Vec<u32>, Vec<Point>),
+    tangent: u32,
+    lp: &mut LpWorkspace,
+) -> Option<Separation> {
+    let j = positions.iter().position(|&x| x == tangent).unwrap_or(0);
+    match separate_chains(k, chains.points(near), points, [0, j], &mut lp.work)? {
+        Separation::Separated(line) => {
+            let at = positions[line.b];
+            let b = chains.get(far).iter().position(|&x| x == at)?;
+            Some(Separation::Separated(Bitangent { b, ..line }))
+        }
+        Separation::Intersecting => Some(Separation::Intersecting),
+    }
+}
+
+/// Reports to `probe` a chain-against-chain separation decided without the LP, as an
+/// LP call on the two chains.
+fn report_lp<P: Probe>(
+    p: &LinkedPolygon,
+    q: &LinkedPolygon,
+    (a, b): (Set, Set),
+    chains: &Chains,
+    work: u64,
+    result: Separation,
+    probe: &mut P,
+) {
+    let set = |s: Set| ArenaPoints {
+        polygon: if s.of() == Which::P { p } else { q },
+        positions: chains.get(s),
+    };
+    probe.lp_call(&set(a), &set(b), work, &Ok(result));
 }
 
 /// One chain walk (see [`walk_and_decide`]): from the tangent vertex at position `t` of

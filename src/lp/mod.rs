@@ -9,6 +9,9 @@
 //! (`intersect::Clm`) runs it on samples and chains of linked polygons, on
 //! contiguous copies of their points made once per set (several LPs read the same
 //! sample); [`ArenaPoints`] reads a polygon's arena positions in place instead.
+//! [`separate_chains`] answers the same question for two convex chains whose points
+//! come in order along their hulls, by a walk along both that usually reads a few of
+//! their points (CLM's chain-against-chain LPs).
 //!
 //! # Formulation: no privileged direction
 //! The thesis (3.3.4) searches for y = ax + b with A above B, minimising the slope a,
@@ -72,8 +75,10 @@
 //! direction (vertical, horizontal, parallel to d₀) and touching hulls are all handled
 //! by the same code path; tests/lp.rs checks each against an exact brute force.
 
+mod chains;
 mod seidel;
 
+pub use chains::separate_chains;
 pub use seidel::{
     ArenaPoints, Bitangent, LpError, LpWorkspace, PointSet, Separation, WitnessPoint, separating_line,
 };
