@@ -56,9 +56,12 @@
 //!   parallel supporting lines of the two polygons with a gap, so one of the edges at w
 //!   and at the other chain's vertices there separates (the faces' argument in
 //!   [`certificate`](super::certificate)); at an end of the common y-interval the
-//!   argument is the same with a one-sided σ, and if the y-ranges are disjoint the
-//!   faces are the higher polygon's bottom and the lower one's top. The edge of the
-//!   other chain at y* is tried first. O(1) beyond the test: w bounds I, so it is an
+//!   argument is the same with a one-sided σ. The edge of the other chain at y* is
+//!   tried first, with the sign of the failed test's own `orient` (only the local test
+//!   is evaluated). If the y-ranges are disjoint, the lowest vertex of the Minkowski
+//!   difference, the higher polygon's bottom-left minus the lower one's top-right, has
+//!   0 strictly below it, so one of its two edges separates: one cross product picks
+//!   each, one `orient` tests it. O(1) beyond the test: w bounds I, so it is an
 //!   end of its chain's remaining range (a binary search on heights only if not). Under
 //!   the exact kernel this always succeeds (the tests check it), which makes it the
 //!   completing search of every algorithm's "disjoint".
@@ -195,15 +198,11 @@ impl<const LEMMA_BY_LEMMA: bool> ArrayIntersection for DobkinVariant<LEMMA_BY_LE
     ) -> Derivation {
         let k = k.within([p.bounding_box(), q.bounding_box()]);
         let (pv, qv) = (p.vertices(), q.vertices());
-        run::<_, _, _, LEMMA_BY_LEMMA>(k, pv, qv, probe, |outcome, searches| {
-            let found = match outcome {
-                Outcome::Apart(s) => separation(k, searches, s),
-                Outcome::Meet => meeting(k, searches),
-            };
-            found.map_or(
-                Derivation::Answer(outcome == Outcome::Meet),
-                Derivation::Certified,
-            )
+        // Each derivation builds its `Derivation` in place (no copy of the certificate
+        // on the way out).
+        run::<_, _, _, LEMMA_BY_LEMMA>(k, pv, qv, probe, |outcome, searches| match outcome {
+            Outcome::Apart(s) => separation(k, searches, s),
+            Outcome::Meet => meeting(k, searches),
         })
     }
 }
@@ -218,18 +217,22 @@ enum Outcome {
 }
 
 /// The witness of two searches that both met: the vertex each tested, if it lies in
-/// the other polygon ([`vertex_inside`]), else the edge beside it ([`beside`]).
-fn meeting<K: Kernel>(k: K, searches: &[PairSearch<'_>; 2]) -> Option<Certificate> {
+/// the other polygon ([`vertex_inside`]), else the edge beside it ([`beside`]); only
+/// the answer if none holds.
+fn meeting<K: Kernel>(k: K, searches: &[PairSearch<'_>; 2]) -> Derivation {
     let mut missed = [None; 2];
     for (s, slot) in missed.iter_mut().enumerate() {
         if let Some(Verdict::Meet(t)) = searches[s].verdict() {
             match vertex_inside(k, searches, s, t) {
-                Ok(c) => return Some(c),
+                Ok(c) => return Derivation::Certified(c),
                 Err(g) => *slot = g.map(|g| (t, g)),
             }
         }
     }
-    (0..2).find_map(|s| missed[s].and_then(|(t, g)| beside(k, searches, s, t, g)))
+    match (0..2).find_map(|s| missed[s].and_then(|(t, g)| beside(k, searches, s, t, g))) {
+        Some(c) => Derivation::Certified(c),
+        None => Derivation::Answer(true),
+    }
 }
 
 /// The height test where search `s` met tested a vertex w inside one of the other
@@ -382,16 +385,24 @@ fn run<K: Kernel, P: Probe, T, const LEMMA_BY_LEMMA: bool>(
 /// back on this when its last separating line does not lift to the whole polygons.
 pub(crate) fn separating_certificate<K: Kernel>(k: K, pv: &[Point], qv: &[Point]) -> Option<Certificate> {
     run::<_, _, _, false>(k, pv, qv, &mut (), |outcome, searches| match outcome {
-        Outcome::Apart(s) => separation(k, searches, s),
+        Outcome::Apart(s) => match separation(k, searches, s) {
+            Derivation::Certified(c) => Some(c),
+            Derivation::Answer(_) => None,
+        },
         Outcome::Meet => None,
     })
 }
 
-/// The separating edge of search `s`, which found its regions disjoint.
-fn separation<K: Kernel>(k: K, searches: &[PairSearch<'_>; 2], s: usize) -> Option<Certificate> {
-    match searches[s].verdict() {
-        Some(Verdict::Apart(why)) => searches[s].separation(k, why).map(|c| c.relative_to(SEARCH_A[s])),
+/// The separating edge of search `s`, which found its regions disjoint; only the
+/// answer if none is found.
+fn separation<K: Kernel>(k: K, searches: &[PairSearch<'_>; 2], s: usize) -> Derivation {
+    let found = match searches[s].verdict() {
+        Some(Verdict::Apart(why)) => searches[s].separation(k, why),
         _ => None,
+    };
+    match found {
+        Some(c) => Derivation::Certified(c.relative_to(SEARCH_A[s])),
+        None => Derivation::Answer(false),
     }
 }
 
@@ -882,27 +893,39 @@ impl<'a> PairSearch<'a> {
     fn separation<K: Kernel>(&self, k: K, why: Apart) -> Option<Certificate> {
         let (a, b) = (self.lv, self.rv);
         match why {
+            // The y-ranges are disjoint: the polygon whose bottom is `lo` lies above.
             Apart::Heights { lo, hi } => {
-                // The higher polygon's bottom and the lower one's top, each with the other
-                // end of a horizontal edge there.
-                let face = |bound: Bound, top: bool| {
-                    let v = if bound.side == Side::Left { a } else { b };
-                    let i = self.index(bound.side, self.position(bound));
-                    // Bottom-left's horizontal neighbour follows it, top-left's precedes it;
-                    // on the right chain, bottom-right's precedes it, top-right's follows.
-                    let nb = match (bound.side, top) {
-                        (Side::Left, false) | (Side::Right, true) => v.next(i),
-                        _ => v.prev(i),
-                    };
-                    (bound.side, [i, nb], if v[nb].y == v[i].y { 2 } else { 1 })
-                };
-                let (f1, f2) = (face(lo, false), face(hi, true));
-                let (fa, fb) = if f1.0 == Side::Left { (f1, f2) } else { (f2, f1) };
-                from_faces(k, a, &fa.1[..fa.2], b, &fb.1[..fb.2])
+                debug_assert!(lo.p.y > hi.p.y && lo.side != hi.side);
+                if lo.side == Side::Left {
+                    // A above B: A's bottom-left ends its left chain, B's top-right its
+                    // right chain.
+                    let x = self.index(Side::Left, self.l.len - 1);
+                    let y = self.index(Side::Right, self.r.len - 1);
+                    apart_in_height(k, a, x, b, y)
+                } else {
+                    // B above A: B's bottom-left is its right chain's start or the vertex
+                    // before it (a horizontal bottom), A's top-right the left chain's
+                    // start or the vertex before it.
+                    let x = level_prev(b, self.index(Side::Right, 0));
+                    let y = level_prev(a, self.index(Side::Left, 0));
+                    apart_in_height(k, b, x, a, y).map(Certificate::swapped)
+                }
             }
             Apart::At(t, other) => self
                 .separation_at(k, t)
                 .or_else(|| other.and_then(|t| self.separation_at(k, t))),
+        }
+    }
+
+    /// Whether the failed height test at `t` was decided by `orient` of the tested vertex
+    /// against the other chain's edge at `t.other` (then that `orient` was `Cw`), rather
+    /// than by comparing x coordinates (a vertex at the same height, or the range's
+    /// last position): see [`inside_right_at`] and [`inside_left_at`].
+    #[inline]
+    fn failed_by_orient(&self, t: Tested) -> bool {
+        match t.w.side {
+            Side::Left => t.other != self.j1 && self.rp(t.other).y != t.w.p.y,
+            Side::Right => t.other != self.i1 && self.lp(t.other).y != t.w.p.y,
         }
     }
 
@@ -939,8 +962,12 @@ impl<'a> PairSearch<'a> {
             // edge (the slopes bracket it): try it first; then the faces {w} and e as
             // `from_faces` would, without e again: the edges next to e against w, w's
             // edges against e's ends.
+            // The failed test found w strictly outside e by this `orient` unless it
+            // compared x coordinates instead: only the local test is left then.
             let (e0, e1) = (edge[0], edge[1]);
-            if separates(k, ev[e0], ev[e1], wv, w) {
+            if (self.failed_by_orient(t) || k.orient(ev[e0], ev[e1], wv[w]) == Orientation::Cw)
+                && deepest_against(k, ev[e0], ev[e1], wv, w)
+            {
                 return Some(edge_of(e_of, e0, e1, ev));
             }
             for (u, v) in [(ev.prev(e0), e0), (e1, ev.next(e1))] {
@@ -969,6 +996,61 @@ impl<'a> PairSearch<'a> {
             return Some(c);
         }
         found(&wide_w, &wide_e)
+    }
+}
+
+/// Whether vertex `w` of `b` is locally, hence (convexity) globally, the deepest of `b`
+/// against the line `u` → `v`: [`separates`] without its `orient`.
+#[inline]
+fn deepest_against<K: Kernel>(k: K, u: Point, v: Point, b: &[Point], w: usize) -> bool {
+    let x = b[w];
+    k.cross(u, v, x, b[b.next(w)]) != Orientation::Ccw && k.cross(u, v, x, b[b.prev(w)]) != Orientation::Ccw
+}
+
+/// `v`'s vertex before `i` if the edge from it to `i` is horizontal, else `i`.
+#[inline]
+fn level_prev(v: &[Point], i: usize) -> usize {
+    let j = v.prev(i);
+    if v[j].y == v[i].y { j } else { i }
+}
+
+/// The separating edge of polygons `xv` and `yv` when all of `xv` lies strictly above
+/// all of `yv`, from `xv`'s bottom-left vertex `x` and `yv`'s top-right vertex `y`
+/// (named with `xv` as P). `x − y` is the lowest (then leftmost) vertex of the
+/// Minkowski difference X − Y, and 0 lies strictly below it, so one of the two edges
+/// of X − Y at `x − y` has 0 strictly on its outer side (module docs of
+/// [`certificate`](super::certificate)): the edge leaving it is the one of X at `x` or
+/// of Y at `y` that turns least from east, the edge arriving the one that turns most
+/// from west. Each is a cross product to choose the edge and an `orient` to test it;
+/// `None` only if both tests fail (never under the exact kernel).
+fn apart_in_height<K: Kernel>(k: K, xv: &[Point], x: usize, yv: &[Point], y: usize) -> Option<Certificate> {
+    use Orientation::{Ccw, Cw};
+    let (x0, y0) = (xv[x], yv[y]);
+    let x_edge = |from: Point, to: Point| Certificate::Separated {
+        of: Which::P,
+        from,
+        to,
+    };
+    let y_edge = |from: Point, to: Point| Certificate::Separated {
+        of: Which::Q,
+        from,
+        to,
+    };
+    // Leaving x − y: X's edge x → next(x) or −Y's, parallel to y → next(y) reversed.
+    let (xn, yn) = (xv[xv.next(x)], yv[yv.next(y)]);
+    if k.cross(x0, xn, yn, y0) == Cw {
+        if k.orient(y0, yn, x0) == Cw {
+            return Some(y_edge(y0, yn));
+        }
+    } else if k.orient(x0, xn, y0) == Cw {
+        return Some(x_edge(x0, xn));
+    }
+    // Arriving at x − y: X's edge prev(x) → x or −Y's, parallel to prev(y) → y reversed.
+    let (xp, yp) = (xv[xv.prev(x)], yv[yv.prev(y)]);
+    if k.cross(xp, x0, y0, yp) == Ccw {
+        (k.orient(yp, y0, x0) == Cw).then(|| y_edge(yp, y0))
+    } else {
+        (k.orient(xp, x0, y0) == Cw).then(|| x_edge(xp, x0))
     }
 }
 
@@ -1061,12 +1143,13 @@ fn chain_partition(v: &[Point], c: Chain, before: impl Fn(&Point) -> bool) -> us
     if end <= v.len() {
         return v[c.start..end].partition_point(before);
     }
+    // Wrapped: the head's last vertex says which piece holds the boundary, so only
+    // that piece is searched.
     let head = &v[c.start..];
-    let k = head.partition_point(&before);
-    if k < head.len() {
-        k
+    if before(&v[v.len() - 1]) {
+        head.len() + v[..end - v.len()].partition_point(before)
     } else {
-        k + v[..end - v.len()].partition_point(before)
+        head.partition_point(before)
     }
 }
 
@@ -1106,6 +1189,115 @@ mod tests {
         assert_eq!((l.len, r.len), (3, 3));
         assert_eq!(at(d.vertices(), l, 0), Point::new(0., 1.));
         assert_eq!(at(d.vertices(), r, 0), Point::new(0., -1.));
+    }
+
+    /// Dobkin's own derivation (no completing search) and its verification, for both
+    /// orders of the pair and every start index of small polygons.
+    fn certifies_itself(p: &ConvexPolygon, q: &ConvexPolygon, what: &str) {
+        let starts = |c: &ConvexPolygon| if c.len() <= 8 { c.len() } else { 2 };
+        for (a, b) in [(p, q), (q, p)] {
+            for i in 0..starts(a) {
+                for j in 0..starts(b) {
+                    let (a, b) = (a.rotated(i), b.rotated(j));
+                    let want = crate::intersect::Linear.intersects(&a, &b);
+                    match Dobkin.derive_probed(Exact, &a, &b, &mut ()) {
+                        Derivation::Certified(c) => {
+                            assert_eq!(c.intersects(), want, "{what}: {c:?}");
+                            assert_eq!(
+                                crate::intersect::verify(&a, &b, &c),
+                                Ok(()),
+                                "{what}: {c:?}\n{a:?}\n{b:?}"
+                            );
+                        }
+                        Derivation::Answer(answer) => {
+                            assert_eq!(answer, want, "{what}");
+                            assert!(answer, "{what}: a disjoint pair not certified\n{a:?}\n{b:?}");
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /// `q` moved straight up until its lowest vertex is just above `p`'s highest one
+    /// (one ulp where the translation allows it), and `dx` sideways.
+    fn stacked(p: &ConvexPolygon, q: &ConvexPolygon, dx: f64) -> Option<ConvexPolygon> {
+        let top = p.vertices().iter().map(|v| v.y).fold(f64::MIN, f64::max);
+        let bottom = q.vertices().iter().map(|v| v.y).fold(f64::MAX, f64::min);
+        let mut dy = top - bottom;
+        for _ in 0..64 {
+            let moved = q.map(|v| Point::new(v.x + dx, v.y + dy)).ok()?;
+            if moved.vertices().iter().all(|v| v.y > top) {
+                return Some(moved);
+            }
+            dy = dy.next_up();
+        }
+        None
+    }
+
+    #[test]
+    fn disjoint_heights_certified_from_the_lowest_vertex_of_the_difference() {
+        // Horizontal tops and bottoms: squares and triangles stacked with every
+        // horizontal offset, one ulp apart and far apart.
+        let sq = poly(&[[0., 0.], [2., 0.], [2., 2.], [0., 2.]]);
+        let tri_up = poly(&[[0., 0.], [2., 0.], [1., 1.]]);
+        let tri_down = poly(&[[1., 0.], [2., 1.], [0., 1.]]);
+        for lower in [&sq, &tri_up, &tri_down] {
+            for upper in [&sq, &tri_up, &tri_down] {
+                for dx in [-3., -2., -1.5, -1., -0.5, 0., 0.5, 1., 1.5, 2., 3.] {
+                    let q = stacked(lower, upper, dx).unwrap();
+                    certifies_itself(lower, &q, &format!("stacked one ulp apart, dx = {dx}"));
+                    let far = q.map(|v| Point::new(v.x, v.y + 5.)).unwrap();
+                    certifies_itself(lower, &far, &format!("stacked apart, dx = {dx}"));
+                }
+            }
+        }
+        // Every generator family, stacked with random offsets, and carried to the
+        // extremes of f64.
+        use crate::generate::{self, Family, Relation};
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand::rngs::SmallRng::seed_from_u64(0xd0b1);
+        for &family in Family::ALL {
+            for i in 0..24 {
+                let n = [3, 4, 5, 7, 12, 40, 300][i % 7];
+                let (p, q) = generate::pair(family, n, Relation::Any, &mut rng);
+                let (lo, hi) = p.bounding_box();
+                let width = hi.x - lo.x;
+                let dx = rng.random_range(-1.0..1.0) * width;
+                let Some(q) = stacked(&p, &q, dx) else { continue };
+                let what = format!("{family} n={n} #{i}");
+                certifies_itself(&p, &q, &what);
+                for scale in [2f64.powi(-1000), 2f64.powi(600)] {
+                    if let Some((p, q)) =
+                        generate::map_pair(&(p.clone(), q.clone()), |v| Point::new(v.x * scale, v.y * scale))
+                    {
+                        certifies_itself(&p, &q, &format!("{what} scaled {scale:e}"));
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn disjoint_pairs_certified_by_the_search_itself() {
+        // The faces at the maximum of g, where the failed test's `orient` is reused:
+        // every family's disjoint pairs (touching families: their one-ulp gaps and
+        // shared-edge neighbours), and the extremes of f64.
+        use crate::generate::{self, Family, Relation};
+        use rand::SeedableRng;
+        let mut rng = rand::rngs::SmallRng::seed_from_u64(0xd0b2);
+        for &family in Family::ALL {
+            for i in 0..30 {
+                let n = [3, 4, 6, 9, 17, 64, 500][i % 7];
+                let (p, q) = generate::pair(family, n, Relation::Disjoint, &mut rng);
+                let what = format!("{family} n={n} #{i}");
+                certifies_itself(&p, &q, &what);
+                let o = 2f64.powi(52);
+                if let Some((p, q)) = generate::map_pair(&(p, q), |v| Point::new(v.x + o, v.y - o)) {
+                    certifies_itself(&p, &q, &format!("{what} offset 2^52"));
+                }
+            }
+        }
     }
 
     #[test]
