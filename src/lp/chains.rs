@@ -90,8 +90,14 @@ use crate::kernel::{DirectedLine, Kernel, Orientation, Point, Sign};
 /// let Some(Separation::Separated(t)) = separate_chains(Exact, &a, &b, [0, 0], &mut work) else {
 ///     panic!("disjoint triangles")
 /// };
-/// // The most counter-clockwise separator with `a` on its right: through (1, 1) and (2, 1).
-/// assert_eq!((t.start, t.end), (a[1], b[2]));
+/// // The inner common tangent with `a` on its closed right and `b` on its closed left:
+/// // from (0, 2) to (3, 0), the line the LP returns.
+/// assert_eq!((t.start, t.end), (a[2], b[0]));
+/// let mut ws = polysect::lp::LpWorkspace::default();
+/// let mut rng = <rand::rngs::SmallRng as rand::SeedableRng>::seed_from_u64(1);
+/// let lp = polysect::lp::separating_line(Exact, &a[..], &b[..], &mut rng, &mut ws).unwrap();
+/// let Separation::Separated(u) = lp else { panic!("disjoint triangles") };
+/// assert_eq!((u.start, u.end), (t.start, t.end));
 /// ```
 pub fn separate_chains<K: Kernel>(
     k: K,
