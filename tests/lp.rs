@@ -3,7 +3,10 @@
 //! touchings), all points on one line, single points, vertical and horizontal gaps, and
 //! the same sets scaled by 2^±1000 and shifted by 2^40..2^52.
 
-use polysect::kernel::{Kernel, segments_intersect};
+mod hulls;
+
+use hulls::hulls_intersect;
+use polysect::kernel::Kernel;
 use polysect::lp::{LpError, LpWorkspace, Separation, separating_line};
 use polysect::{Exact, Fast, Orientation, Point};
 use rand::rngs::SmallRng;
@@ -11,44 +14,6 @@ use rand::seq::SliceRandom;
 use rand::{Rng, SeedableRng};
 
 const SEED: u64 = 0x5e1de1;
-
-/// CH(A) ∩ CH(B) ≠ ∅, exactly: two closed segments (zero-length allowed) between points of
-/// each set meet, or a point of one set lies in a non-degenerate triangle of the other
-/// (Carathéodory). O(|A|²|B|² + |A|³|B| + |A||B|³).
-fn hulls_intersect(a: &[Point], b: &[Point]) -> bool {
-    let k = Exact;
-    for i in 0..a.len() {
-        for j in i..a.len() {
-            for s in 0..b.len() {
-                for t in s..b.len() {
-                    if segments_intersect(k, a[i], a[j], b[s], b[t]) {
-                        return true;
-                    }
-                }
-            }
-        }
-    }
-    let in_triangle = |x: Point, t: &[Point]| {
-        for i in 0..t.len() {
-            for j in i + 1..t.len() {
-                for l in j + 1..t.len() {
-                    let o = k.orient(t[i], t[j], t[l]);
-                    if o == Orientation::Collinear {
-                        continue;
-                    }
-                    if k.orient(t[i], t[j], x) != o.reverse()
-                        && k.orient(t[j], t[l], x) != o.reverse()
-                        && k.orient(t[l], t[i], x) != o.reverse()
-                    {
-                        return true;
-                    }
-                }
-            }
-        }
-        false
-    };
-    a.iter().any(|&x| in_triangle(x, b)) || b.iter().any(|&x| in_triangle(x, a))
-}
 
 /// Checks a returned bitangent exactly: a line through two distinct points, A on the
 /// closed right, B on the closed left, both tangent points on it.

@@ -6,7 +6,10 @@
 //! separator, and everything scaled by 2^±500 or shifted by 2^40; every start pair and
 //! both orientations of each chain.
 
-use polysect::kernel::{Kernel, segments_intersect};
+mod hulls;
+
+use hulls::hulls_intersect;
+use polysect::kernel::Kernel;
 use polysect::lp::{LpWorkspace, Separation, separate_chains, separating_line};
 use polysect::polygon::{HullAlgorithm, hull_vertices};
 use polysect::{Exact, Fast, Orientation, Point, Sign};
@@ -14,43 +17,6 @@ use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};
 
 const SEED: u64 = 0xc4a1;
-
-/// CH(A) ∩ CH(B) ≠ ∅, exactly (as in tests/lp.rs): two closed segments between points
-/// of each set meet, or a point of one set lies in a triangle of the other.
-fn hulls_intersect(a: &[Point], b: &[Point]) -> bool {
-    let k = Exact;
-    for i in 0..a.len() {
-        for j in i..a.len() {
-            for s in 0..b.len() {
-                for t in s..b.len() {
-                    if segments_intersect(k, a[i], a[j], b[s], b[t]) {
-                        return true;
-                    }
-                }
-            }
-        }
-    }
-    let in_triangle = |x: Point, t: &[Point]| {
-        for i in 0..t.len() {
-            for j in i + 1..t.len() {
-                for l in j + 1..t.len() {
-                    let o = k.orient(t[i], t[j], t[l]);
-                    if o == Orientation::Collinear {
-                        continue;
-                    }
-                    if k.orient(t[i], t[j], x) != o.reverse()
-                        && k.orient(t[j], t[l], x) != o.reverse()
-                        && k.orient(t[l], t[i], x) != o.reverse()
-                    {
-                        return true;
-                    }
-                }
-            }
-        }
-        false
-    };
-    a.iter().any(|&x| in_triangle(x, b)) || b.iter().any(|&x| in_triangle(x, a))
-}
 
 /// A strictly convex counter-clockwise polygon from random points (grid or float) at
 /// `offset`, or `None` when they are collinear.
