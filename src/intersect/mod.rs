@@ -45,6 +45,7 @@ mod linear_linked;
 mod linked;
 mod trace;
 
+pub(crate) use crate::polygon::queries::fresh_rng;
 pub use barba::{Barba, BarbaVariant};
 pub use certificate::{Certificate, CertificateError, Derivation, Which, verify, verify_linked};
 pub use chazelle_dobkin::ChazelleDobkin;
@@ -55,7 +56,6 @@ pub use fallback::{exact_certificate, proven, proven_linked};
 pub use linear::{Linear, brute_force};
 pub use linear_linked::LinearLinked;
 pub(crate) use linear_linked::separating_edge_at;
-pub(crate) use linked::fresh_rng;
 pub use linked::{Convert, ConvertWorkspace, LinkedIntersection};
 pub use trace::{Kept, Mark, Role, Shape, Span, Trace, TraceStep, Tracer, trace, trace_rng};
 
