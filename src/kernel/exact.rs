@@ -464,23 +464,7 @@ impl Kernel for ExactWithin {
         }
     }
 
-    /// The semi-static test, then a bound scaled to the short directions, inline;
-    /// [`Exact`]'s static filter and what follows it out of line.
-    ///
-    /// With mᵢ = max(|bᵢ.x − aᵢ.x|, |bᵢ.y − aᵢ.y|) (computed differences) and `w` the
-    /// boxes' side, every computed difference of `dᵢ − cᵢ` is at most `w` (see the type's
-    /// docs), so factor i's product magnitude is Pᵢ ≤ 2mᵢw, and the static filter's
-    /// analysis (at `cross_products_filtered`) bounds the rounding error by
-    /// 10.2u·(P₀P₁ + P₂P₃) ≤ 40.8u·w²·(m₀m₁ + m₂m₃). Underflow adds at most 2^-1074 per
-    /// factor times the other factor (≤ 2.02w²), four times, plus 2^-1075 per product
-    /// of factors: below 2^-1070.9·w² + 2^-1074. The bound used
-    /// (`ExactWithin::short_edges_bound`) is at least
-    /// `48u·P·(m₀m₁ + m₂m₃) + 2^-1069·P + 2^-1072` (P = fl(w²); the margins cover its
-    /// own roundings, and an underflowing m₀m₁ loses at most 48u·P·2^-1074), and it is
-    /// finite only where `B₄` is, `P ∈ [2^-400, 2^250]`: no difference exceeds 2^125,
-    /// no value overflows. Elsewhere every undecided call goes out of line. For edges
-    /// of length `e` it is about `B₄·e²/w²`.
-    /// `B₄` replaced by [`short_edges_bound`](ExactWithin::short_edges_bound) of
+    /// This kernel with `B₄` replaced by `ExactWithin::short_edges_bound` of
     /// `M = 2·fl(e·e)`, `e = e()`, when that is smaller (the other bounds unchanged). Every call
     /// within the contract has `mᵢ ≤ e` for each factor's short direction, so its own
     /// computed `m = fl(fl(m₀m₁) + fl(m₂m₃))` is at most `fl(fl(e·e) + fl(e·e)) = M`
@@ -505,6 +489,22 @@ impl Kernel for ExactWithin {
         }
     }
 
+    /// The semi-static test, then a bound scaled to the short directions, inline;
+    /// [`Exact`]'s static filter and what follows it out of line.
+    ///
+    /// With mᵢ = max(|bᵢ.x − aᵢ.x|, |bᵢ.y − aᵢ.y|) (computed differences) and `w` the
+    /// boxes' side, every computed difference of `dᵢ − cᵢ` is at most `w` (see the type's
+    /// docs), so factor i's product magnitude is Pᵢ ≤ 2mᵢw, and the static filter's
+    /// analysis (at `cross_products_filtered`) bounds the rounding error by
+    /// 10.2u·(P₀P₁ + P₂P₃) ≤ 40.8u·w²·(m₀m₁ + m₂m₃). Underflow adds at most 2^-1074 per
+    /// factor times the other factor (≤ 2.02w²), four times, plus 2^-1075 per product
+    /// of factors: below 2^-1070.9·w² + 2^-1074. The bound used
+    /// (`ExactWithin::short_edges_bound`) is at least
+    /// `48u·P·(m₀m₁ + m₂m₃) + 2^-1069·P + 2^-1072` (P = fl(w²); the margins cover its
+    /// own roundings, and an underflowing m₀m₁ loses at most 48u·P·2^-1074), and it is
+    /// finite only where `B₄` is, `P ∈ [2^-400, 2^250]`: no difference exceeds 2^125,
+    /// no value overflows. Elsewhere every undecided call goes out of line. For edges
+    /// of length `e` it is about `B₄·e²/w²`.
     #[inline(always)]
     fn cross_products_sign_of_short_edges(self, factors: [[Point; 4]; 4]) -> Sign {
         let cross = |[ux, uy, vx, vy]: [f64; 4]| ux * vy - uy * vx;
