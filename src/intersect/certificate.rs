@@ -1034,6 +1034,126 @@ pub(crate) fn witness_certificate<K: Kernel>(k: K, points: impl Iterator<Item = 
     Radon::Nothing
 }
 
+/// [`witness_certificate`] for the LP's five-point witness of a point x beyond a chord
+/// of the other set ([`LpWorkspace::straddle`](crate::lp::LpWorkspace::straddle)):
+/// the segment from x to x₀ (one polygon's) meets the triangle of b, c and y₀ (the
+/// other's). A vertex inside is x or x₀ in the triangle, or a triangle vertex on the
+/// segment; otherwise the segment crosses an edge of the triangle: two chords. With
+/// the triangle's orientation known, x's three orientations decide the usual case.
+/// `Radon::Nothing` when the triangle is degenerate (a point on the line of the two
+/// others) or the test finds no contact (only an inconsistent kernel): the caller
+/// then searches all of the LP's witness points.
+pub(crate) fn straddle_certificate<K: Kernel>(
+    k: K,
+    [x, x0]: [WitnessVertex; 2],
+    tri: [WitnessVertex; 3],
+) -> Radon {
+    debug_assert!(x0.of == x.of && tri.iter().all(|w| w.of != x.of));
+    let [b, c, y0] = tri.map(|w| w.point);
+    let turn = k.orient(b, c, y0);
+    if turn == Collinear {
+        // y₀ is b or c (it bounded the step): the segments x x₀ and b c meet.
+        if y0 != b && y0 != c {
+            return Radon::Nothing;
+        }
+        return match segment_contact(k, x.point, x0.point, b, c) {
+            SegmentContact::Disjoint => Radon::Nothing,
+            SegmentContact::Crossing => {
+                let (xs, ts) = ([x.pos, x0.pos], [tri[0].pos, tri[1].pos]);
+                if x.of == Which::P {
+                    Radon::Chords(xs, ts)
+                } else {
+                    Radon::Chords(ts, xs)
+                }
+            }
+            // A touching contact: an endpoint of one segment on the other.
+            _ => {
+                let on = [
+                    (x, (b, c)),
+                    (x0, (b, c)),
+                    (tri[0], (x.point, x0.point)),
+                    (tri[1], (x.point, x0.point)),
+                ];
+                on.iter()
+                    .find(|(w, (u, v))| point_on_segment(k, *u, *v, w.point))
+                    .map_or(Radon::Nothing, |(w, _)| {
+                        Radon::Inside(Certificate::VertexInside {
+                            of: w.of,
+                            point: w.point,
+                        })
+                    })
+            }
+        };
+    }
+    let outside = turn.reverse();
+    // The triangle's edges, counter-clockwise or clockwise as `turn` says.
+    let edges = [(0, 1), (1, 2), (2, 0)];
+    let pts = [b, c, y0];
+    let inside = |z: Point| edges.iter().all(|&(i, j)| k.orient(pts[i], pts[j], z) != outside);
+    for v in [x, x0] {
+        if inside(v.point) {
+            return Radon::Inside(Certificate::VertexInside {
+                of: v.of,
+                point: v.point,
+            });
+        }
+    }
+    let pos = |w: WitnessVertex| w.pos;
+    for (i, j) in edges {
+        match segment_contact(k, x.point, x0.point, pts[i], pts[j]) {
+            SegmentContact::Disjoint => {}
+            SegmentContact::Crossing => {
+                let (xs, ts) = ([pos(x), pos(x0)], [pos(tri[i]), pos(tri[j])]);
+                return if x.of == Which::P {
+                    Radon::Chords(xs, ts)
+                } else {
+                    Radon::Chords(ts, xs)
+                };
+            }
+            // A touching contact: the triangle's vertex on the segment (x and x₀ are
+            // outside the closed triangle).
+            _ => {
+                for w in [tri[i], tri[j]] {
+                    if point_on_segment(k, x.point, x0.point, w.point) {
+                        return Radon::Inside(Certificate::VertexInside {
+                            of: w.of,
+                            point: w.point,
+                        });
+                    }
+                }
+            }
+        }
+    }
+    Radon::Nothing
+}
+
+/// The vertex `y` inside one of the triangles of `tris` (each of three vertices of the
+/// other polygon), as a certificate; degenerate triangles are skipped. Three or four
+/// orientations per triangle.
+pub(crate) fn in_triangles<K: Kernel>(
+    k: K,
+    y: WitnessVertex,
+    tris: &[[WitnessVertex; 3]],
+) -> Option<Certificate> {
+    tris.iter().find_map(|t| {
+        if t.iter().any(|w| w.of == y.of) {
+            return None;
+        }
+        let [a, b, c] = t.map(|w| w.point);
+        let outside = match k.orient(a, b, c) {
+            Collinear => return None,
+            turn => turn.reverse(),
+        };
+        let inside = k.orient(a, b, y.point) != outside
+            && k.orient(b, c, y.point) != outside
+            && k.orient(c, a, y.point) != outside;
+        inside.then_some(Certificate::VertexInside {
+            of: y.of,
+            point: y.point,
+        })
+    })
+}
+
 /// Scratch buffers for [`examined_witness`], kept in a workspace so that a query
 /// allocates nothing in the steady state.
 #[derive(Clone, Debug, Default)]

@@ -90,8 +90,8 @@
 //! capped at n steps, so the test always terminates.
 
 use super::certificate::{
-    Radon, WitnessScratch, WitnessVertex, examined_witness, from_support, resolve_linked_chords,
-    supports_left, supports_right, witness_certificate,
+    Radon, WitnessScratch, WitnessVertex, examined_witness, from_support, in_triangles,
+    resolve_linked_chords, straddle_certificate, supports_left, supports_right, witness_certificate,
 };
 use super::linked::LinkedIntersection;
 use super::{Certificate, Derivation, Probe, Which};
@@ -439,14 +439,35 @@ fn certify_with<K: Kernel>(
                 pos: w.index.map(|i| positions[i] as usize),
             }
         };
-        let (pc, qc) = match witness_certificate(k, ws.lp.witness_points().iter().map(|&w| vertex(w))) {
-            Radon::Inside(c) => return Some(c),
-            Radon::Chords(pc, qc) => (pc, qc),
-            Radon::Nothing => return None,
-        };
+        // The LP's last step: its violating point beyond a chord of the other set (five
+        // points, no hull to build: a vertex inside or two chords), or a mixed pair of
+        // bounds (the other set's bound in a triangle of the violating point's set).
+        let mut chords = None;
+        if let Some([x, x0, b, c, y0]) = ws.lp.straddle() {
+            match straddle_certificate(k, [vertex(x), vertex(x0)], [vertex(b), vertex(c), vertex(y0)]) {
+                Radon::Inside(c) => return Some(c),
+                Radon::Chords(pc, qc) => chords = Some((pc, qc)),
+                Radon::Nothing => {}
+            }
+        } else if let Some([y, x, x1, t, x0]) = ws.lp.mixed() {
+            let (x, x1, t, x0) = (vertex(x), vertex(x1), vertex(t), vertex(x0));
+            if let Some(c) = in_triangles(k, vertex(y), &[[x, x1, t], [x, x1, x0]]) {
+                return Some(c);
+            }
+        }
+        // The points the LP examined (which hold most of its witness).
         if let Some(c) = examined_witness(k, ws.lp.examined().map(vertex), scratch) {
             return Some(c);
         }
+        // Two crossing chords: from the last step, else from the whole witness.
+        let (pc, qc) = match chords {
+            Some(c) => c,
+            None => match witness_certificate(k, ws.lp.witness_points().iter().map(|&w| vertex(w))) {
+                Radon::Inside(c) => return Some(c),
+                Radon::Chords(pc, qc) => (pc, qc),
+                Radon::Nothing => return None,
+            },
+        };
         let starts = |s: Set| (set(s).0, points(s));
         let (p_starts, q_starts) = if a.of() == Which::P {
             (starts(a), starts(b))

@@ -219,6 +219,58 @@ impl LpWorkspace {
         &self.witness.points[..self.witness.len]
     }
 
+    /// After an answer [`Separation::Intersecting`] (recorded) found where the point p
+    /// that made the LP infeasible failed on two points b and c of the other set: five
+    /// points whose hulls already intersect, `[p, p₀, b, c, q₀]`, where p₀ is a₀ if p
+    /// is of A (else b₀) and q₀ the other. The two points bound the one-dimensional
+    /// problem on either side of p in x′ (an upper bound of the other set lies beyond
+    /// p in x′ on one side, a lower bound on the other), and p lies strictly beyond
+    /// their segment from that set's side: no line with a direction in the frame's
+    /// half-circle H has p on its side and b, c on theirs, the frame's points a₀, b₀
+    /// (equal x′, b₀ above a₀) rule out the opposite directions, and b, c on both
+    /// sides of p rule out the direction of d₀ itself. The earlier points and the
+    /// bounding pair are not needed. `None` for every other witness (a mixed pair of
+    /// bounds needs the previous optimum's points: [`witness`](Self::witness)).
+    pub fn straddle(&self) -> Option<[WitnessPoint; 5]> {
+        let w = &self.witness;
+        if w.len != WITNESS || w.points[0].index.is_none() {
+            return None;
+        }
+        let [p, b, c, _, _, a0, b0, _, _] = w.points;
+        // The same point twice is a point of both sets or a blocked one: not this case.
+        let straddles = b.in_b == c.in_b && b.in_b != p.in_b && b.index != c.index;
+        straddles.then_some(if p.in_b {
+            [p, b0, b, c, a0]
+        } else {
+            [p, a0, b, c, b0]
+        })
+    }
+
+    /// After an answer [`Separation::Intersecting`] (recorded) found where the point p
+    /// that made the LP infeasible failed on one point y of the other set and one
+    /// point x of its own (a mixed pair of bounds, both on one side of p in x′):
+    /// `[y, p, x, t, p₀]`, where t is the previous optimum's tangent point in p's set
+    /// and p₀ is a₀ if p is of A (else b₀). Then y lies between the previous optimum's
+    /// line (p beyond it, x on or before it) and the ray from p through x, so it
+    /// usually lies in the triangle p, x, t (and the caller tests that, falling back
+    /// to [`witness`](Self::witness)). `None` for every other witness.
+    pub fn mixed(&self) -> Option<[WitnessPoint; 5]> {
+        let w = &self.witness;
+        if w.len != WITNESS || w.points[0].index.is_none() {
+            return None;
+        }
+        let [p, b, c, ta, tb, a0, b0, _, _] = w.points;
+        if b.in_b == c.in_b {
+            return None;
+        }
+        let (y, x) = if b.in_b == p.in_b { (c, b) } else { (b, c) };
+        Some(if p.in_b {
+            [y, p, x, tb, b0]
+        } else {
+            [y, p, x, ta, a0]
+        })
+    }
+
     /// After an answer [`Separation::Intersecting`] found by the incremental loop: every
     /// point it had examined (a few dozen, usually), whose hulls intersect; a superset
     /// of [`witness`](Self::witness) that more often holds a point of one set inside
