@@ -1295,23 +1295,33 @@ fn reduce_linked<K: Kernel>(
     if sigma == Collinear {
         return Reduced::Fail;
     }
-    // x is nearer the line than y (both on side σ).
-    let nearer = |x: Point, y: Point| k.cross(s, t, y, x) == sigma.reverse();
     // The signed distance (times |t − s|) towards side σ, rounded: only a guide.
     let (dx, dy) = (t.x - s.x, t.y - s.y);
     let flip = if sigma == Ccw { 1.0 } else { -1.0 };
     let height = |x: Point| flip * (dx * (x.y - s.y) - dy * (x.x - s.x));
+    // The nearest vertex on side σ, and the nearest on the other side (by −height).
     let mut best = (height(poly.point_at(start)), usize::MAX);
+    let mut other = (f64::INFINITY, usize::MAX);
     for (i, &x) in start_points.iter().enumerate() {
         let h = height(x);
-        if h > 0.0 && h < best.0 {
-            best = (h, i);
+        if h > 0.0 {
+            if h < best.0 {
+                best = (h, i);
+            }
+        } else if -h < other.0 && h < 0.0 {
+            other = (-h, i);
         }
     }
-    let mut v = start;
-    if best.1 != usize::MAX && k.orient(s, t, start_points[best.1]) == sigma {
+    let (mut v, mut sigma) = (start, sigma);
+    if other.0 < best.0 && k.orient(s, t, start_points[other.1]) == sigma.reverse() {
+        // The run on the other side ends at the other crossing of the line, or the same:
+        // either one serves.
+        (v, sigma) = (starts[other.1] as usize, sigma.reverse());
+    } else if best.1 != usize::MAX && k.orient(s, t, start_points[best.1]) == sigma {
         v = starts[best.1] as usize;
     }
+    // x is nearer the line than y (both on side σ).
+    let nearer = |x: Point, y: Point| k.cross(s, t, y, x) == sigma.reverse();
     // The walk tests many points against one line: its direction is computed once.
     let line = DirectedLine::new(s, t);
     let on_side = |pos: usize| k.orient_line(&line, poly.point_at(pos)) == sigma;
