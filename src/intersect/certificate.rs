@@ -1699,6 +1699,64 @@ mod tests {
     }
 
     #[test]
+    fn last_step_witnesses_give_a_vertex_inside_or_chords() {
+        let w = |x: f64, y: f64, of: Which, pos: usize| WitnessVertex {
+            point: Point::new(x, y),
+            of,
+            pos: Some(pos),
+        };
+        let (p, q) = (Which::P, Which::Q);
+        let tri = [w(0., 0., q, 0), w(4., 0., q, 1), w(0., 4., q, 2)];
+        // x on the triangle's edge (touching): a vertex inside.
+        match straddle_certificate(Exact, [w(2., 2., p, 5), w(9., 9., p, 6)], tri) {
+            Radon::Inside(Certificate::VertexInside { of, point }) => {
+                assert_eq!((of, point), (Which::P, Point::new(2., 2.)));
+            }
+            _ => panic!("expected a vertex inside"),
+        }
+        // x one ulp beyond that edge: the segment from x crosses the triangle's edges.
+        let beyond = 2f64 + f64::EPSILON * 2.0;
+        match straddle_certificate(Exact, [w(beyond, 2., p, 5), w(-1., 1., p, 6)], tri) {
+            Radon::Chords(a, b) => {
+                assert_eq!(a, [Some(5), Some(6)]);
+                assert!(b.iter().all(Option::is_some));
+            }
+            _ => panic!("expected crossing chords"),
+        }
+        // y₀ equal to a bound: segment against segment, touching at a vertex.
+        let seg = [w(0., 0., q, 0), w(4., 0., q, 1), w(4., 0., q, 1)];
+        match straddle_certificate(Exact, [w(2., 0., p, 5), w(2., 3., p, 6)], seg) {
+            Radon::Inside(Certificate::VertexInside { of, point }) => {
+                assert_eq!((of, point), (Which::P, Point::new(2., 0.)));
+            }
+            _ => panic!("expected a vertex inside"),
+        }
+        // ... and crossing properly; extreme coordinates are carried exactly.
+        let big = f64::MAX / 4.0;
+        let seg = [w(-big, 0., q, 0), w(big, 0., q, 1), w(big, 0., q, 1)];
+        assert!(matches!(
+            straddle_certificate(Exact, [w(0., big, p, 5), w(1., -big, p, 6)], seg),
+            Radon::Chords(..)
+        ));
+        // The mixed case: y in a triangle of the other polygon, boundary included, and
+        // not one ulp outside it; degenerate triangles are skipped.
+        let tiny = f64::from_bits(1);
+        let tri = [w(0., 0., p, 0), w(4. * tiny, 0., p, 1), w(0., 4. * tiny, p, 2)];
+        let line = [w(0., 0., p, 0), w(1., 1., p, 1), w(2., 2., p, 2)];
+        assert_eq!(
+            in_triangles(Exact, w(2. * tiny, 2. * tiny, q, 9), &[line, tri]),
+            Some(Certificate::VertexInside {
+                of: Which::Q,
+                point: Point::new(2. * tiny, 2. * tiny)
+            })
+        );
+        assert_eq!(
+            in_triangles(Exact, w(3. * tiny, 2. * tiny, q, 9), &[line, tri]),
+            None
+        );
+    }
+
+    #[test]
     fn faces_of_a_common_support_line_give_the_separating_edge() {
         let p = poly(&SQ);
         let q = poly(&[[3., 3.], [4., 3.], [4., 4.]]);

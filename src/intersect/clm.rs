@@ -1114,10 +1114,65 @@ impl Walk<'_> {
 
 #[cfg(test)]
 mod tests {
-    use super::{below, fisher_yates, shuffle};
+    use super::{Clm, ClmWorkspace, below, fisher_yates, shuffle};
+    use crate::generate::{self, Family, Relation};
+    use crate::intersect::{Derivation, LinkedIntersection, verify_linked};
     use crate::kernel::Point;
+    use crate::{Exact, LinkedPolygon};
     use rand::SeedableRng;
     use rand::rngs::SmallRng;
+
+    /// Intersecting pairs of the lattice families (exact touchings, one-ulp gaps,
+    /// nesting), as generated and scaled exactly to near f64::MAX and to subnormals:
+    /// every certified answer carries a certificate that `verify_linked` accepts, and
+    /// the LP's last step (a point beyond a chord, or a mixed pair of bounds) gives
+    /// the witness in some of them.
+    #[test]
+    fn last_step_witnesses_verify_on_touching_one_ulp_and_extreme_pairs() {
+        let mut rng = SmallRng::seed_from_u64(0x57d1);
+        let mut ws = ClmWorkspace::default();
+        let families = [
+            Family::SharedVertex,
+            Family::VertexOnEdge,
+            Family::SharedEdge,
+            Family::OverlappingEdges,
+            Family::OneUlpGap,
+            Family::Nested,
+        ];
+        let (mut straddles, mut mixed, mut checked) = (0, 0, 0);
+        for i in 0..240 {
+            let family = families[i % families.len()];
+            let (p, q) = generate::pair(family, 30 + 7 * (i % 40), Relation::Intersecting, &mut rng);
+            let largest = p
+                .vertices()
+                .iter()
+                .chain(q.vertices())
+                .map(|v| v.x.abs().max(v.y.abs()))
+                .fold(0.0, f64::max);
+            let up = 2f64.powi(1022 - largest.log2().ceil() as i32);
+            for scale in [1.0, up, 2f64.powi(-1074)] {
+                let f = |v: Point| Point::new(v.x * scale, v.y * scale);
+                let (Ok(ps), Ok(qs)) = (p.map(f), q.map(f)) else {
+                    continue; // a scaling that merges vertices
+                };
+                let lp = LinkedPolygon::from_convex_shuffled(&ps, &mut rng);
+                let lq = LinkedPolygon::from_convex_shuffled(&qs, &mut rng);
+                for _ in 0..4 {
+                    let d = Clm.derive_in(Exact, &lp, &lq, &mut rng, &mut ws, &mut ());
+                    let Derivation::Certified(c) = d else {
+                        panic!("{family} ×{scale:e} #{i}: no certificate under the exact kernel");
+                    };
+                    assert!(c.intersects(), "{family} ×{scale:e} #{i}: {c:?}");
+                    assert_eq!(verify_linked(&lp, &lq, &c), Ok(()), "{family} ×{scale:e} #{i}");
+                    straddles += usize::from(ws.lp.straddle().is_some());
+                    mixed += usize::from(ws.lp.mixed().is_some());
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked > 2000, "{checked}");
+        assert!(straddles > 20 && mixed > 20, "{straddles} {mixed} of {checked}");
+    }
 
     #[test]
     fn below_is_in_range_and_uniform() {
