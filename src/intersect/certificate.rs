@@ -1276,13 +1276,15 @@ fn linked_edge(poly: &LinkedPolygon, u: usize, w: usize) -> Option<usize> {
 /// ends are the two edges where the boundary crosses the line, at Y1 and Y2, and the
 /// polygon meets the line in [Y1, Y2], which holds the crossing X of chord and segment.
 /// From a vertex of the run, the walk towards the line reaches one end (distances along
-/// the run are unimodal). It starts from the vertex of `starts` (positions, and the
-/// points at them) ∪ {`start`} on side σ nearest the line, so that it passes no other
-/// vertex of `starts`. That vertex is chosen by the distances as computed in `f64` (one
-/// pass over the contiguous points, no predicate), and checked with one exact
-/// orientation: the walk's correctness needs only a start on side σ, the choice bounds
-/// its length. If the end's edge misses the segment, the segment's endpoint nearer its
-/// line lies between X and Y1, inside the polygon.
+/// the run are unimodal). The run strictly on the other side serves as well (its ends
+/// are the same two edges), so the walk starts from the vertex of `starts` (positions,
+/// and the points at them) ∪ {`start`} nearest the line on either side, and passes no
+/// other vertex of `starts` on that side. That vertex is chosen by the distances as
+/// computed in `f64` (one pass over the contiguous points, no predicate), and checked
+/// with one exact orientation: the walk's correctness needs only a start strictly on
+/// the side it walks, the choice bounds its length. If the end's edge misses the
+/// segment, the segment's endpoint nearer its line lies between X and that end, inside
+/// the polygon.
 fn reduce_linked<K: Kernel>(
     k: K,
     poly: &LinkedPolygon,

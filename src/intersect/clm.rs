@@ -57,13 +57,22 @@
 //! * **Intersecting.** The LP reports a witness of intersecting hulls (at most nine
 //!   points: the violating point, the one or two points that bounded its 1D problem,
 //!   the previous optimum's tangent points, and a₀, b₀ and the bounding pair, which
-//!   restrict separators to the LP's half-circle of directions). A point of one set in
-//!   the hull of the other's is a vertex inside. Else the points the LP examined (a few
-//!   dozen) are searched the same way. Else two of the points form crossing chords,
-//!   resolved by walks along the boundaries started from the sample or chain vertex
-//!   nearest the chord's line, so each walk stays within one gap between those
-//!   vertices: expected O(n/r + r), i.e. O(√n) like the test itself, but far more than
-//!   an intersecting query that stopped after a few dozen points.
+//!   restrict separators to the LP's half-circle of directions). Its last step is
+//!   read first, in O(1): when the violating point p failed on two points of the
+//!   other set, one on each side of it in x′, the segment from p to its set's frame
+//!   point meets their triangle with the other frame point
+//!   ([`LpWorkspace::straddle`](crate::lp::LpWorkspace::straddle): p or that point
+//!   inside, else two chords); when it failed on one point y of the other set and one
+//!   of its own, y usually lies in the triangle of p, that point and the previous
+//!   optimum's tangent point of p's set (or p's frame point)
+//!   ([`LpWorkspace::mixed`](crate::lp::LpWorkspace::mixed)). A point of one set in
+//!   the hull of the other's is a vertex inside. Else the points the LP examined (a
+//!   few dozen) are searched the same way. Else two of the points form crossing
+//!   chords (from the last step, else from the whole witness), resolved by walks
+//!   along the boundaries started from the sample or chain vertex nearest the chord's
+//!   line on either side, so each walk stays within one gap between those vertices:
+//!   expected O(n/r + r), i.e. O(√n) like the test itself, but far more than an
+//!   intersecting query that stopped after a few dozen points.
 //! * Otherwise (an inconsistent kernel) only the answer, completed on the walked arrays.
 //!
 //! # Complexity
