@@ -222,7 +222,7 @@ enum Outcome {
 fn meeting<K: Kernel>(k: K, searches: &[PairSearch<'_>; 2]) -> Derivation {
     let mut missed = [None; 2];
     for (s, slot) in missed.iter_mut().enumerate() {
-        if let Some(Verdict::Meet(t)) = searches[s].verdict() {
+        if let Some(t) = searches[s].met() {
             match vertex_inside(k, searches, s, t) {
                 Ok(c) => return Derivation::Certified(c),
                 Err(g) => *slot = g.map(|g| (t, g)),
@@ -282,7 +282,8 @@ fn vertex_inside<K: Kernel>(
 /// search on heights): then an end of g lies in the triangle (a vertex inside), or r
 /// meets g (crossing edges), or g crosses a chord from w to an end of r, resolved
 /// with [`resolve_chords`]. `None` when Z is not in X (the polygons meet at other
-/// heights).
+/// heights). Out of line: one query in five gets here.
+#[inline(never)]
 fn beside<K: Kernel>(
     k: K,
     searches: &[PairSearch<'_>; 2],
@@ -546,8 +547,8 @@ enum Apart {
 /// A decided chain-pair search.
 #[derive(Clone, Copy, Debug)]
 enum Verdict {
-    /// The regions meet: this test found x_L ≤ x_R.
-    Meet(Tested),
+    /// The regions meet: a test found x_L ≤ x_R ([`PairSearch::met`] gives it).
+    Meet,
     Apart(Apart),
 }
 
@@ -655,7 +656,7 @@ impl<'a> PairSearch<'a> {
         let at = |w: Bound, (inside, other): (bool, usize)| {
             let t = Tested { w, other };
             if inside {
-                Verdict::Meet(t)
+                Verdict::Meet
             } else {
                 Verdict::Apart(Apart::At(t, None))
             }
@@ -676,6 +677,18 @@ impl<'a> PairSearch<'a> {
                 (_, hi) => hi,
             },
         })
+    }
+
+    /// The test that decided the search if it met (`verdict` is then `Verdict::Meet`),
+    /// read off the deciding test alone: the witness asks only this.
+    #[inline]
+    fn met(&self) -> Option<Tested> {
+        let (w, other) = match self.decided {
+            Decided::Lo(true, other) | Decided::Both((true, other), _) => (self.lo, other),
+            Decided::Hi(true, other) | Decided::Both(_, Some((true, other))) => (self.hi, other),
+            _ => return None,
+        };
+        Some(Tested { w, other })
     }
 
     /// Decides the search by the tests at both ends of I (g is linear there).
