@@ -716,6 +716,10 @@ fn fisher_yates<R: Rng + ?Sized>(
     }
 }
 
+/// With the samples in boundary order ([`ClmVariant::sample_walk`]), the points of each
+/// sample that a first LP tries before they are put in order.
+const PREFIX: usize = 12;
+
 /// ⌈c·√n⌉, at least 3.
 fn sample_size(c: f64, n: usize) -> usize {
     let r = (c * (n as f64).sqrt()).ceil();
@@ -732,8 +736,21 @@ fn counted_lp<K: Kernel, R: Rng + ?Sized, P: Probe>(
     lp: &mut LpWorkspace,
     probe: &mut P,
 ) -> Result<Separation, LpError> {
+    counted_lp_after(k, (a, a_points), (b, b_points), 0, rng, lp, probe)
+}
+
+/// [`counted_lp`], reporting `spent` more work (done on the same decision before).
+fn counted_lp_after<K: Kernel, R: Rng + ?Sized, P: Probe>(
+    k: K,
+    (a, a_points): (&ArenaPoints<'_>, &[Point]),
+    (b, b_points): (&ArenaPoints<'_>, &[Point]),
+    spent: u64,
+    rng: &mut R,
+    lp: &mut LpWorkspace,
+    probe: &mut P,
+) -> Result<Separation, LpError> {
     debug_assert!(a_points.len() == a.positions.len() && b_points.len() == b.positions.len());
-    let before = lp.work;
+    let before = lp.work - spent;
     // The LP asks its predicates of these points only: the exact kernel's semi-static
     // filter, with one bound from their boxes, certifies them with two comparisons
     // (one pass over the points, which the LP reads anyway).
@@ -747,17 +764,20 @@ fn counted_lp<K: Kernel, R: Rng + ?Sized, P: Probe>(
 /// order by [`boundary_order`], chains in walk order) by [`separate_chains`] from the
 /// indices `start`, reported to `probe` as an LP call on the two sets; the LP (which
 /// then shuffles the points itself) when the walk gives no answer, and for a certified
-/// query whose sets intersect (the LP records the witness).
+/// query whose sets intersect (the LP records the witness). `spent` is work done on
+/// the same decision before, reported with it.
+#[allow(clippy::too_many_arguments)]
 fn walk_or_lp<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     k: K,
     (a, a_points): (&ArenaPoints<'_>, &[Point]),
     (b, b_points): (&ArenaPoints<'_>, &[Point]),
     start: [usize; 2],
+    spent: u64,
     rng: &mut R,
     lp: &mut LpWorkspace,
     probe: &mut P,
 ) -> Result<Separation, LpError> {
-    let before = lp.work;
+    let before = lp.work - spent;
     match separate_chains(k, a_points, b_points, start, &mut lp.work) {
         Some(Separation::Intersecting) if CERT => {}
         Some(result) => {
@@ -766,7 +786,7 @@ fn walk_or_lp<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         }
         None => {}
     }
-    counted_lp(k, (a, a_points), (b, b_points), rng, lp, probe)
+    counted_lp_after(k, (a, a_points), (b, b_points), lp.work - before, rng, lp, probe)
 }
 
 /// The test; with `CERT` it also records in `ws.trace` what its certificate needs.
@@ -813,6 +833,39 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     // LPs that use a sample read contiguous memory.
     gather(p, &ws.rp, &mut ws.rp_points);
     gather(q, &ws.rq, &mut ws.rq_points);
+    // Intersecting samples usually show within a few dozen points: an LP on a short
+    // prefix of each sample answers most intersecting queries before the samples are
+    // put in order (a prefix of a random sample is a random sample).
+    let mut spent = 0;
+    if v.sample_walk && (ws.rp.len() > PREFIX || ws.rq.len() > PREFIX) {
+        let before = ws.lp.work;
+        let a = &ws.rp_points[..ws.rp.len().min(PREFIX)];
+        let b = &ws.rq_points[..ws.rq.len().min(PREFIX)];
+        // Distinct samples come in arena order: the LP shuffles them.
+        let random = v.sampling == Sampling::FisherYates
+            || (ws.rp.len().saturating_mul(16) <= p.len() && ws.rq.len().saturating_mul(16) <= q.len());
+        ws.lp.keep_order(random);
+        let meet = separating_line(k.within([box_of(a), box_of(b)]), a, b, rng, &mut ws.lp);
+        ws.lp.keep_order(caller_random);
+        spent = ws.lp.work - before;
+        if meet == Ok(Separation::Intersecting) {
+            let rp = ArenaPoints {
+                polygon: p,
+                positions: &ws.rp,
+            };
+            let rq = ArenaPoints {
+                polygon: q,
+                positions: &ws.rq,
+            };
+            probe.samples(&rp, &rq);
+            probe.lp_call(&rp, &rq, spent, &meet);
+            if CERT {
+                // The witness's indices are the prefixes', the samples' own.
+                ws.trace.meet = Some((Set::Rp, Set::Rq));
+            }
+            return true;
+        }
+    }
     // Both samples in boundary order, or neither: then the LPs decide.
     let ordered = v.sample_walk
         && boundary_order(k, &mut ws.rp, &mut ws.rp_points, &mut ws.order)
@@ -832,15 +885,17 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
             (&rp, &ws.rp_points),
             (&rq, &ws.rq_points),
             [0, 0],
+            spent,
             rng,
             &mut ws.lp,
             probe,
         )
     } else {
-        counted_lp(
+        counted_lp_after(
             k,
             (&rp, &ws.rp_points),
             (&rq, &ws.rq_points),
+            spent,
             rng,
             &mut ws.lp,
             probe,
@@ -1132,6 +1187,7 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
                         (&a, near_points),
                         (&b, chains.points(far)),
                         start,
+                        0,
                         rng,
                         lp,
                         probe,
