@@ -26,6 +26,10 @@
 //!    Both chains are convex and come in boundary order, so this last LP is a
 //!    galloping walk along them ([`separate_chains`], exact, from C′_P's first vertex
 //!    and C_Q's tangent vertex on L′), the LP only when the walk gives no answer.
+//!    With [`ClmVariant::sample_walk`] (the default) the LPs of steps 2 and 5 on a
+//!    sample are such walks too: the samples are put in boundary order first
+//!    (`boundary_order`, exact), after an LP on the first 12 points of each
+//!    (intersecting samples usually show there, before any ordering).
 //!    Order of work: chain walks run two at a time in lockstep, so that their cache
 //!    misses (each step is a dependent load at a random arena position) overlap, and
 //!    each LP runs as soon as the chain it needs is walked (either sample-against-chain
@@ -186,7 +190,7 @@ pub struct ClmVariant {
     /// (the default; the LP still runs when the walk gives no answer, and for the
     /// witness of a certified query whose chains intersect).
     pub chain_walk: bool,
-    /// Whether the samples are put in boundary order ([`boundary_order`]: sorted by
+    /// Whether the samples are put in boundary order (sorted by
     /// angle about their lowest point, exactly) so that the three LPs on a sample — the
     /// samples against each other and each against the other polygon's first chain —
     /// are [`separate_chains`] walks too (the default). Then no LP input is in random
