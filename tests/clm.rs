@@ -315,17 +315,20 @@ fn algorithm_enum_and_probe() {
 }
 
 /// The thesis's variants (Fisher–Yates sampling, the caller randomising the LP), with
-/// and without the chain-against-chain walk, answer as `Linear` does under the exact kernel, on the touching families and random
-/// pairs, several seeds per pair.
+/// and without the chain-against-chain walk and the samples in boundary order, answer
+/// as `Linear` does under the exact kernel, on the touching families and random pairs,
+/// several seeds per pair.
 #[test]
 fn thesis_variants_agree_with_linear() {
     let mut rng = SmallRng::seed_from_u64(SEED + 9);
     let mut ws = ClmWorkspace::default();
+    // (sampling, LP order, chain-against-chain walk, samples in boundary order)
     let variants = [
-        (Sampling::FisherYates, LpOrder::Lp, true),
-        (Sampling::Independent, LpOrder::Caller, false),
-        (Sampling::FisherYates, LpOrder::Caller, false),
-        (Sampling::Independent, LpOrder::Lp, false),
+        (Sampling::FisherYates, LpOrder::Lp, true, true),
+        (Sampling::Independent, LpOrder::Caller, false, true),
+        (Sampling::Independent, LpOrder::Caller, true, false),
+        (Sampling::FisherYates, LpOrder::Caller, false, false),
+        (Sampling::Independent, LpOrder::Lp, false, false),
     ];
     let (mut queries, mut intersecting) = (0u32, 0u32);
     for &family in Family::TOUCHING.iter().chain([Family::Rotated].iter()) {
@@ -336,18 +339,19 @@ fn thesis_variants_agree_with_linear() {
                 let truth = Linear.intersects_with(Exact, &p, &q);
                 let lp = LinkedPolygon::from_convex_shuffled(&p, &mut rng);
                 let lq = LinkedPolygon::from_convex_shuffled(&q, &mut rng);
-                for (sampling, lp_order, chain_walk) in variants {
+                for (sampling, lp_order, chain_walk, sample_walk) in variants {
                     let v = ClmVariant {
                         sampling,
                         lp_order,
                         chain_walk,
+                        sample_walk,
                         ..ClmVariant::default()
                     };
                     for _ in 0..3 {
                         let got = v.intersects_in(Exact, &lp, &lq, &mut rng, &mut ws, &mut ());
                         assert_eq!(
                             got, truth,
-                            "{family:?} n = {n}, {sampling:?}, {lp_order:?}, {chain_walk}"
+                            "{family:?} n = {n}, {sampling:?}, {lp_order:?}, {chain_walk}, {sample_walk}"
                         );
                         queries += 1;
                         intersecting += u32::from(got);

@@ -103,8 +103,8 @@ fn barba_and_dobkin_stay_within_the_thesis_bounds() {
     }
 }
 
-/// CLM's counts per query, kept apart: samples of ⌈√n⌉ (at least 3, at most the
-/// polygon), the first LP on both samples, one LP when the sample hulls meet, five LPs
+/// CLM's counts per query, kept apart: samples of ⌈√n⌉ draws (at least 3, at most the
+/// polygon; repeats kept once), the first LP on both samples, one LP when the sample hulls meet, five LPs
 /// and four walks on every disjoint pair, the summed work equal to its parts, and
 /// chains of expected length O(n / r) = O(√n) (Chazelle–Liu–Magen, Theorem 2.1).
 #[test]
@@ -121,8 +121,14 @@ fn clm_counts_are_recorded_apart_and_match_the_algorithm() {
         let answer = Clm.intersects_in(Exact, &lp, &lq, &mut rng, &mut ws, &mut c);
         assert_eq!(answer, truth, "clm on {name}");
         let expected = |n: usize| ((n as f64).sqrt().ceil() as usize).max(3).min(n);
-        assert_eq!(c.samples_p, expected(p.len()), "{name}");
-        assert_eq!(c.samples_q, expected(q.len()), "{name}");
+        // Independent draws may repeat a vertex (about r²/2n = ½ repeats expected);
+        // the sample keeps one copy.
+        for (got, n) in [(c.samples_p, p.len()), (c.samples_q, q.len())] {
+            assert!(
+                got <= expected(n) && got + 8 >= expected(n),
+                "{name}: {got} of {n}"
+            );
+        }
         assert!((1..=5).contains(&c.lp_calls()), "{name}: {c:?}");
         assert_eq!(c.lps[0].constraints, c.samples(), "{name}");
         assert!(c.walks.len() <= 4, "{name}: {c:?}");

@@ -26,6 +26,10 @@
 //!    Both chains are convex and come in boundary order, so this last LP is a
 //!    galloping walk along them ([`separate_chains`], exact, from C′_P's first vertex
 //!    and C_Q's tangent vertex on L′), the LP only when the walk gives no answer.
+//!    With [`ClmVariant::sample_walk`] (the default) the LPs of steps 2 and 5 on a
+//!    sample are such walks too: the samples are put in boundary order first
+//!    (`boundary_order`, exact), after an LP on the first 12 points of each
+//!    (intersecting samples usually show there, before any ordering).
 //!    Order of work: chain walks run two at a time in lockstep, so that their cache
 //!    misses (each step is a dependent load at a random arena position) overlap, and
 //!    each LP runs as soon as the chain it needs is walked (either sample-against-chain
@@ -195,6 +199,13 @@ pub struct ClmVariant {
     /// (the default; the LP still runs when the walk gives no answer, and for the
     /// witness of a certified query whose chains intersect).
     pub chain_walk: bool,
+    /// Whether the samples are put in boundary order (sorted by
+    /// angle about their lowest point, exactly) so that the three LPs on a sample — the
+    /// samples against each other and each against the other polygon's first chain —
+    /// are [`separate_chains`] walks too (the default). Then no LP input is in random
+    /// order: chains are not shuffled, and an LP that still runs (a walk without an
+    /// answer, a certified query's witness) shuffles its points itself.
+    pub sample_walk: bool,
 }
 
 impl Default for ClmVariant {
@@ -204,6 +215,7 @@ impl Default for ClmVariant {
             sampling: Sampling::default(),
             lp_order: LpOrder::default(),
             chain_walk: true,
+            sample_walk: true,
         }
     }
 }
@@ -230,6 +242,8 @@ pub struct ClmWorkspace {
     /// [`separate_chains`] ([`ClmVariant::chain_walk`]).
     ordered: [(Vec<u32>, Vec<Point>); 2],
     walked: u64,
+    /// Scratch of [`boundary_order`].
+    order: OrderScratch,
     /// The index array of [`Sampling::FisherYates`] (the identity between draws) and
     /// the swaps of one draw, to restore it.
     perm: Vec<u32>,
@@ -524,6 +538,141 @@ fn gather(poly: &LinkedPolygon, positions: &[u32], out: &mut Vec<Point>) {
     out.extend(positions.iter().map(|&i| poly.point_at(i as usize)));
 }
 
+/// Scratch memory of [`boundary_order`]: the keys, the bucket counts, the order, and
+/// a second copy of the sample.
+#[derive(Clone, Debug, Default)]
+struct OrderScratch {
+    keys: Vec<u32>,
+    counts: Vec<u32>,
+    order: Vec<u32>,
+    positions: Vec<u32>,
+    points: Vec<Point>,
+}
+
+/// Puts a sample of a strictly convex polygon's vertices (`positions` and `points`,
+/// index for index) in counter-clockwise boundary order from its lowest point (the
+/// leftmost of those), repeats dropped: the vertices of a convex polygon in cyclic
+/// order, as [`separate_chains`] takes them. Every point lies in the half-turn [0, π)
+/// of directions seen from the lowest point o, so "a before b" is `orient(o, a, b) =
+/// Ccw`, and no two distinct vertices of a strictly convex polygon tie: under an exact
+/// kernel the order is exact.
+///
+/// The points are first placed by an `f64` pseudo-angle about o into 2r–4r buckets (one
+/// counting pass, O(r)); then an insertion pass with that `orient` sorts within the
+/// buckets and puts right what rounding misplaced, and drops repeats (adjacent in the
+/// exact order). When the angles crowd into few buckets and the pass would need more
+/// than 4r + 16 moves, the keys are sorted in full (32 bits) and the pass runs again.
+/// Returns `false` when that fails too (keys ruined by differences that overflow); the
+/// sample is then unchanged and the caller runs the LP.
+fn boundary_order<K: Kernel>(
+    k: K,
+    positions: &mut Vec<u32>,
+    points: &mut Vec<Point>,
+    scratch: &mut OrderScratch,
+) -> bool {
+    let n = points.len();
+    debug_assert_eq!(n, positions.len());
+    let Some(&first) = points.first() else {
+        return true;
+    };
+    // The lowest point, the leftmost of those; and the sample's box, for the kernel.
+    let (mut o, mut lo, mut hi) = (first, first, first);
+    for &x in &points[1..] {
+        if x.y < o.y || (x.y == o.y && x.x < o.x) {
+            o = x;
+        }
+        lo.x = lo.x.min(x.x);
+        hi.x = hi.x.max(x.x);
+        hi.y = hi.y.max(x.y);
+    }
+    lo.y = o.y;
+    // Every `orient` below is on three points of the sample.
+    let k = k.within([(lo, hi), (lo, hi)]);
+    let OrderScratch {
+        keys,
+        counts,
+        order,
+        positions: sorted_positions,
+        points: sorted_points,
+    } = scratch;
+    keys.clear();
+    keys.extend(points.iter().map(|x| {
+        let (dx, dy) = (x.x - o.x, x.y - o.y);
+        // In [0, 2], increasing with the angle (NaN for o itself, which `as` maps to 0).
+        let angle = 1.0 - dx / (dx.abs() + dy);
+        (angle * 2_147_483_648.0) as u32
+    }));
+    // Counting sort on the keys' top bits.
+    let bits = (2 * n).next_power_of_two().trailing_zeros().min(24);
+    counts.clear();
+    counts.resize((1 << bits) + 1, 0);
+    let bucket = |key: u32| (u64::from(key) >> (32 - bits)) as usize;
+    for &key in keys.iter() {
+        counts[bucket(key) + 1] += 1;
+    }
+    for b in 1..counts.len() {
+        counts[b] += counts[b - 1];
+    }
+    order.clear();
+    order.resize(n, 0);
+    for (i, &key) in keys.iter().enumerate() {
+        let at = &mut counts[bucket(key)];
+        order[*at as usize] = i as u32;
+        *at += 1;
+    }
+    let mut sorted = |order: &[u32]| {
+        sorted_positions.clear();
+        sorted_positions.extend(order.iter().map(|&i| positions[i as usize]));
+        sorted_points.clear();
+        sorted_points.extend(order.iter().map(|&i| points[i as usize]));
+        insertion_pass(k, o, sorted_positions, sorted_points)
+    };
+    if !sorted(order) {
+        // Crowded buckets: sort by the whole keys.
+        order.sort_unstable_by_key(|&i| keys[i as usize]);
+        if !sorted(order) {
+            return false;
+        }
+    }
+    std::mem::swap(positions, sorted_positions);
+    std::mem::swap(points, sorted_points);
+    true
+}
+
+/// The insertion pass of [`boundary_order`] about its lowest point `o`, in place:
+/// `false` after 4r + 16 moves (the contents are then scrambled).
+fn insertion_pass<K: Kernel>(k: K, o: Point, positions: &mut Vec<u32>, points: &mut Vec<Point>) -> bool {
+    let n = points.len();
+    let before = |a: Point, b: Point| b != o && (a == o || k.orient(o, a, b) == Orientation::Ccw);
+    let mut budget = 4 * n + 16;
+    // points[..len] holds the points kept so far, in order; len ≤ i.
+    let mut len = 0;
+    for i in 0..n {
+        let (x, at) = (points[i], positions[i]);
+        let mut j = len;
+        while j > 0 && before(x, points[j - 1]) {
+            if budget == 0 {
+                return false;
+            }
+            budget -= 1;
+            points[j] = points[j - 1];
+            positions[j] = positions[j - 1];
+            j -= 1;
+        }
+        if j > 0 && points[j - 1] == x {
+            // A repeat: close the gap again.
+            points.copy_within(j + 1..=len, j);
+            positions.copy_within(j + 1..=len, j);
+            continue;
+        }
+        (points[j], positions[j]) = (x, at);
+        len += 1;
+    }
+    points.truncate(len);
+    positions.truncate(len);
+    true
+}
+
 /// A uniform integer in `0..n` (`n > 0`) from 32 random bits, by Lemire's
 /// multiply-and-reject method: one multiplication, and a division only in the rare
 /// round that may need a rejection. (`Rng::random_range` does the same with more
@@ -601,6 +750,10 @@ fn fisher_yates<R: Rng + ?Sized>(
     }
 }
 
+/// With the samples in boundary order ([`ClmVariant::sample_walk`]), the points of each
+/// sample that a first LP tries before they are put in order.
+const PREFIX: usize = 12;
+
 /// ⌈c·√n⌉, at least 3.
 fn sample_size(c: f64, n: usize) -> usize {
     let r = (c * (n as f64).sqrt()).ceil();
@@ -617,8 +770,21 @@ fn counted_lp<K: Kernel, R: Rng + ?Sized, P: Probe>(
     lp: &mut LpWorkspace,
     probe: &mut P,
 ) -> Result<Separation, LpError> {
+    counted_lp_after(k, (a, a_points), (b, b_points), 0, rng, lp, probe)
+}
+
+/// [`counted_lp`], reporting `spent` more work (done on the same decision before).
+fn counted_lp_after<K: Kernel, R: Rng + ?Sized, P: Probe>(
+    k: K,
+    (a, a_points): (&ArenaPoints<'_>, &[Point]),
+    (b, b_points): (&ArenaPoints<'_>, &[Point]),
+    spent: u64,
+    rng: &mut R,
+    lp: &mut LpWorkspace,
+    probe: &mut P,
+) -> Result<Separation, LpError> {
     debug_assert!(a_points.len() == a.positions.len() && b_points.len() == b.positions.len());
-    let before = lp.work;
+    let before = lp.work - spent;
     // The LP asks its predicates of these points only: the exact kernel's semi-static
     // filter, with one bound from their boxes, certifies them with two comparisons
     // (one pass over the points, which the LP reads anyway).
@@ -626,6 +792,35 @@ fn counted_lp<K: Kernel, R: Rng + ?Sized, P: Probe>(
     let result = separating_line(k, a_points, b_points, rng, lp);
     probe.lp_call(a, b, lp.work - before, &result);
     result
+}
+
+/// The separation of two sets whose points come in boundary order (samples put in
+/// order by [`boundary_order`], chains in walk order) by [`separate_chains`] from the
+/// indices `start`, reported to `probe` as an LP call on the two sets; the LP (which
+/// then shuffles the points itself) when the walk gives no answer, and for a certified
+/// query whose sets intersect (the LP records the witness). `spent` is work done on
+/// the same decision before, reported with it.
+#[allow(clippy::too_many_arguments)]
+fn walk_or_lp<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
+    k: K,
+    (a, a_points): (&ArenaPoints<'_>, &[Point]),
+    (b, b_points): (&ArenaPoints<'_>, &[Point]),
+    start: [usize; 2],
+    spent: u64,
+    rng: &mut R,
+    lp: &mut LpWorkspace,
+    probe: &mut P,
+) -> Result<Separation, LpError> {
+    let before = lp.work - spent;
+    match separate_chains(k, a_points, b_points, start, &mut lp.work) {
+        Some(Separation::Intersecting) if CERT => {}
+        Some(result) => {
+            probe.lp_call(a, b, lp.work - before, &Ok(result));
+            return Ok(result);
+        }
+        None => {}
+    }
+    counted_lp_after(k, (a, a_points), (b, b_points), lp.work - before, rng, lp, probe)
 }
 
 /// The test; with `CERT` it also records in `ws.trace` what its certificate needs.
@@ -643,7 +838,10 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         ws.trace.lines.clear();
     }
     ws.lp.record_witness(CERT);
-    ws.lp.keep_order(v.lp_order == LpOrder::Caller);
+    // With the samples in boundary order nothing is in random order: the LPs that
+    // still run shuffle their points themselves.
+    let caller_random = v.lp_order == LpOrder::Caller && !v.sample_walk;
+    ws.lp.keep_order(caller_random);
     ws.rp.clear();
     ws.rq.clear();
     let (rp_len, rq_len) = (sample_size(v.factor, p.len()), sample_size(v.factor, q.len()));
@@ -651,7 +849,7 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         Sampling::Independent => {
             sample(p, rp_len, rng, &mut ws.sample, &mut ws.rp);
             sample(q, rq_len, rng, &mut ws.sample, &mut ws.rq);
-            if v.lp_order == LpOrder::Caller {
+            if caller_random {
                 // Only independent draws come in random order.
                 for (r, poly) in [(&mut ws.rp, p), (&mut ws.rq, q)] {
                     if r.len().saturating_mul(16) > poly.len() {
@@ -669,6 +867,43 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     // LPs that use a sample read contiguous memory.
     gather(p, &ws.rp, &mut ws.rp_points);
     gather(q, &ws.rq, &mut ws.rq_points);
+    // Intersecting samples usually show within a few dozen points: an LP on a short
+    // prefix of each sample answers most intersecting queries before the samples are
+    // put in order (a prefix of a random sample is a random sample).
+    let mut spent = 0;
+    if v.sample_walk && (ws.rp.len() > PREFIX || ws.rq.len() > PREFIX) {
+        let before = ws.lp.work;
+        let a = &ws.rp_points[..ws.rp.len().min(PREFIX)];
+        let b = &ws.rq_points[..ws.rq.len().min(PREFIX)];
+        // Distinct samples come in arena order: the LP shuffles them.
+        let random = v.sampling == Sampling::FisherYates
+            || (ws.rp.len().saturating_mul(16) <= p.len() && ws.rq.len().saturating_mul(16) <= q.len());
+        ws.lp.keep_order(random);
+        let meet = separating_line(k.within([box_of(a), box_of(b)]), a, b, rng, &mut ws.lp);
+        ws.lp.keep_order(caller_random);
+        spent = ws.lp.work - before;
+        if meet == Ok(Separation::Intersecting) {
+            let rp = ArenaPoints {
+                polygon: p,
+                positions: &ws.rp,
+            };
+            let rq = ArenaPoints {
+                polygon: q,
+                positions: &ws.rq,
+            };
+            probe.samples(&rp, &rq);
+            probe.lp_call(&rp, &rq, spent, &meet);
+            if CERT {
+                // The witness's indices are the prefixes', the samples' own.
+                ws.trace.meet = Some((Set::Rp, Set::Rq));
+            }
+            return true;
+        }
+    }
+    // Both samples in boundary order, or neither: then the LPs decide.
+    let ordered = v.sample_walk
+        && boundary_order(k, &mut ws.rp, &mut ws.rp_points, &mut ws.order)
+        && boundary_order(k, &mut ws.rq, &mut ws.rq_points, &mut ws.order);
     let rp = ArenaPoints {
         polygon: p,
         positions: &ws.rp,
@@ -678,14 +913,29 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         positions: &ws.rq,
     };
     probe.samples(&rp, &rq);
-    let t = match counted_lp(
-        k,
-        (&rp, &ws.rp_points),
-        (&rq, &ws.rq_points),
-        rng,
-        &mut ws.lp,
-        probe,
-    ) {
+    let first_lp = if ordered {
+        walk_or_lp::<K, R, P, CERT>(
+            k,
+            (&rp, &ws.rp_points),
+            (&rq, &ws.rq_points),
+            [0, 0],
+            spent,
+            rng,
+            &mut ws.lp,
+            probe,
+        )
+    } else {
+        counted_lp_after(
+            k,
+            (&rp, &ws.rp_points),
+            (&rq, &ws.rq_points),
+            spent,
+            rng,
+            &mut ws.lp,
+            probe,
+        )
+    };
+    let t = match first_lp {
         Ok(Separation::Separated(t)) => t,
         // Samples are never empty (polygons have ≥ 3 vertices), so only a real
         // intersection of the sample hulls gets here.
@@ -720,8 +970,9 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         std::mem::take(&mut ws.chain_points),
     );
     let order = ChainOrder {
-        shuffle: v.lp_order == LpOrder::Caller,
+        shuffle: caller_random,
         walk: v.chain_walk,
+        samples: ordered.then_some([t.a, t.b]),
     };
     let answer = walk_and_decide::<K, R, P, CERT>(k, p, q, first, &mut chains, order, rng, ws, probe);
     let Chains([cp, cq, chain, chain2], points) = chains;
@@ -738,6 +989,10 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
 struct ChainOrder {
     shuffle: bool,
     walk: bool,
+    /// With the samples in boundary order ([`ClmVariant::sample_walk`]), the indices of
+    /// the first line's tangent vertices in R_P and R_Q: the sample-against-chain LPs
+    /// are walks from there and the chain's first vertex.
+    samples: Option<[usize; 2]>,
 }
 
 /// The four chain buffers (positions, and the points at them), indexed by
@@ -854,9 +1109,10 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         ordered,
         ..
     } = ws;
-    // Per polygon (P, Q): the position of its first chain's tangent vertex on the line
-    // of the sample-against-chain LP, where the chain-against-chain walk starts.
-    let mut far_tangent = [0u32; 2];
+    // Per polygon (P, Q): its first chain's tangent vertex on the line of the
+    // sample-against-chain LP, where the chain-against-chain walk starts: its position
+    // when the chain is shuffled, else its index in the chain.
+    let mut far_tangent = [0usize; 2];
     let p_open = rp.len() < p.len();
     let q_open = rq.len() < q.len();
     let mut slots: [Option<Active<'_>>; 2] = [None, None];
@@ -884,7 +1140,7 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
             *walked += len as u64;
             let side = usize::from(set.of() == Which::Q);
             let second = matches!(set, Set::Chain | Set::Chain2);
-            if order.walk && !second {
+            if order.walk && order.shuffle && !second {
                 let (positions, points) = &mut ordered[side];
                 positions.clone_from(&chains.0[set.chain_index()]);
                 points.clone_from(&chains.1[set.chain_index()]);
@@ -893,8 +1149,13 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
                 let far = if set == Set::Chain { Set::Cq } else { Set::Cp };
                 let far_side = usize::from(far.of() == Which::Q);
                 let before = lp.work;
-                match chain_against_chain(k, set, far, chains, &ordered[far_side], far_tangent[far_side], lp)
-                {
+                let walked = if order.shuffle {
+                    chain_against_chain(k, set, far, chains, &ordered[far_side], far_tangent[far_side], lp)
+                } else {
+                    let start = [0, far_tangent[far_side]];
+                    separate_chains(k, chains.points(set), chains.points(far), start, &mut lp.work)
+                };
+                match walked {
                     Some(Separation::Separated(line)) => {
                         report_lp(
                             p,
@@ -952,9 +1213,23 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
                 polygon: polygon(far),
                 positions: chains.get(far),
             };
-            let Ok(Separation::Separated(line)) =
-                counted_lp(k, (&a, near_points), (&b, chains.points(far)), rng, lp, probe)
-            else {
+            let result = match (near, order.samples) {
+                (Set::Rp | Set::Rq, Some(tangents)) => {
+                    let start = [tangents[usize::from(near == Set::Rq)], 0];
+                    walk_or_lp::<K, R, P, CERT>(
+                        k,
+                        (&a, near_points),
+                        (&b, chains.points(far)),
+                        start,
+                        0,
+                        rng,
+                        lp,
+                        probe,
+                    )
+                }
+                _ => counted_lp(k, (&a, near_points), (&b, chains.points(far)), rng, lp, probe),
+            };
+            let Ok(Separation::Separated(line)) = result else {
                 if CERT {
                     trace.meet = Some((near, far));
                 }
@@ -964,7 +1239,11 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
                 trace.lines.push((line, near, far));
             }
             if matches!(near, Set::Rp | Set::Rq) {
-                far_tangent[usize::from(far.of() == Which::Q)] = chains.get(far)[line.b];
+                far_tangent[usize::from(far.of() == Which::Q)] = if order.shuffle {
+                    chains.get(far)[line.b] as usize
+                } else {
+                    line.b
+                };
             }
             // After a first chain, the second chain of the other polygon, beyond the line
             // (the near set is on its right: its far side is the left).
@@ -996,10 +1275,10 @@ fn chain_against_chain<K: Kernel>(
     far: Set,
     chains: &Chains,
     (positions, points): &(Vec<u32>, Vec<Point>),
-    tangent: u32,
+    tangent: usize,
     lp: &mut LpWorkspace,
 ) -> Option<Separation> {
-    let j = positions.iter().position(|&x| x == tangent).unwrap_or(0);
+    let j = positions.iter().position(|&x| x as usize == tangent).unwrap_or(0);
     match separate_chains(k, chains.points(near), points, [0, j], &mut lp.work)? {
         Separation::Separated(line) => {
             let at = positions[line.b];
@@ -1123,13 +1402,91 @@ impl Walk<'_> {
 
 #[cfg(test)]
 mod tests {
-    use super::{Clm, ClmWorkspace, below, fisher_yates, shuffle};
-    use crate::generate::{self, Family, Relation};
+    use super::{Clm, ClmWorkspace, OrderScratch, below, boundary_order, fisher_yates, shuffle};
+    use crate::LinkedPolygon;
+    use crate::generate::{self, Family, Relation, pair};
     use crate::intersect::{Derivation, LinkedIntersection, verify_linked};
-    use crate::kernel::Point;
-    use crate::{Exact, LinkedPolygon};
-    use rand::SeedableRng;
+    use crate::kernel::{Exact, Fast, Point};
     use rand::rngs::SmallRng;
+    use rand::{Rng, SeedableRng};
+
+    /// Random samples (with repeats, in random order) of strictly convex polygons,
+    /// scaled by powers of two from 2^-1000 to 2^1000 and shifted by 2^40..2^52, come
+    /// out of `boundary_order` as the distinct sampled vertices in the polygon's
+    /// counter-clockwise order, from the lowest (then leftmost) one. At 2^1022 the
+    /// differences overflow and the keys are ruined: then either the same order or
+    /// `false` with the sample left as drawn. Under `Fast`, some order of the same
+    /// points (never a panic).
+    #[test]
+    fn boundary_order_is_the_cyclic_order_of_the_sample() {
+        let mut rng = SmallRng::seed_from_u64(14);
+        let mut scratch = OrderScratch::default();
+        let (mut checked, mut refused) = (0, 0);
+        for round in 0..600 {
+            let family = [
+                Family::Rotated,
+                Family::Ellipse,
+                Family::NonUniform,
+                Family::OneUlpGap,
+            ][round % 4];
+            let n = rng.random_range(3..=400);
+            let (poly, _) = pair(family, n, Relation::Any, &mut rng);
+            let (scale, shift) = match round % 6 {
+                0 => (1.0, 0.0),
+                1 => (2f64.powi(1000), 0.0),
+                2 => (2f64.powi(-1000), 0.0),
+                3 => (1.0, 2f64.powi(rng.random_range(40..=52))),
+                4 => (2f64.powi(1022), 0.0),
+                _ => (2f64.powi(-500), 0.0),
+            };
+            let vertices: Vec<Point> = poly
+                .vertices()
+                .iter()
+                .map(|v| Point::new(v.x * scale + shift, v.y * scale + shift))
+                .collect();
+            if crate::ConvexPolygon::new(vertices.iter().copied()).map(|p| p.len()) != Ok(vertices.len()) {
+                continue; // the shift merged vertices: not a strictly convex polygon
+            }
+            let r = rng.random_range(1..=vertices.len() + 8);
+            let mut positions: Vec<u32> = (0..r)
+                .map(|_| rng.random_range(0..vertices.len() as u32))
+                .collect();
+            let mut points: Vec<Point> = positions.iter().map(|&i| vertices[i as usize]).collect();
+            // The expected order: the sampled positions in the polygon's order, rotated
+            // to start at the lowest (then leftmost) sampled point.
+            let mut expected: Vec<u32> = positions.clone();
+            expected.sort_unstable();
+            expected.dedup();
+            let start = (0..expected.len())
+                .min_by(|&a, &b| {
+                    let (p, q) = (vertices[expected[a] as usize], vertices[expected[b] as usize]);
+                    p.y.total_cmp(&q.y).then(p.x.total_cmp(&q.x))
+                })
+                .unwrap();
+            expected.rotate_left(start);
+            let (mut fast_positions, mut fast_points) = (positions.clone(), points.clone());
+            let drawn = positions.clone();
+            if boundary_order(Exact, &mut positions, &mut points, &mut scratch) {
+                assert_eq!(positions, expected, "round {round}");
+                checked += 1;
+            } else {
+                assert!(
+                    round % 6 == 4,
+                    "refused at a scale whose keys are sound: round {round}"
+                );
+                assert_eq!(positions, drawn, "a refused sample is left as drawn");
+                refused += 1;
+            }
+            for (&i, x) in positions.iter().zip(&points) {
+                assert_eq!(*x, vertices[i as usize]);
+            }
+            boundary_order(Fast, &mut fast_positions, &mut fast_points, &mut scratch);
+            fast_positions.sort_unstable();
+            fast_positions.dedup();
+            assert_eq!(fast_positions.len(), expected.len());
+        }
+        assert!(checked > 400, "{checked} checked, {refused} refused");
+    }
 
     /// Intersecting pairs of the lattice families (exact touchings, one-ulp gaps,
     /// nesting), as generated and scaled exactly to near f64::MAX and to subnormals:
