@@ -110,7 +110,9 @@
 //! step 5 (no separating edge found) falls back to [`Linear`](super::Linear) on the
 //! remaining pieces.
 
-use super::certificate::{extreme_left, resolve_chords, same_direction, separates, turn_gt};
+use super::certificate::{
+    extreme_left, resolve_chords, resolve_crossing_chords, same_direction, separates, turn_gt,
+};
 use super::{ArrayIntersection, Certificate, Derivation, Linear, Probe, Which};
 use crate::kernel::{
     Kernel, Orientation, Point, ShortEdges, line_meet_side, point_on_segment, segments_intersect,
@@ -236,20 +238,7 @@ impl<const T: bool, const S: usize, const E: bool> ArrayIntersection for BarbaVa
         probe: &mut P,
     ) -> Derivation {
         let k = k.within([p.bounding_box(), q.bounding_box()]);
-        let (pv, qv) = (p.vertices(), q.vertices());
-        match run::<K::Within, P, Record, Self>(k, pv, qv, probe) {
-            Exit::Apart { pr, q, line } => lift(k, pv, qv, pr, q, line)
-                .or_else(|| {
-                    // The run with the roles exchanged ends on other pieces.
-                    match run::<K::Within, (), Record, Self>(k, qv, pv, &mut ()) {
-                        Exit::Apart { pr, q, line } => lift(k, qv, pv, pr, q, line).map(Certificate::swapped),
-                        _ => None,
-                    }
-                })
-                .map_or(Derivation::Answer(false), Derivation::Certified),
-            Exit::Stuck(answer) => Derivation::Answer(answer),
-            meet => meet_certificate(k, pv, qv, meet).map_or(Derivation::Answer(true), Derivation::Certified),
-        }
+        run::<K::Within, P, Derive, Self>(k, p.vertices(), q.vertices(), probe)
     }
 }
 
@@ -389,12 +378,19 @@ enum Exit {
     Stuck(bool),
 }
 
-/// What a run returns: the plain call's answer ([`Plain`]) or, for the certified call,
-/// the [`Exit`] ([`Record`]), built only in that case. The algorithm is written once.
+/// What a run returns: the plain call's answer ([`Plain`]), the [`Exit`] ([`Record`]),
+/// or the certified call's [`Derivation`] ([`Derive`]), the last two built only in those
+/// cases. The algorithm is written once.
 trait Mode {
     type Out;
-    /// The run ended with this answer; `exit` says how.
-    fn done(meets: bool, exit: impl FnOnce() -> Exit) -> Self::Out;
+    /// The run on `pv` and `qv` ended with this answer; `exit` says how.
+    fn done<K: Kernel, V: Variant>(
+        k: K,
+        pv: &[Point],
+        qv: &[Point],
+        meets: bool,
+        exit: impl FnOnce() -> Exit,
+    ) -> Self::Out;
 }
 
 /// The plain call: the answer alone.
@@ -403,19 +399,67 @@ struct Plain;
 impl Mode for Plain {
     type Out = bool;
     #[inline(always)]
-    fn done(meets: bool, _exit: impl FnOnce() -> Exit) -> bool {
+    fn done<K: Kernel, V: Variant>(
+        _: K,
+        _: &[Point],
+        _: &[Point],
+        meets: bool,
+        _: impl FnOnce() -> Exit,
+    ) -> bool {
         meets
     }
 }
 
-/// The certified call: how the run ended.
+/// How the run ended (the run with the roles exchanged, [`meeting_certificate`]).
 struct Record;
 
 impl Mode for Record {
     type Out = Exit;
     #[inline(always)]
-    fn done(_meets: bool, exit: impl FnOnce() -> Exit) -> Exit {
+    fn done<K: Kernel, V: Variant>(
+        _: K,
+        _: &[Point],
+        _: &[Point],
+        _: bool,
+        exit: impl FnOnce() -> Exit,
+    ) -> Exit {
         exit()
+    }
+}
+
+/// The certified call: the exit turned into a certificate where it ends, so that no
+/// [`Exit`] is returned and matched again.
+struct Derive;
+
+impl Mode for Derive {
+    type Out = Derivation;
+    #[inline(always)]
+    fn done<K: Kernel, V: Variant>(
+        k: K,
+        pv: &[Point],
+        qv: &[Point],
+        _: bool,
+        exit: impl FnOnce() -> Exit,
+    ) -> Derivation {
+        derivation::<K, V>(k, pv, qv, exit())
+    }
+}
+
+/// The certified call's result for a run's exit (the module docs' "Certificate").
+#[inline(always)]
+fn derivation<K: Kernel, V: Variant>(k: K, pv: &[Point], qv: &[Point], exit: Exit) -> Derivation {
+    match exit {
+        Exit::Apart { pr, q, line } => lift(k, pv, qv, pr, q, line)
+            .or_else(|| {
+                // The run with the roles exchanged ends on other pieces.
+                match run::<K, (), Record, V>(k, qv, pv, &mut ()) {
+                    Exit::Apart { pr, q, line } => lift(k, qv, pv, pr, q, line).map(Certificate::swapped),
+                    _ => None,
+                }
+            })
+            .map_or(Derivation::Answer(false), Derivation::Certified),
+        Exit::Stuck(answer) => Derivation::Answer(answer),
+        meet => meet_certificate(k, pv, qv, meet).map_or(Derivation::Answer(true), Derivation::Certified),
     }
 }
 
@@ -507,15 +551,17 @@ fn run<K: Kernel, P: Probe, M: Mode, V: Variant>(k: K, pv: &[Point], qv: &[Point
             line,
         };
         match decision {
-            Step::InK(i) => return M::done(true, || Exit::PInside(pr.idx(n, tp[i as usize]))),
+            Step::InK(i) => {
+                return M::done::<K, V>(k, pv, qv, true, || Exit::PInside(pr.idx(n, tp[i as usize])));
+            }
             Step::InTriangle(x) => {
-                return M::done(true, || {
+                return M::done::<K, V>(k, pv, qv, true, || {
                     Exit::QInside(qr.idx(m, ep[x as usize / 2] + x as usize % 2))
                 });
             }
             Step::Crossing(a, j) => {
                 let (a, b) = pr.chord(a as usize);
-                return M::done(true, || Exit::Chord {
+                return M::done::<K, V>(k, pv, qv, true, || Exit::Chord {
                     a: pr.idx(n, tp[a]),
                     b: pr.idx(n, tp[b]),
                     e: qr.idx(m, ep[j as usize]),
@@ -523,10 +569,16 @@ fn run<K: Kernel, P: Probe, M: Mode, V: Variant>(k: K, pv: &[Point], qv: &[Point
             }
             Step::ApartLine(j) => {
                 let e = ep[j as usize];
-                return M::done(false, || apart(Sep::QLine(qr.idx(m, e), qr.idx(m, e + 1))));
+                return M::done::<K, V>(k, pv, qv, false, || {
+                    apart(Sep::QLine(qr.idx(m, e), qr.idx(m, e + 1)))
+                });
             }
-            Step::ApartEdge(2) if !pr.thirds => return M::done(false, || apart(Sep::PChord)),
-            Step::ApartEdge(a) => return M::done(false, || apart(Sep::PEdge(pr.idx(n, tp[a as usize])))),
+            Step::ApartEdge(2) if !pr.thirds => {
+                return M::done::<K, V>(k, pv, qv, false, || apart(Sep::PChord));
+            }
+            Step::ApartEdge(a) => {
+                return M::done::<K, V>(k, pv, qv, false, || apart(Sep::PEdge(pr.idx(n, tp[a as usize]))));
+            }
             Step::KeepP(chain) => {
                 let Some((from, to)) = pr.chain_ends(chain) else {
                     unreachable!("only a chain behind a triangle edge is kept")
@@ -552,7 +604,7 @@ fn run<K: Kernel, P: Probe, M: Mode, V: Variant>(k: K, pv: &[Point], qv: &[Point
             }
             Step::Stuck => {
                 let answer = fallback(k, pv, pr, qv, qr);
-                return M::done(answer, || Exit::Stuck(answer));
+                return M::done::<K, V>(k, pv, qv, answer, || Exit::Stuck(answer));
             }
         }
     }
@@ -761,7 +813,7 @@ fn against_small<K: Kernel, P: Probe, M: Mode, V: Variant>(
         let tp = pr.tri();
         let t = tp.map(|pos| pr.at(pv, pos));
         let Some(axis) = separating_axis(k, &t, qs) else {
-            return M::done(true, || Exit::Small { pr, qs: small });
+            return M::done::<K, V>(k, pv, qv, true, || Exit::Small { pr, qs: small });
         };
         let keep = match axis {
             Axis::OfQ(i, j) => prune_by_line(k, pv, pr, (qs[i], qs[j])),
@@ -770,7 +822,7 @@ fn against_small<K: Kernel, P: Probe, M: Mode, V: Variant>(
         match keep.and_then(|c| pr.chain_ends(c)) {
             Some((from, to)) => pr = pr.sub(pv, from, to),
             None => {
-                return M::done(false, || {
+                return M::done::<K, V>(k, pv, qv, false, || {
                     let line = match axis {
                         Axis::OfQ(i, j) => Sep::QLine(idx[i], idx[j]),
                         Axis::OfTriangle(2) if !pr.thirds => Sep::PChord,
@@ -860,22 +912,29 @@ fn small_witness<K: Kernel>(
     let (qi, len) = small.indices(qv.len());
     let qp: [Point; SMALL_Q] = std::array::from_fn(|j| qv[qi[j % len]]);
     if len == 2 {
-        // Q' is a segment.
-        if let Some(&i) = t.iter().find(|&&i| point_on_segment(k, qp[0], qp[1], pv[i])) {
+        // Q' is a segment: the orientations of T_P's vertices against its line (3) and
+        // of its ends against T_P's edges (6) decide every case, each computed once.
+        let o: [Orientation; 3] = std::array::from_fn(|a| k.orient(qp[0], qp[1], tp[a]));
+        if let Some(a) = (0..3).find(|&a| o[a] == Collinear && point_on_segment(k, qp[0], qp[1], tp[a])) {
             return Some(Certificate::VertexInside {
                 of: Which::P,
-                point: pv[i],
+                point: tp[a],
             });
         }
-        if let Some(j) = (0..2).find(|&j| (0..3).all(|a| k.orient(tp[a], tp[(a + 1) % 3], qp[j]) != Cw)) {
+        let w: [[Orientation; 3]; 2] =
+            std::array::from_fn(|j| std::array::from_fn(|a| k.orient(tp[a], tp[(a + 1) % 3], qp[j])));
+        if let Some(j) = (0..2).find(|&j| w[j].iter().all(|&x| x != Cw)) {
             return Some(Certificate::VertexInside {
                 of: Which::Q,
                 point: qp[j],
             });
         }
-        let a = (0..3).find(|&a| segments_intersect(k, tp[a], tp[(a + 1) % 3], qp[0], qp[1]))?;
+        // Neither end inside T_P and no vertex of T_P on the segment, yet they meet: an
+        // edge of T_P crosses the segment properly (both pairs strictly apart).
+        let straddle = |x: Orientation, y: Orientation| x != Collinear && y == x.reverse();
+        let a = (0..3).find(|&a| straddle(o[a], o[(a + 1) % 3]) && straddle(w[0][a], w[1][a]))?;
         let (a, b) = pr.chord(a);
-        return resolve_chords(k, pv, (t[a], t[b]), qv, (qi[0], qi[1]));
+        return resolve_crossing_chords(k, pv, (t[a], t[b]), qv, (qi[0], qi[1]));
     }
     // A vertex of either inside the other, each test stopping at the first edge it is
     // strictly outside of.
@@ -916,7 +975,7 @@ fn small_witness<K: Kernel>(
             .map(|a| (a, e))
     })?;
     let (a, b) = pr.chord(a);
-    resolve_chords(k, pv, (t[a], t[b]), qv, (qi[e], qi[(e + 1) % len]))
+    resolve_crossing_chords(k, pv, (t[a], t[b]), qv, (qi[e], qi[(e + 1) % len]))
 }
 
 /// A separating edge for the whole polygons from a run's final separation of the
