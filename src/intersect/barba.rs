@@ -1003,9 +1003,11 @@ fn lift<K: Kernel>(k: K, pv: &[Point], qv: &[Point], pr: Range, q: SmallQ, line:
         Sep::QLine(i, j) if (i + 1) % m == j => {
             let (s, u) = (qv[i], qv[j]);
             let t = deepest((s, u), pv, &pr.triangle(n))?;
-            // P' lies strictly right of the edge; so does P if P''s deepest vertex is
-            // P's.
-            if separates(k, s, u, pv, t) {
+            // P' lies strictly right of the edge (the run found all of T_P there); so
+            // does P if no neighbour of P''s deepest vertex lies deeper ([`separates`]
+            // without its first orientation).
+            let deeper = |x: usize| k.cross(s, u, pv[t], pv[x]) == Orientation::Ccw;
+            if !deeper(if t + 1 == n { 0 } else { t + 1 }) && !deeper(if t == 0 { n - 1 } else { t - 1 }) {
                 return Some(Certificate::Separated {
                     of: Which::Q,
                     from: s,
