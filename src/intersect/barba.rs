@@ -910,8 +910,8 @@ fn small_witness<K: Kernel>(
     let t = pr.triangle(pv.len());
     let tp = t.map(|i| pv[i]);
     let (qi, len) = small.indices(qv.len());
-    let qp: [Point; SMALL_Q] = std::array::from_fn(|j| qv[qi[j % len]]);
     if len == 2 {
+        let qp = [qv[qi[0]], qv[qi[1]]];
         // Q' is a segment: the orientations of T_P's vertices against its line (3) and
         // of its ends against T_P's edges (6) decide every case, each computed once.
         let o: [Orientation; 3] = std::array::from_fn(|a| k.orient(qp[0], qp[1], tp[a]));
@@ -936,6 +936,7 @@ fn small_witness<K: Kernel>(
         let (a, b) = pr.chord(a);
         return resolve_crossing_chords(k, pv, (t[a], t[b]), qv, (qi[0], qi[1]));
     }
+    let qp: [Point; SMALL_Q] = std::array::from_fn(|j| if j < len { qv[qi[j]] } else { Point::default() });
     // A vertex of either inside the other, each test stopping at the first edge it is
     // strictly outside of.
     if let Some(a) = (0..3).find(|&a| (0..len).all(|e| k.orient(qp[e], qp[(e + 1) % len], tp[a]) != Cw)) {
