@@ -1194,6 +1194,59 @@ mod tests {
         assert!(20 * unlifted <= ellipses, "{unlifted} of {ellipses} not lifted");
     }
 
+    /// The meeting exits' witnesses on every intersecting pair of the families (touching
+    /// ones, one-ulp gaps and nested pairs included), at ordinary scale and scaled by
+    /// 2^600 and 2^-600 (exact: powers of two): whatever the run ends on, its certificate
+    /// exists and verifies, in particular where T_P meets a segment Q' (the orientation
+    /// table and the proper crossing resolved without a second contact test).
+    #[test]
+    fn meeting_exits_give_certificates() {
+        use crate::generate::{self, Family, Relation, map_pair};
+        use crate::intersect::verify;
+        use rand::SeedableRng;
+        let mut rng = rand::rngs::SmallRng::seed_from_u64(0x5e9);
+        let (mut segments, mut crossings) = (0, 0);
+        for &family in Family::ALL {
+            for log2 in [3, 6, 9] {
+                for _ in 0..12 {
+                    let Ok(base) = generate::try_pair(family, 1 << log2, Relation::Intersecting, &mut rng)
+                    else {
+                        continue;
+                    };
+                    for scale in [1.0, 2f64.powi(600), 2f64.powi(-600)] {
+                        let Some((p, q)) = map_pair(&base, |v| Point::new(v.x * scale, v.y * scale)) else {
+                            continue;
+                        };
+                        if !brute_force(Exact, &p, &q) {
+                            continue;
+                        }
+                        let (pv, qv) = (p.vertices(), q.vertices());
+                        let k = Exact.within([p.bounding_box(), q.bounding_box()]);
+                        let exit = run::<_, (), Record, Ours>(k, pv, qv, &mut ());
+                        let segment = matches!(
+                            exit,
+                            Exit::Small {
+                                qs: SmallQ { chord: true, .. },
+                                ..
+                            }
+                        );
+                        let c = meet_certificate(k, pv, qv, exit)
+                            .unwrap_or_else(|| panic!("{family:?} 2^{log2} ×{scale}: {exit:?} gave none"));
+                        assert_eq!(verify(&p, &q, &c), Ok(()), "{family:?} 2^{log2} ×{scale}: {c:?}");
+                        segments += usize::from(segment);
+                        crossings += usize::from(segment && matches!(c, Certificate::CrossingEdges { .. }));
+                        let certified = Barba.certified(&p, &q);
+                        assert_eq!(verify(&p, &q, &certified), Ok(()), "{family:?}: {certified:?}");
+                    }
+                }
+            }
+        }
+        assert!(
+            segments > 0 && crossings > 0,
+            "{segments} segment exits, {crossings} crossings"
+        );
+    }
+
     #[test]
     fn iterations_are_logarithmic() {
         let n = 1 << 12;
