@@ -1005,10 +1005,17 @@ fn lift<K: Kernel>(k: K, pv: &[Point], qv: &[Point], pr: Range, q: SmallQ, line:
             let (s, u) = (qv[i], qv[j]);
             let t = deepest((s, u), pv, &pr.triangle(n))?;
             // P' lies strictly right of the edge (the run found all of T_P there); so
-            // does P if no neighbour of P''s deepest vertex lies deeper ([`separates`]
-            // without its first orientation).
+            // does P if no neighbour of t lies deeper ([`separates`] without its first
+            // orientation). The run ended because no chain of P' holds P''s farthest
+            // point towards the line strictly inside, so that point is a triangle
+            // vertex, t: only a neighbour outside P' (t an end of a proper range) can
+            // lie deeper, and only it is checked.
             let deeper = |x: usize| k.cross(s, u, pv[t], pv[x]) == Orientation::Ccw;
-            if !deeper(if t + 1 == n { 0 } else { t + 1 }) && !deeper(if t == 0 { n - 1 } else { t - 1 }) {
+            let outside = pr.len < n;
+            let next_deeper =
+                outside && t == pr.idx(n, pr.len - 1) && deeper(if t + 1 == n { 0 } else { t + 1 });
+            let prev_deeper = outside && t == pr.start && deeper(if t == 0 { n - 1 } else { t - 1 });
+            if !next_deeper && !prev_deeper {
                 return Some(Certificate::Separated {
                     of: Which::Q,
                     from: s,
