@@ -68,17 +68,22 @@
 //!
 //! # Certificate
 //! [`ArrayIntersection::certified_probed`](super::ArrayIntersection::certified_probed)
-//! runs the same loop, recording how it ended:
+//! runs the same loop (a second instance of it, so the plain call keeps its code) and
+//! turns the exit into a certificate where the loop ends:
 //! * a vertex of T_P in K (step 1) or of K in T_P (step 3): that vertex, inside;
 //! * an edge of T_P (a chord of P) meeting an edge of Q (step 4), or T_P meeting the
 //!   small Q' of the finish without a vertex of either inside the other: the chord is
 //!   reduced to an edge of P by one binary search within P' (the chain beyond it
 //!   crosses the line of Q's edge exactly once), giving two crossing edges or an end of
 //!   Q's edge inside P. O(log n) more; the plain run never localises P's boundary
-//!   there, so this is the certified call's extra work on intersecting pairs.
+//!   there, so this is the certified call's extra work on intersecting pairs. Where
+//!   Q' is a segment, nine orientations computed once decide every case, and the
+//!   proper crossing is resolved without testing the contact again.
 //! * disjoint pieces: the last separating line is an edge of Q with P' strictly
 //!   outside (or an edge of P with Q' outside). If P's vertex deepest towards it is
-//!   extreme in all of P (two predicates), that edge separates P and Q. Otherwise P
+//!   extreme in all of P, that edge separates P and Q: the run ended because P''s
+//!   farthest point towards the line is a triangle vertex, so only a neighbour outside
+//!   P' can lie deeper (at most one predicate). Otherwise P
 //!   crosses its line away from P' (a chain pruned by an earlier line) and P's edges
 //!   at that vertex are tried, each against Q's extreme vertex (one binary search in
 //!   Q; the edge ending there nearly always separates), then P's extreme vertex against
