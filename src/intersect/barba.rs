@@ -68,17 +68,22 @@
 //!
 //! # Certificate
 //! [`ArrayIntersection::certified_probed`](super::ArrayIntersection::certified_probed)
-//! runs the same loop, recording how it ended:
+//! runs the same loop (a second instance of it, so the plain call keeps its code) and
+//! turns the exit into a certificate where the loop ends:
 //! * a vertex of T_P in K (step 1) or of K in T_P (step 3): that vertex, inside;
 //! * an edge of T_P (a chord of P) meeting an edge of Q (step 4), or T_P meeting the
 //!   small Q' of the finish without a vertex of either inside the other: the chord is
 //!   reduced to an edge of P by one binary search within P' (the chain beyond it
 //!   crosses the line of Q's edge exactly once), giving two crossing edges or an end of
 //!   Q's edge inside P. O(log n) more; the plain run never localises P's boundary
-//!   there, so this is the certified call's extra work on intersecting pairs.
+//!   there, so this is the certified call's extra work on intersecting pairs. Where
+//!   Q' is a segment, nine orientations computed once decide every case, and the
+//!   proper crossing is resolved without testing the contact again.
 //! * disjoint pieces: the last separating line is an edge of Q with P' strictly
 //!   outside (or an edge of P with Q' outside). If P's vertex deepest towards it is
-//!   extreme in all of P (two predicates), that edge separates P and Q. Otherwise P
+//!   extreme in all of P, that edge separates P and Q: the run ended because P''s
+//!   farthest point towards the line is a triangle vertex, so only a neighbour outside
+//!   P' can lie deeper (at most one predicate). Otherwise P
 //!   crosses its line away from P' (a chain pruned by an earlier line) and P's edges
 //!   at that vertex are tried, each against Q's extreme vertex (one binary search in
 //!   Q; the edge ending there nearly always separates), then P's extreme vertex against
@@ -110,7 +115,9 @@
 //! step 5 (no separating edge found) falls back to [`Linear`](super::Linear) on the
 //! remaining pieces.
 
-use super::certificate::{extreme_left, resolve_chords, same_direction, separates, turn_gt};
+use super::certificate::{
+    extreme_left, resolve_chords, resolve_crossing_chords, same_direction, separates, turn_gt,
+};
 use super::{ArrayIntersection, Certificate, Derivation, Linear, Probe, Which};
 use crate::kernel::{
     Kernel, Orientation, Point, ShortEdges, line_meet_side, point_on_segment, segments_intersect,
@@ -236,20 +243,7 @@ impl<const T: bool, const S: usize, const E: bool> ArrayIntersection for BarbaVa
         probe: &mut P,
     ) -> Derivation {
         let k = k.within([p.bounding_box(), q.bounding_box()]);
-        let (pv, qv) = (p.vertices(), q.vertices());
-        match run::<K::Within, P, Record, Self>(k, pv, qv, probe) {
-            Exit::Apart { pr, q, line } => lift(k, pv, qv, pr, q, line)
-                .or_else(|| {
-                    // The run with the roles exchanged ends on other pieces.
-                    match run::<K::Within, (), Record, Self>(k, qv, pv, &mut ()) {
-                        Exit::Apart { pr, q, line } => lift(k, qv, pv, pr, q, line).map(Certificate::swapped),
-                        _ => None,
-                    }
-                })
-                .map_or(Derivation::Answer(false), Derivation::Certified),
-            Exit::Stuck(answer) => Derivation::Answer(answer),
-            meet => meet_certificate(k, pv, qv, meet).map_or(Derivation::Answer(true), Derivation::Certified),
-        }
+        run::<K::Within, P, Derive, Self>(k, p.vertices(), q.vertices(), probe)
     }
 }
 
@@ -389,12 +383,19 @@ enum Exit {
     Stuck(bool),
 }
 
-/// What a run returns: the plain call's answer ([`Plain`]) or, for the certified call,
-/// the [`Exit`] ([`Record`]), built only in that case. The algorithm is written once.
+/// What a run returns: the plain call's answer ([`Plain`]), the [`Exit`] ([`Record`]),
+/// or the certified call's [`Derivation`] ([`Derive`]), the last two built only in those
+/// cases. The algorithm is written once.
 trait Mode {
     type Out;
-    /// The run ended with this answer; `exit` says how.
-    fn done(meets: bool, exit: impl FnOnce() -> Exit) -> Self::Out;
+    /// The run on `pv` and `qv` ended with this answer; `exit` says how.
+    fn done<K: Kernel, V: Variant>(
+        k: K,
+        pv: &[Point],
+        qv: &[Point],
+        meets: bool,
+        exit: impl FnOnce() -> Exit,
+    ) -> Self::Out;
 }
 
 /// The plain call: the answer alone.
@@ -403,19 +404,67 @@ struct Plain;
 impl Mode for Plain {
     type Out = bool;
     #[inline(always)]
-    fn done(meets: bool, _exit: impl FnOnce() -> Exit) -> bool {
+    fn done<K: Kernel, V: Variant>(
+        _: K,
+        _: &[Point],
+        _: &[Point],
+        meets: bool,
+        _: impl FnOnce() -> Exit,
+    ) -> bool {
         meets
     }
 }
 
-/// The certified call: how the run ended.
+/// How the run ended (the run with the roles exchanged, [`meeting_certificate`]).
 struct Record;
 
 impl Mode for Record {
     type Out = Exit;
     #[inline(always)]
-    fn done(_meets: bool, exit: impl FnOnce() -> Exit) -> Exit {
+    fn done<K: Kernel, V: Variant>(
+        _: K,
+        _: &[Point],
+        _: &[Point],
+        _: bool,
+        exit: impl FnOnce() -> Exit,
+    ) -> Exit {
         exit()
+    }
+}
+
+/// The certified call: the exit turned into a certificate where it ends, so that no
+/// [`Exit`] is returned and matched again.
+struct Derive;
+
+impl Mode for Derive {
+    type Out = Derivation;
+    #[inline(always)]
+    fn done<K: Kernel, V: Variant>(
+        k: K,
+        pv: &[Point],
+        qv: &[Point],
+        _: bool,
+        exit: impl FnOnce() -> Exit,
+    ) -> Derivation {
+        derivation::<K, V>(k, pv, qv, exit())
+    }
+}
+
+/// The certified call's result for a run's exit (the module docs' "Certificate").
+#[inline(always)]
+fn derivation<K: Kernel, V: Variant>(k: K, pv: &[Point], qv: &[Point], exit: Exit) -> Derivation {
+    match exit {
+        Exit::Apart { pr, q, line } => lift(k, pv, qv, pr, q, line)
+            .or_else(|| {
+                // The run with the roles exchanged ends on other pieces.
+                match run::<K, (), Record, V>(k, qv, pv, &mut ()) {
+                    Exit::Apart { pr, q, line } => lift(k, qv, pv, pr, q, line).map(Certificate::swapped),
+                    _ => None,
+                }
+            })
+            .map_or(Derivation::Answer(false), Derivation::Certified),
+        Exit::Stuck(answer) => Derivation::Answer(answer),
+        meet => meet_certificate(k, pv, qv, meet).map_or(Derivation::Answer(true), Derivation::Certified),
     }
 }
 
@@ -507,15 +556,17 @@ fn run<K: Kernel, P: Probe, M: Mode, V: Variant>(k: K, pv: &[Point], qv: &[Point
             line,
         };
         match decision {
-            Step::InK(i) => return M::done(true, || Exit::PInside(pr.idx(n, tp[i as usize]))),
+            Step::InK(i) => {
+                return M::done::<K, V>(k, pv, qv, true, || Exit::PInside(pr.idx(n, tp[i as usize])));
+            }
             Step::InTriangle(x) => {
-                return M::done(true, || {
+                return M::done::<K, V>(k, pv, qv, true, || {
                     Exit::QInside(qr.idx(m, ep[x as usize / 2] + x as usize % 2))
                 });
             }
             Step::Crossing(a, j) => {
                 let (a, b) = pr.chord(a as usize);
-                return M::done(true, || Exit::Chord {
+                return M::done::<K, V>(k, pv, qv, true, || Exit::Chord {
                     a: pr.idx(n, tp[a]),
                     b: pr.idx(n, tp[b]),
                     e: qr.idx(m, ep[j as usize]),
@@ -523,10 +574,16 @@ fn run<K: Kernel, P: Probe, M: Mode, V: Variant>(k: K, pv: &[Point], qv: &[Point
             }
             Step::ApartLine(j) => {
                 let e = ep[j as usize];
-                return M::done(false, || apart(Sep::QLine(qr.idx(m, e), qr.idx(m, e + 1))));
+                return M::done::<K, V>(k, pv, qv, false, || {
+                    apart(Sep::QLine(qr.idx(m, e), qr.idx(m, e + 1)))
+                });
             }
-            Step::ApartEdge(2) if !pr.thirds => return M::done(false, || apart(Sep::PChord)),
-            Step::ApartEdge(a) => return M::done(false, || apart(Sep::PEdge(pr.idx(n, tp[a as usize])))),
+            Step::ApartEdge(2) if !pr.thirds => {
+                return M::done::<K, V>(k, pv, qv, false, || apart(Sep::PChord));
+            }
+            Step::ApartEdge(a) => {
+                return M::done::<K, V>(k, pv, qv, false, || apart(Sep::PEdge(pr.idx(n, tp[a as usize]))));
+            }
             Step::KeepP(chain) => {
                 let Some((from, to)) = pr.chain_ends(chain) else {
                     unreachable!("only a chain behind a triangle edge is kept")
@@ -552,7 +609,7 @@ fn run<K: Kernel, P: Probe, M: Mode, V: Variant>(k: K, pv: &[Point], qv: &[Point
             }
             Step::Stuck => {
                 let answer = fallback(k, pv, pr, qv, qr);
-                return M::done(answer, || Exit::Stuck(answer));
+                return M::done::<K, V>(k, pv, qv, answer, || Exit::Stuck(answer));
             }
         }
     }
@@ -761,7 +818,7 @@ fn against_small<K: Kernel, P: Probe, M: Mode, V: Variant>(
         let tp = pr.tri();
         let t = tp.map(|pos| pr.at(pv, pos));
         let Some(axis) = separating_axis(k, &t, qs) else {
-            return M::done(true, || Exit::Small { pr, qs: small });
+            return M::done::<K, V>(k, pv, qv, true, || Exit::Small { pr, qs: small });
         };
         let keep = match axis {
             Axis::OfQ(i, j) => prune_by_line(k, pv, pr, (qs[i], qs[j])),
@@ -770,7 +827,7 @@ fn against_small<K: Kernel, P: Probe, M: Mode, V: Variant>(
         match keep.and_then(|c| pr.chain_ends(c)) {
             Some((from, to)) => pr = pr.sub(pv, from, to),
             None => {
-                return M::done(false, || {
+                return M::done::<K, V>(k, pv, qv, false, || {
                     let line = match axis {
                         Axis::OfQ(i, j) => Sep::QLine(idx[i], idx[j]),
                         Axis::OfTriangle(2) if !pr.thirds => Sep::PChord,
@@ -858,25 +915,33 @@ fn small_witness<K: Kernel>(
     let t = pr.triangle(pv.len());
     let tp = t.map(|i| pv[i]);
     let (qi, len) = small.indices(qv.len());
-    let qp: [Point; SMALL_Q] = std::array::from_fn(|j| qv[qi[j % len]]);
     if len == 2 {
-        // Q' is a segment.
-        if let Some(&i) = t.iter().find(|&&i| point_on_segment(k, qp[0], qp[1], pv[i])) {
+        let qp = [qv[qi[0]], qv[qi[1]]];
+        // Q' is a segment: the orientations of T_P's vertices against its line (3) and
+        // of its ends against T_P's edges (6) decide every case, each computed once.
+        let o: [Orientation; 3] = std::array::from_fn(|a| k.orient(qp[0], qp[1], tp[a]));
+        if let Some(a) = (0..3).find(|&a| o[a] == Collinear && point_on_segment(k, qp[0], qp[1], tp[a])) {
             return Some(Certificate::VertexInside {
                 of: Which::P,
-                point: pv[i],
+                point: tp[a],
             });
         }
-        if let Some(j) = (0..2).find(|&j| (0..3).all(|a| k.orient(tp[a], tp[(a + 1) % 3], qp[j]) != Cw)) {
+        let w: [[Orientation; 3]; 2] =
+            std::array::from_fn(|j| std::array::from_fn(|a| k.orient(tp[a], tp[(a + 1) % 3], qp[j])));
+        if let Some(j) = (0..2).find(|&j| w[j].iter().all(|&x| x != Cw)) {
             return Some(Certificate::VertexInside {
                 of: Which::Q,
                 point: qp[j],
             });
         }
-        let a = (0..3).find(|&a| segments_intersect(k, tp[a], tp[(a + 1) % 3], qp[0], qp[1]))?;
+        // Neither end inside T_P and no vertex of T_P on the segment, yet they meet: an
+        // edge of T_P crosses the segment properly (both pairs strictly apart).
+        let straddle = |x: Orientation, y: Orientation| x != Collinear && y == x.reverse();
+        let a = (0..3).find(|&a| straddle(o[a], o[(a + 1) % 3]) && straddle(w[0][a], w[1][a]))?;
         let (a, b) = pr.chord(a);
-        return resolve_chords(k, pv, (t[a], t[b]), qv, (qi[0], qi[1]));
+        return resolve_crossing_chords(k, pv, (t[a], t[b]), qv, (qi[0], qi[1]));
     }
+    let qp: [Point; SMALL_Q] = std::array::from_fn(|j| if j < len { qv[qi[j]] } else { Point::default() });
     // A vertex of either inside the other, each test stopping at the first edge it is
     // strictly outside of.
     if let Some(a) = (0..3).find(|&a| (0..len).all(|e| k.orient(qp[e], qp[(e + 1) % len], tp[a]) != Cw)) {
@@ -916,7 +981,7 @@ fn small_witness<K: Kernel>(
             .map(|a| (a, e))
     })?;
     let (a, b) = pr.chord(a);
-    resolve_chords(k, pv, (t[a], t[b]), qv, (qi[e], qi[(e + 1) % len]))
+    resolve_crossing_chords(k, pv, (t[a], t[b]), qv, (qi[e], qi[(e + 1) % len]))
 }
 
 /// A separating edge for the whole polygons from a run's final separation of the
@@ -944,9 +1009,18 @@ fn lift<K: Kernel>(k: K, pv: &[Point], qv: &[Point], pr: Range, q: SmallQ, line:
         Sep::QLine(i, j) if (i + 1) % m == j => {
             let (s, u) = (qv[i], qv[j]);
             let t = deepest((s, u), pv, &pr.triangle(n))?;
-            // P' lies strictly right of the edge; so does P if P''s deepest vertex is
-            // P's.
-            if separates(k, s, u, pv, t) {
+            // P' lies strictly right of the edge (the run found all of T_P there); so
+            // does P if no neighbour of t lies deeper ([`separates`] without its first
+            // orientation). The run ended because no chain of P' holds P''s farthest
+            // point towards the line strictly inside, so that point is a triangle
+            // vertex, t: only a neighbour outside P' (t an end of a proper range) can
+            // lie deeper, and only it is checked.
+            let deeper = |x: usize| k.cross(s, u, pv[t], pv[x]) == Orientation::Ccw;
+            let outside = pr.len < n;
+            let next_deeper =
+                outside && t == pr.idx(n, pr.len - 1) && deeper(if t + 1 == n { 0 } else { t + 1 });
+            let prev_deeper = outside && t == pr.start && deeper(if t == 0 { n - 1 } else { t - 1 });
+            if !next_deeper && !prev_deeper {
                 return Some(Certificate::Separated {
                     of: Which::Q,
                     from: s,
@@ -1130,6 +1204,59 @@ mod tests {
         assert!(by_p_edge > 0, "P's edges at the nearest vertex were never needed");
         // Before P's edges were tried, one ellipse pair in four needed the rerun.
         assert!(20 * unlifted <= ellipses, "{unlifted} of {ellipses} not lifted");
+    }
+
+    /// The meeting exits' witnesses on every intersecting pair of the families (touching
+    /// ones, one-ulp gaps and nested pairs included), at ordinary scale and scaled by
+    /// 2^600 and 2^-600 (exact: powers of two): whatever the run ends on, its certificate
+    /// exists and verifies, in particular where T_P meets a segment Q' (the orientation
+    /// table and the proper crossing resolved without a second contact test).
+    #[test]
+    fn meeting_exits_give_certificates() {
+        use crate::generate::{self, Family, Relation, map_pair};
+        use crate::intersect::verify;
+        use rand::SeedableRng;
+        let mut rng = rand::rngs::SmallRng::seed_from_u64(0x5e9);
+        let (mut segments, mut crossings) = (0, 0);
+        for &family in Family::ALL {
+            for log2 in [3, 6, 9] {
+                for _ in 0..12 {
+                    let Ok(base) = generate::try_pair(family, 1 << log2, Relation::Intersecting, &mut rng)
+                    else {
+                        continue;
+                    };
+                    for scale in [1.0, 2f64.powi(600), 2f64.powi(-600)] {
+                        let Some((p, q)) = map_pair(&base, |v| Point::new(v.x * scale, v.y * scale)) else {
+                            continue;
+                        };
+                        if !brute_force(Exact, &p, &q) {
+                            continue;
+                        }
+                        let (pv, qv) = (p.vertices(), q.vertices());
+                        let k = Exact.within([p.bounding_box(), q.bounding_box()]);
+                        let exit = run::<_, (), Record, Ours>(k, pv, qv, &mut ());
+                        let segment = matches!(
+                            exit,
+                            Exit::Small {
+                                qs: SmallQ { chord: true, .. },
+                                ..
+                            }
+                        );
+                        let c = meet_certificate(k, pv, qv, exit)
+                            .unwrap_or_else(|| panic!("{family:?} 2^{log2} ×{scale}: {exit:?} gave none"));
+                        assert_eq!(verify(&p, &q, &c), Ok(()), "{family:?} 2^{log2} ×{scale}: {c:?}");
+                        segments += usize::from(segment);
+                        crossings += usize::from(segment && matches!(c, Certificate::CrossingEdges { .. }));
+                        let certified = Barba.certified(&p, &q);
+                        assert_eq!(verify(&p, &q, &certified), Ok(()), "{family:?}: {certified:?}");
+                    }
+                }
+            }
+        }
+        assert!(
+            segments > 0 && crossings > 0,
+            "{segments} segment exits, {crossings} crossings"
+        );
     }
 
     #[test]

@@ -719,8 +719,8 @@ fn edge_between(n: usize, i: usize, j: usize) -> Option<usize> {
 
 /// What [`reduce_chord`] found.
 enum Reduced {
-    /// The edge starting at this index meets the segment.
-    Edge(usize),
+    /// The edge starting at this index meets the segment, as classified.
+    Edge(usize, SegmentContact),
     /// This endpoint of the segment lies in the polygon.
     Inside(Point),
     /// Only an inconsistent kernel gets here.
@@ -774,10 +774,9 @@ fn reduce_chord<K: Kernel>(k: K, av: &[Point], i: usize, j: usize, s: Point, t: 
     }
     let e = (i + lo) % n;
     let (u, v) = (av[e], av[(e + 1) % n]);
-    if segment_contact(k, u, v, s, t).meets() {
-        Reduced::Edge(e)
-    } else {
-        Reduced::Inside(near)
+    match segment_contact(k, u, v, s, t) {
+        SegmentContact::Disjoint => Reduced::Inside(near),
+        contact => Reduced::Edge(e, contact),
     }
 }
 
@@ -826,18 +825,31 @@ pub(crate) fn resolve_chords<K: Kernel>(
     if !contact.meets() {
         return None;
     }
-    let p_edge = edge_between(pv.len(), i, j);
-    let q_edge = edge_between(qv.len(), c, d);
-    if let (Some(e), Some(f)) = (p_edge, q_edge) {
+    if let (Some(e), Some(f)) = (edge_between(pv.len(), i, j), edge_between(qv.len(), c, d)) {
         return Some(crossing(pv, e, qv, f));
     }
     if contact != SegmentContact::Crossing {
         return endpoint_on_other(k, (a, b), (s, t));
     }
-    let e = match p_edge {
-        Some(e) => e,
+    resolve_crossing_chords(k, pv, (i, j), qv, (c, d))
+}
+
+/// [`resolve_chords`] for a caller that knows the two segments cross properly (one
+/// point, every endpoint strictly off the other's line): the contact is not computed
+/// again. O(log n + log m).
+pub(crate) fn resolve_crossing_chords<K: Kernel>(
+    k: K,
+    pv: &[Point],
+    (i, j): (usize, usize),
+    qv: &[Point],
+    (c, d): (usize, usize),
+) -> Option<Certificate> {
+    let (s, t) = (qv[c], qv[d]);
+    let q_edge = edge_between(qv.len(), c, d);
+    let (e, contact) = match edge_between(pv.len(), i, j) {
+        Some(e) => (e, SegmentContact::Crossing),
         None => match reduce_chord(k, pv, i, j, s, t) {
-            Reduced::Edge(e) => e,
+            Reduced::Edge(e, contact) => (e, contact),
             Reduced::Inside(x) => {
                 return Some(Certificate::VertexInside {
                     of: Which::Q,
@@ -847,17 +859,15 @@ pub(crate) fn resolve_chords<K: Kernel>(
             Reduced::Fail => return None,
         },
     };
-    let (u, v) = (pv[e], pv[(e + 1) % pv.len()]);
     if let Some(f) = q_edge {
         return Some(crossing(pv, e, qv, f));
     }
-    match segment_contact(k, u, v, s, t) {
-        SegmentContact::Crossing => {}
-        SegmentContact::Disjoint => return None,
-        _ => return endpoint_on_other(k, (u, v), (s, t)),
+    let (u, v) = (pv[e], pv[(e + 1) % pv.len()]);
+    if contact != SegmentContact::Crossing {
+        return endpoint_on_other(k, (u, v), (s, t));
     }
     match reduce_chord(k, qv, c, d, u, v) {
-        Reduced::Edge(f) => Some(crossing(pv, e, qv, f)),
+        Reduced::Edge(f, _) => Some(crossing(pv, e, qv, f)),
         Reduced::Inside(x) => Some(Certificate::VertexInside {
             of: Which::P,
             point: x,
@@ -1352,8 +1362,9 @@ fn reduce_linked<K: Kernel>(
         }
     };
     let (u, w) = (poly.point_at(edge), poly.point_at(poly.next_at(edge)));
-    if segment_contact(k, u, w, s, t).meets() {
-        return Reduced::Edge(edge);
+    let contact = segment_contact(k, u, w, s, t);
+    if contact.meets() {
+        return Reduced::Edge(edge, contact);
     }
     let side = k.orient(u, w, s);
     Reduced::Inside(if k.cross(u, w, t, s) == side.reverse() {
@@ -1397,7 +1408,7 @@ pub(crate) fn resolve_linked_chords<K: Kernel>(
     let e = match p_edge {
         Some(e) => e,
         None => match reduce_linked(k, p, a1, p_starts, (s, t)) {
-            Reduced::Edge(e) => e,
+            Reduced::Edge(e, _) => e,
             Reduced::Inside(x) => {
                 return Some(Certificate::VertexInside {
                     of: Which::Q,
@@ -1422,7 +1433,7 @@ pub(crate) fn resolve_linked_chords<K: Kernel>(
         _ => return endpoint_on_other(k, (u, v), (s, t)),
     }
     match reduce_linked(k, q, b1, q_starts, (u, v)) {
-        Reduced::Edge(f) => Some(Certificate::CrossingEdges {
+        Reduced::Edge(f, _) => Some(Certificate::CrossingEdges {
             p: [u, v],
             q: edge_points(q, f),
         }),
