@@ -539,7 +539,7 @@ fn pencil<K: Kernel>(k: K, q: &[Point], a: Point) -> Option<(usize, usize)> {
     let m = q.len();
     // Edge positions stay below 2m, so wrapping is one conditional subtraction.
     let wrap = |i: usize| if i >= m { i - m } else { i };
-    let visible = |i: usize| k.orient(q[wrap(i)], q[wrap(i + 1)], a) == Cw;
+    let visible = |i: usize| k.orient_of(&q[wrap(i)], &q[wrap(i + 1)], &a) == Cw;
     let (first_vis, last_vis) = (visible(0), visible(m - 1));
     // One visible edge `v` and one invisible edge `n`.
     let (v, n) = if !first_vis && !last_vis {
@@ -547,7 +547,7 @@ fn pencil<K: Kernel>(k: K, q: &[Point], a: Point) -> Option<(usize, usize)> {
         let (mut lo, mut hi) = (1, m - 1);
         while hi - lo > 1 {
             let mid = (lo + hi) / 2;
-            if k.orient(q[0], q[mid], a) != Cw {
+            if k.orient_of(&q[0], &q[mid], &a) != Cw {
                 lo = mid;
             } else {
                 hi = mid;
@@ -564,7 +564,7 @@ fn pencil<K: Kernel>(k: K, q: &[Point], a: Point) -> Option<(usize, usize)> {
         let (mut lo, mut hi) = (1, m - 1);
         while hi - lo > 1 {
             let mid = (lo + hi) / 2;
-            if k.orient(q[0], q[mid], a) != Ccw {
+            if k.orient_of(&q[0], &q[mid], &a) != Ccw {
                 lo = mid;
             } else {
                 hi = mid;

@@ -245,19 +245,19 @@ impl ExactWithin {
     /// ```
     #[inline]
     pub fn new([(lo0, hi0), (lo1, hi1)]: [(Point, Point); 2]) -> ExactWithin {
-        // Both sides from both boxes; a NaN or infinite corner makes a side NaN or
-        // infinite (a corner is never dropped: no `min`/`max` that ignores NaN), and
-        // then `p` fails both range tests.
-        let side = |lo0: f64, hi0: f64, lo1: f64, hi1: f64| {
-            let (a, b) = (hi0 - lo1, hi1 - lo0);
-            let (c, d) = (hi0 - lo0, hi1 - lo1);
-            let ab = if a > b || a.is_nan() { a } else { b };
-            let cd = if c > d || c.is_nan() { c } else { d };
-            if ab > cd || ab.is_nan() { ab } else { cd }
-        };
-        let (wx, wy) = (side(lo0.x, hi0.x, lo1.x, hi1.x), side(lo0.y, hi0.y, lo1.y, hi1.y));
-        let w = if wx > wy || wx.is_nan() { wx } else { wy };
-        ExactWithin::from_side(w)
+        // The union's side per coordinate, max(hi) − min(lo): rounding is monotonic, so
+        // it is the largest computed difference of a corner's coordinate and another's
+        // (as before this took all four), hence of two points in the boxes. The plain
+        // comparisons (an instruction each) may drop a NaN corner; `finite` brings it
+        // back: zero when every corner is finite, NaN when one is NaN or infinite (or
+        // when a box's side overflows, and then the union's side is infinite anyway).
+        // So a non-finite corner makes the side NaN, which fails both range tests.
+        let max = |a: f64, b: f64| if a > b { a } else { b };
+        let min = |a: f64, b: f64| if a < b { a } else { b };
+        let wx = max(hi0.x, hi1.x) - min(lo0.x, lo1.x);
+        let wy = max(hi0.y, hi1.y) - min(lo0.y, lo1.y);
+        let finite = ((hi0.x - lo0.x) + (hi1.x - lo1.x) + ((hi0.y - lo0.y) + (hi1.y - lo1.y))) * 0.0;
+        ExactWithin::from_side(max(wx, wy) + finite)
     }
 
     /// The kernel for calls whose coordinate differences, as computed in `f64`, are
@@ -371,6 +371,20 @@ impl Kernel for ExactWithin {
             Orientation::Cw
         } else {
             orient_within_slow(a, b, c)
+        }
+    }
+
+    /// `orient`'s test, with the references handed to the out-of-line path.
+    #[inline]
+    fn orient_of(self, a: &Point, b: &Point, c: &Point) -> Orientation {
+        let (left, right) = orient_products(*a, *b, *c);
+        let det = left - right;
+        if det > self.two {
+            Orientation::Ccw
+        } else if det < self.neg_two {
+            Orientation::Cw
+        } else {
+            orient_within_slow_of(a, b, c)
         }
     }
 
@@ -538,6 +552,13 @@ fn orient_within_slow(a: Point, b: Point, c: Point) -> Orientation {
         return Orientation::Collinear;
     }
     Exact.orient(a, b, c)
+}
+
+/// [`orient_within_slow`] of points read through references ([`Kernel::orient_of`]).
+#[cold]
+#[inline(never)]
+fn orient_within_slow_of(a: &Point, b: &Point, c: &Point) -> Orientation {
+    orient_within_slow(*a, *b, *c)
 }
 
 #[cold]
