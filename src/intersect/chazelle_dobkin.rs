@@ -397,7 +397,7 @@ struct Chain<'a> {
     hi: usize,
 }
 
-impl Chain<'_> {
+impl<'a> Chain<'a> {
     #[inline]
     fn at(&self, i: usize) -> Point {
         // Positions never exceed the polygon's length, so one conditional
@@ -413,6 +413,22 @@ impl Chain<'_> {
             self.start + len - i
         };
         self.pts[idx]
+    }
+
+    /// [`at`](Chain::at) by reference, for [`Kernel::orient_of`].
+    #[inline]
+    fn at_ref(&self, i: usize) -> &'a Point {
+        let len = self.pts.len();
+        let i = if i >= len { i - len } else { i };
+        let idx = if self.forward {
+            let j = self.start + i;
+            if j >= len { j - len } else { j }
+        } else if i <= self.start {
+            self.start - i
+        } else {
+            self.start + len - i
+        };
+        &self.pts[idx]
     }
 
     #[inline]
@@ -553,7 +569,7 @@ fn pencil<K: Kernel>(k: K, q: &[Point], a: Point) -> Option<(usize, usize)> {
                 hi = mid;
             }
         }
-        if k.orient(q[lo], q[hi], a) != Cw {
+        if k.orient_of(&q[lo], &q[hi], &a) != Cw {
             return None; // in the fan triangle (q0, q_lo, q_hi)
         }
         (lo, 0)
@@ -818,7 +834,7 @@ fn finish<K: Kernel>(fr: &Frame<K>, f: &Chain<'_>, g: &Chain<'_>, dlo: Point, dh
         if fr.in_arc(w, dlo, dhi) {
             let e = edge_right_of(fr, f, w);
             // w on or below f (on A's side of the edge's line, or on it).
-            if k.orient(f.at(e), f.at(e + 1), w) != Cw {
+            if k.orient_of(f.at_ref(e), f.at_ref(e + 1), &w) != Cw {
                 return Some(Hit::G { w: j });
             }
         }

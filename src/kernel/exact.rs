@@ -548,7 +548,9 @@ impl Kernel for ExactWithin {
 #[cold]
 #[inline(never)]
 fn orient_within_slow(a: Point, b: Point, c: Point) -> Orientation {
-    if a == b || a == c || b == c {
+    // `b == c` first: the pruning loops' repeated points are mostly the last two
+    // (a vertex two polygons share, asked about from a third point).
+    if b == c || a == b || a == c {
         return Orientation::Collinear;
     }
     Exact.orient(a, b, c)
