@@ -408,7 +408,7 @@ struct Chain<'a> {
     hi: usize,
 }
 
-impl Chain<'_> {
+impl<'a> Chain<'a> {
     #[inline]
     fn at(&self, i: usize) -> Point {
         // Positions never exceed the polygon's length, so one conditional
@@ -424,6 +424,22 @@ impl Chain<'_> {
             self.start + len - i
         };
         self.pts[idx]
+    }
+
+    /// [`at`](Chain::at) by reference, for [`Kernel::orient_of`].
+    #[inline]
+    fn at_ref(&self, i: usize) -> &'a Point {
+        let len = self.pts.len();
+        let i = if i >= len { i - len } else { i };
+        let idx = if self.forward {
+            let j = self.start + i;
+            if j >= len { j - len } else { j }
+        } else if i <= self.start {
+            self.start - i
+        } else {
+            self.start + len - i
+        };
+        &self.pts[idx]
     }
 
     #[inline]
@@ -550,7 +566,7 @@ fn pencil<K: Kernel>(k: K, q: &[Point], a: Point) -> Option<(usize, usize)> {
     let m = q.len();
     // Edge positions stay below 2m, so wrapping is one conditional subtraction.
     let wrap = |i: usize| if i >= m { i - m } else { i };
-    let visible = |i: usize| k.orient(q[wrap(i)], q[wrap(i + 1)], a) == Cw;
+    let visible = |i: usize| k.orient_of(&q[wrap(i)], &q[wrap(i + 1)], &a) == Cw;
     let (first_vis, last_vis) = (visible(0), visible(m - 1));
     // One visible edge `v` and one invisible edge `n`.
     let (v, n) = if !first_vis && !last_vis {
@@ -558,13 +574,13 @@ fn pencil<K: Kernel>(k: K, q: &[Point], a: Point) -> Option<(usize, usize)> {
         let (mut lo, mut hi) = (1, m - 1);
         while hi - lo > 1 {
             let mid = (lo + hi) / 2;
-            if k.orient(q[0], q[mid], a) != Cw {
+            if k.orient_of(&q[0], &q[mid], &a) != Cw {
                 lo = mid;
             } else {
                 hi = mid;
             }
         }
-        if k.orient(q[lo], q[hi], a) != Cw {
+        if k.orient_of(&q[lo], &q[hi], &a) != Cw {
             return None; // in the fan triangle (q0, q_lo, q_hi)
         }
         (lo, 0)
@@ -575,7 +591,7 @@ fn pencil<K: Kernel>(k: K, q: &[Point], a: Point) -> Option<(usize, usize)> {
         let (mut lo, mut hi) = (1, m - 1);
         while hi - lo > 1 {
             let mid = (lo + hi) / 2;
-            if k.orient(q[0], q[mid], a) != Ccw {
+            if k.orient_of(&q[0], &q[mid], &a) != Ccw {
                 lo = mid;
             } else {
                 hi = mid;
@@ -848,7 +864,7 @@ fn finish<K: Kernel>(fr: &Frame<K>, f: &Chain<'_>, g: &Chain<'_>, dlo: Point, dh
         if fr.in_arc(w, dlo, dhi) {
             let e = edge_right_of(fr, f, w);
             // w on or below f (on A's side of the edge's line, or on it).
-            if k.orient(f.at(e), f.at(e + 1), w) != Cw {
+            if k.orient_of(f.at_ref(e), f.at_ref(e + 1), &w) != Cw {
                 return Some(Hit::G { w: j });
             }
         }

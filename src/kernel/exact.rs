@@ -64,10 +64,11 @@
 //! filter inline where the algorithms cross short edges
 //! ([`Kernel::cross_of_short_edges`]), exact/fast instructions at n = 2^10 / 2^14 /
 //! 2^18: Barba 1.11 / 1.14 / 1.13, Dobkin 1.11 / 1.11 / 1.12, Linear 1.13 / 1.13 /
-//! 1.13 (its walk under the edges' bound), Chazelle–Dobkin 1.19 / 1.17 / 1.19 with its
+//! 1.13 (its walk under the edges' bound), Chazelle–Dobkin 1.16 / 1.14 / 1.14 with its
 //! slope comparison's bound scaled to the edges
-//! ([`Kernel::cross_products_sign_of_short_edges`]; 1.23 at 2^18 before)
-//! (before the semi-static filter: 1.3–1.6×). Validation plus the crossings sweep at 2^±600 and 2^1016 cost
+//! ([`Kernel::cross_products_sign_of_short_edges`]; 1.23 at 2^18 before) and its
+//! searches' orientations by reference ([`Kernel::orient_of`]; 1.18 / 1.16 / 1.16
+//! before) (before the semi-static filter: 1.3–1.6×). Validation plus the crossings sweep at 2^±600 and 2^1016 cost
 //! 1.38–1.46× the instructions of the same input at scale 1 (before the fixed
 //! rescaling: 1.65×).
 //! Predicates that mix magnitudes more than 2^1022 apart within one call fall to big
@@ -245,19 +246,19 @@ impl ExactWithin {
     /// ```
     #[inline]
     pub fn new([(lo0, hi0), (lo1, hi1)]: [(Point, Point); 2]) -> ExactWithin {
-        // Both sides from both boxes; a NaN or infinite corner makes a side NaN or
-        // infinite (a corner is never dropped: no `min`/`max` that ignores NaN), and
-        // then `p` fails both range tests.
-        let side = |lo0: f64, hi0: f64, lo1: f64, hi1: f64| {
-            let (a, b) = (hi0 - lo1, hi1 - lo0);
-            let (c, d) = (hi0 - lo0, hi1 - lo1);
-            let ab = if a > b || a.is_nan() { a } else { b };
-            let cd = if c > d || c.is_nan() { c } else { d };
-            if ab > cd || ab.is_nan() { ab } else { cd }
-        };
-        let (wx, wy) = (side(lo0.x, hi0.x, lo1.x, hi1.x), side(lo0.y, hi0.y, lo1.y, hi1.y));
-        let w = if wx > wy || wx.is_nan() { wx } else { wy };
-        ExactWithin::from_side(w)
+        // The union's side per coordinate, max(hi) − min(lo): rounding is monotonic, so
+        // it is the largest computed difference of a corner's coordinate and another's
+        // (as before this took all four), hence of two points in the boxes. The plain
+        // comparisons (an instruction each) may drop a NaN corner; `finite` brings it
+        // back: zero when every corner is finite, NaN when one is NaN or infinite (or
+        // when a box's side overflows, and then the union's side is infinite anyway).
+        // So a non-finite corner makes the side NaN, which fails both range tests.
+        let max = |a: f64, b: f64| if a > b { a } else { b };
+        let min = |a: f64, b: f64| if a < b { a } else { b };
+        let wx = max(hi0.x, hi1.x) - min(lo0.x, lo1.x);
+        let wy = max(hi0.y, hi1.y) - min(lo0.y, lo1.y);
+        let finite = ((hi0.x - lo0.x) + (hi1.x - lo1.x) + ((hi0.y - lo0.y) + (hi1.y - lo1.y))) * 0.0;
+        ExactWithin::from_side(max(wx, wy) + finite)
     }
 
     /// The kernel for calls whose coordinate differences, as computed in `f64`, are
@@ -371,6 +372,20 @@ impl Kernel for ExactWithin {
             Orientation::Cw
         } else {
             orient_within_slow(a, b, c)
+        }
+    }
+
+    /// `orient`'s test, with the references handed to the out-of-line path.
+    #[inline]
+    fn orient_of(self, a: &Point, b: &Point, c: &Point) -> Orientation {
+        let (left, right) = orient_products(*a, *b, *c);
+        let det = left - right;
+        if det > self.two {
+            Orientation::Ccw
+        } else if det < self.neg_two {
+            Orientation::Cw
+        } else {
+            orient_within_slow_of(a, b, c)
         }
     }
 
@@ -534,10 +549,19 @@ impl Kernel for ExactWithin {
 #[cold]
 #[inline(never)]
 fn orient_within_slow(a: Point, b: Point, c: Point) -> Orientation {
-    if a == b || a == c || b == c {
+    // `b == c` first: the pruning loops' repeated points are mostly the last two
+    // (a vertex two polygons share, asked about from a third point).
+    if b == c || a == b || a == c {
         return Orientation::Collinear;
     }
     Exact.orient(a, b, c)
+}
+
+/// [`orient_within_slow`] of points read through references ([`Kernel::orient_of`]).
+#[cold]
+#[inline(never)]
+fn orient_within_slow_of(a: &Point, b: &Point, c: &Point) -> Orientation {
+    orient_within_slow(*a, *b, *c)
 }
 
 #[cold]

@@ -272,6 +272,17 @@ pub trait Kernel: Copy + Clone + Default + fmt::Debug + Send + Sync + 'static {
     /// Orientation of the triple (a, b, c): the sign of (b − a) × (c − a).
     fn orient(self, a: Point, b: Point, c: Point) -> Orientation;
 
+    /// `orient(*a, *b, *c)` for points a caller reads from memory (a polygon's
+    /// vertices in a binary search): the same answer. [`ExactWithin`] hands the
+    /// references, not the values, to its out-of-line path, so the caller need not keep
+    /// a copy of each loaded point beside the differences it computes from it (with
+    /// two-operand SSE instructions, one register copy per point and call). The default
+    /// calls [`orient`](Kernel::orient).
+    #[inline]
+    fn orient_of(self, a: &Point, b: &Point, c: &Point) -> Orientation {
+        self.orient(*a, *b, *c)
+    }
+
     /// `orient(line.from(), line.to(), c)`, for many points `c` against one line: a
     /// kernel may use the line's direction, computed once by [`DirectedLine::new`],
     /// instead of computing two differences per call. The answer is the same
@@ -513,6 +524,11 @@ impl<K: Kernel> Kernel for ShortEdges<K> {
     #[inline]
     fn orient_line(self, line: &DirectedLine, c: Point) -> Orientation {
         self.0.orient_line(line, c)
+    }
+
+    #[inline]
+    fn orient_of(self, a: &Point, b: &Point, c: &Point) -> Orientation {
+        self.0.orient_of(a, b, c)
     }
 
     #[inline]

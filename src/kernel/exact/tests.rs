@@ -678,6 +678,7 @@ fn semi_static_filter_at_its_bound() {
         check(0, l - r, k3.two, Sign::of(as_value_of(got)), want, &|| {
             format!("orient {a:?} {b:?} {c:?}")
         });
+        assert_eq!(k3.orient_of(&a, &b, &c), got, "orient_of {a:?} {b:?} {c:?}");
 
         let k4 = ExactWithin::new([box_of(&[a, b]), box_of(&[c, d1])]);
         let (l, r) = cross_products(a, b, c, d1);
