@@ -174,7 +174,7 @@ fn every_experiment_writes_csv_and_svg() {
         }
     }
     let (header, rows) = read_csv(&dir.join("clm_variants.csv"));
-    assert_eq!(rows.len(), 2 * 5, "one size, two relations, five variants");
+    assert_eq!(rows.len(), 2 * 6, "one size, two relations, six variants");
     for v in column(&header, &rows, "median_ns") {
         let v: f64 = v.parse().unwrap();
         assert!(v > 0.0 && v.is_finite(), "{v}");

@@ -91,9 +91,10 @@ pub(crate) fn run(config: &Config) -> io::Result<Report> {
 
 /// The implementation variants of sampling (independent draws, or the thesis's 3.3.1
 /// Fisher–Yates) and of the LP's randomisation (the caller's, thesis 3.3.5, the
-/// default; or the LP's own shuffle), and the chain-against-chain LPs by the LP instead
-/// of [`separate_chains`](crate::lp::separate_chains), against the default, at a few
-/// sizes: per pair the five variants
+/// default; or the LP's own shuffle), the chain-against-chain LPs by the LP instead
+/// of [`separate_chains`](crate::lp::separate_chains), and the LPs on the samples by the
+/// LP instead of walks on the ordered samples (`ClmVariant::sample_walk` off), against
+/// the default, at a few sizes: per pair the six variants
 /// are timed in turn, three rounds, the pair's figure the median of each; the point's
 /// the median over pairs. Writes `clm_variants.csv`; returns a Markdown table.
 fn variants(config: &Config, report: &mut Report) -> io::Result<String> {
@@ -103,40 +104,47 @@ fn variants(config: &Config, report: &mut Report) -> io::Result<String> {
             "default: independent + caller shuffles",
             Sampling::Independent,
             LpOrder::Caller,
-            true,
+            (true, true),
         ),
         (
             "default with chain-against-chain by the LP",
             Sampling::Independent,
             LpOrder::Caller,
-            false,
+            (false, true),
+        ),
+        (
+            "default with the samples' LPs by the LP",
+            Sampling::Independent,
+            LpOrder::Caller,
+            (true, false),
         ),
         (
             "independent + LP shuffles",
             Sampling::Independent,
             LpOrder::Lp,
-            true,
+            (true, true),
         ),
         (
             "thesis: Fisher–Yates + caller shuffles",
             Sampling::FisherYates,
             LpOrder::Caller,
-            true,
+            (true, true),
         ),
         (
             "Fisher–Yates + LP shuffles",
             Sampling::FisherYates,
             LpOrder::Lp,
-            true,
+            (true, true),
         ),
     ]
-    .map(|(name, sampling, lp_order, chain_walk)| {
+    .map(|(name, sampling, lp_order, (chain_walk, sample_walk))| {
         (
             name,
             ClmVariant {
                 sampling,
                 lp_order,
                 chain_walk,
+                sample_walk,
                 ..ClmVariant::default()
             },
         )
