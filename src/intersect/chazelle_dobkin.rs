@@ -153,19 +153,7 @@ impl ArrayIntersection for ChazelleDobkin {
         let k = k.within([p.bounding_box(), q.bounding_box()]);
         let (pv, qv) = (p.vertices(), q.vertices());
         let exit = run(k, pv, qv, || short_edges(p, q), probe);
-        match certify(k, pv, qv, &exit) {
-            Some(c) => Derivation::Certified(c),
-            None => Derivation::Answer(exit.meets()),
-        }
-    }
-}
-
-/// The certificate of a run's exit (module docs, "Certificate"); `None` where none was
-/// found. Left out of line by the compiler (forced inline with `#[inline(always)]` it
-/// cost the certified call ~60 instructions per query more at 2^10).
-fn certify<K: Kernel>(k: K, pv: &[Point], qv: &[Point], exit: &Exit<'_>) -> Option<Certificate> {
-    {
-        match *exit {
+        let found = match exit {
             Exit::AInside => Some(Certificate::VertexInside {
                 of: Which::P,
                 point: pv[0],
@@ -201,7 +189,8 @@ fn certify<K: Kernel>(k: K, pv: &[Point], qv: &[Point], exit: &Exit<'_>) -> Opti
                         .into_iter()
                         .find_map(|t| from_support(k, (pv[0], qv[t]), pv, 0, qv, t))
                 }),
-        }
+        };
+        found.map_or(Derivation::Answer(exit.meets()), Derivation::Certified)
     }
 }
 
@@ -797,25 +786,6 @@ fn run<'a, K: Kernel, P: Probe>(
     }
     let hit = finish(&fr, &f, &g, dlo, dhi);
     let tangents = [(last + 1) % m, first];
-    // The exit's chains are built anew from the final positions, so that the loop's
-    // chains are not the exit's: returned to the certified call, the loop's own cost it
-    // ~110 instructions per query at 2^10 (their direction no longer a constant).
-    let (f, g) = (
-        Chain {
-            pts: pv,
-            start: 0,
-            forward: true,
-            lo: f.lo,
-            hi: f.hi,
-        },
-        Chain {
-            pts: qv,
-            start: (last + 1) % m,
-            forward: false,
-            lo: g.lo,
-            hi: g.hi,
-        },
-    );
     Exit::Finish { f, g, hit, tangents }
 }
 
