@@ -784,7 +784,9 @@ fn run<'a, K: Kernel, P: Probe>(
             }
         }
     }
-    let hit = finish(&fr, &f, &g, dlo, dhi);
+    // The finish gets copies of the chains: a reference to the loop's own would take
+    // their address and keep them in memory through the loop (2% of a query).
+    let hit = finish(&fr, &{ f }, &{ g }, dlo, dhi);
     let tangents = [(last + 1) % m, first];
     Exit::Finish { f, g, hit, tangents }
 }
