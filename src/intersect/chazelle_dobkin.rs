@@ -415,7 +415,9 @@ impl<'a> Chain<'a> {
         self.pts[idx]
     }
 
-    /// [`at`](Chain::at) by reference, for [`Kernel::orient_of`].
+    /// [`at`](Chain::at) by reference, for [`Kernel::orient_of`]. (The index is
+    /// computed in both bodies on purpose: a shared helper changed the pruning loop's
+    /// code, +0.5% exact instructions at 2^10.)
     #[inline]
     fn at_ref(&self, i: usize) -> &'a Point {
         let len = self.pts.len();
