@@ -44,7 +44,10 @@
 //! The LPs' random order comes from CLM (thesis 3.3.5, [`LpOrder::Caller`]): samples
 //! drawn independently are in random order already, chains are shuffled once when
 //! walked (Fisher–Yates with Lemire's bounded draws from 32 random bits), and the LP
-//! keeps the order given. [`ClmVariant`] also runs the LP's own
+//! keeps the order given. With [`ClmVariant::sample_walk`] (the default) the samples
+//! are put in boundary order and the LPs become walks, so chains are not shuffled: the
+//! LPs left (the 12-point prefix LP on samples, random already, and the fallbacks)
+//! shuffle their points themselves where needed. [`ClmVariant`] also runs the LP's own
 //! shuffle and the thesis's Fisher–Yates sampling (3.3.1), for comparison.
 //!
 //! At most five LPs on O(r + n/r) points each, so the expected time is O(√n) for
@@ -177,7 +180,9 @@ pub enum LpOrder {
     /// of the (at most two, barring ties) points the optimum is tight on in its set
     /// with probability O(1/i). Measured faster than [`LpOrder::Lp`] (docs/results.md):
     /// no random swaps per point and per LP, and a sample shared by two LPs or a chain
-    /// shared by two is randomised once.
+    /// shared by two is randomised once. With [`ClmVariant::sample_walk`] on (the
+    /// default) chains are not shuffled, since no walk needs a random order; this
+    /// choice then matters only for the LPs that still run.
     #[default]
     Caller,
 }
