@@ -519,6 +519,13 @@ impl<K: Kernel> Frame<K> {
         self.k.orient(self.a, lo, d) != Cw && self.k.orient(self.a, d, hi) != Cw
     }
 
+    /// [`in_arc`](Frame::in_arc) by reference ([`Kernel::orient_of`]), for the finish,
+    /// whose window ends are chain vertices: one of its points is often one of the ends.
+    #[inline]
+    fn in_window(&self, d: &Point, lo: &Point, hi: &Point) -> bool {
+        self.k.orient_of(&self.a, lo, d) != Cw && self.k.orient_of(&self.a, d, hi) != Cw
+    }
+
     /// Sign of slope(u1 u2) − slope(v1 v2) in the frame (both edges left to right).
     ///
     /// The frame sends the pivot `a` to vertical infinity with the line through `a` in
@@ -825,7 +832,7 @@ fn finish<K: Kernel>(fr: &Frame<K>, f: &Chain<'_>, g: &Chain<'_>, dlo: Point, dh
     let k = fr.k;
     for i in f.lo..=f.hi {
         let z = f.at(i);
-        if fr.in_arc(z, dlo, dhi) {
+        if fr.in_window(&z, &dlo, &dhi) {
             let e = edge_right_of(fr, g, z);
             // z on or above g (not strictly on A's side of the edge's line).
             if k.orient(g.at(e), g.at(e + 1), z) != Ccw {
@@ -835,7 +842,7 @@ fn finish<K: Kernel>(fr: &Frame<K>, f: &Chain<'_>, g: &Chain<'_>, dlo: Point, dh
     }
     for j in g.lo..=g.hi {
         let w = g.at(j);
-        if fr.in_arc(w, dlo, dhi) {
+        if fr.in_window(&w, &dlo, &dhi) {
             let e = edge_right_of(fr, f, w);
             // w on or below f (on A's side of the edge's line, or on it).
             if k.orient_of(f.at_ref(e), f.at_ref(e + 1), &w) != Cw {

@@ -384,6 +384,11 @@ impl Kernel for ExactWithin {
             Orientation::Ccw
         } else if det < self.neg_two {
             Orientation::Cw
+        } else if *b == *c {
+            // A repeated point: zero, without the call (Chazelle–Dobkin's finish asks
+            // whether each chain vertex lies in the window, whose ends are chain
+            // vertices: about once per query).
+            Orientation::Collinear
         } else {
             orient_within_slow_of(a, b, c)
         }
