@@ -244,7 +244,9 @@ fn from_final_edges<K: Kernel>(
     };
     let (n, m) = (pv.len(), qv.len());
     // The visible chain runs counter-clockwise from q_R to q_L: G's positions 0..=visible.
-    let visible = (ql + m - qr) % m;
+    // (Both are indices below m: one conditional subtraction instead of a division.)
+    let visible = ql + m - qr;
+    let visible = if visible >= m { visible - m } else { visible };
     let separated = |s: Point, u: Point| Certificate::Separated {
         of: Which::P,
         from: s,
@@ -257,11 +259,16 @@ fn from_final_edges<K: Kernel>(
         ql: qv[ql],
         qr: qv[qr],
     };
-    // G's vertices and the visible edges' ends just beyond them, fetched once.
-    let w = [g.at(g.lo), g.at((g.lo + 1).min(g.hi)), g.at(g.hi)];
+    // G's vertices and the visible edges' ends just beyond them, fetched once: G has
+    // one or two edges (the pruning stops at two), so these are the positions
+    // lo − 1 ..= hi + 1, found from one index by steps.
+    let g0 = g.array_index(g.lo);
+    let g1 = g.step(g0);
+    let g2 = if g.edges() >= 2 { g.step(g1) } else { g1 };
+    let w = [g.pts[g0], g.pts[g1], g.pts[g2]];
     let beyond = [
-        (g.lo > 0).then(|| g.at(g.lo - 1)),
-        (g.hi < visible).then(|| g.at(g.hi + 1)),
+        (g.lo > 0).then(|| g.pts[g.step_back(g0)]),
+        (g.hi < visible).then(|| g.pts[g.step(g2)]),
     ];
     let below_g = |s: Point, u: Point| {
         let line = DirectedLine::new(s, u);
@@ -271,7 +278,10 @@ fn from_final_edges<K: Kernel>(
     // bracket may fail on; for the others the left one. Test that side first.
     // F has one or two edges (the pruning stops at two): its vertices, fetched once.
     let fe = f.edges().min(2);
-    let z = [f.at(f.lo), f.at(f.lo + 1), f.at(f.lo + fe)];
+    let f0 = f.array_index(f.lo);
+    let f1 = f.step(f0);
+    let f2 = if fe >= 2 { f.step(f1) } else { f1 };
+    let z = [f.pts[f0], f.pts[f1], f.pts[f2]];
     let mut candidates = [false; 2];
     for i in 0..fe {
         let (s, u) = (z[i], z[i + 1]);
@@ -431,6 +441,50 @@ impl<'a> Chain<'a> {
             self.start + len - i
         };
         &self.pts[idx]
+    }
+
+    /// The array index of position `i`, computed as in [`at`](Chain::at) (written out
+    /// again rather than shared with it: see [`at_ref`](Chain::at_ref)); for the
+    /// certificate's fetches, with [`step`](Chain::step) and
+    /// [`step_back`](Chain::step_back) for the positions next to it.
+    #[inline]
+    fn array_index(&self, i: usize) -> usize {
+        let len = self.pts.len();
+        let i = if i >= len { i - len } else { i };
+        if self.forward {
+            let j = self.start + i;
+            if j >= len { j - len } else { j }
+        } else if i <= self.start {
+            self.start - i
+        } else {
+            self.start + len - i
+        }
+    }
+
+    /// The array index of the position after the one at array index `idx`.
+    #[inline]
+    fn step(&self, idx: usize) -> usize {
+        let len = self.pts.len();
+        if self.forward {
+            if idx + 1 >= len { 0 } else { idx + 1 }
+        } else if idx == 0 {
+            len - 1
+        } else {
+            idx - 1
+        }
+    }
+
+    /// The array index of the position before the one at array index `idx`.
+    #[inline]
+    fn step_back(&self, idx: usize) -> usize {
+        let len = self.pts.len();
+        if !self.forward {
+            if idx + 1 >= len { 0 } else { idx + 1 }
+        } else if idx == 0 {
+            len - 1
+        } else {
+            idx - 1
+        }
     }
 
     #[inline]
