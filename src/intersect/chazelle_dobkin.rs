@@ -138,7 +138,7 @@ impl ArrayIntersection for ChazelleDobkin {
         q: &ConvexPolygon,
         probe: &mut P,
     ) -> bool {
-        let k = k.within([p.bounding_box(), q.bounding_box()]);
+        let k = k.within_differences(union_side(p, q));
         run(k, p.vertices(), q.vertices(), || short_edges(p, q), probe).meets()
     }
 
@@ -150,7 +150,7 @@ impl ArrayIntersection for ChazelleDobkin {
         q: &ConvexPolygon,
         probe: &mut P,
     ) -> Derivation {
-        let k = k.within([p.bounding_box(), q.bounding_box()]);
+        let k = k.within_differences(union_side(p, q));
         let (pv, qv) = (p.vertices(), q.vertices());
         let exit = run(k, pv, qv, || short_edges(p, q), probe);
         let found = match exit {
@@ -680,11 +680,29 @@ fn pencil<K: Kernel>(k: K, q: &[Point], a: Point) -> Option<(usize, usize)> {
 
 /// The largest edge extent of the two polygons: every slope comparison crosses edges
 /// of P or Q (the short directions) with vectors between their vertices, the
-/// contract of [`Kernel::within_short_edges`].
+/// contract of [`Kernel::within_short_edges`]. An extent is never NaN (it is a
+/// maximum of plain comparisons, which skip a NaN difference), so one comparison
+/// picks the larger; an infinite extent comes with infinite boxes, whose bounds the
+/// kernel never replaces.
 #[inline]
 fn short_edges(p: &ConvexPolygon, q: &ConvexPolygon) -> f64 {
     let (ep, eq) = (p.edge_extent(), q.edge_extent());
-    if ep > eq || ep.is_nan() { ep } else { eq }
+    if ep > eq { ep } else { eq }
+}
+
+/// The side of the union of the polygons' bounding boxes, max(hi) − min(lo) per
+/// coordinate, the larger of the two: every computed difference of two vertices is at
+/// most this (rounding is monotonic), the contract of [`Kernel::within_differences`].
+/// The vertices are finite, so no NaN is lost in the comparisons: the same bounds as
+/// [`Kernel::within`] of the two boxes, without its test for non-finite corners.
+#[inline]
+fn union_side(p: &ConvexPolygon, q: &ConvexPolygon) -> f64 {
+    let max = |a: f64, b: f64| if a > b { a } else { b };
+    let min = |a: f64, b: f64| if a < b { a } else { b };
+    let ((lo0, hi0), (lo1, hi1)) = (p.bounding_box(), q.bounding_box());
+    let wx = max(hi0.x, hi1.x) - min(lo0.x, lo1.x);
+    let wy = max(hi0.y, hi1.y) - min(lo0.y, lo1.y);
+    max(wx, wy)
 }
 
 /// The pruning itself; `e` gives [`short_edges`] of the polygons, for the frame's kernel.
