@@ -1177,12 +1177,14 @@ pub(crate) fn in_triangles<K: Kernel>(
 /// the cone at x between lo and hi: on its closed side of L, it is then in the
 /// triangle x, lo, hi. Each candidate is checked against that triangle exactly (three
 /// orientations), so the answer never depends on the invariant, only its chance does.
-/// `None` when no point of the other set lies in the triangle (or it is degenerate).
+/// Else (when `chords` asks for them) two crossing segments, each between two of the
+/// points.
 pub(crate) fn cone_witness<K: Kernel, I: Iterator<Item = WitnessPoint>>(
     k: K,
     x: WitnessPoint,
     examined: impl Fn() -> I,
     of: impl Fn(bool) -> Which,
+    chords: bool,
 ) -> Cone {
     let own = x.in_b;
     // The extreme directions from x among its own set's points: lo the most clockwise,
@@ -1246,27 +1248,50 @@ pub(crate) fn cone_witness<K: Kernel, I: Iterator<Item = WitnessPoint>>(
             Collinear => {}
         }
     }
-    let (Some(u), Some(v)) = (u, v) else {
-        return Cone::Nothing;
-    };
     // r, u, v counter-clockwise: v on the right of r → x, u on its left.
-    let inside = k.orient(r.point, v.point, u.point) == Ccw
+    if let (Some(u), Some(v)) = (u, v)
+        && k.orient(r.point, v.point, u.point) == Ccw
         && k.orient(r.point, v.point, x.point) != Cw
         && k.orient(v.point, u.point, x.point) != Cw
-        && k.orient(u.point, r.point, x.point) != Cw;
-    if inside {
+        && k.orient(u.point, r.point, x.point) != Cw
+    {
         return Cone::Inside(Certificate::VertexInside {
             of: of(x.in_b),
             point: x.point,
         });
     }
-    // Else the hulls' boundaries cross: usually a side of the cone's triangle at x
-    // crosses the segment u v or one from r.
-    for (c, d) in [(u, v), (r, u), (r, v)] {
-        for e in [lo, hi] {
-            if segment_contact(k, x.point, e.point, c.point, d.point) == SegmentContact::Crossing {
-                return Cone::Chords([x, e], [c, d]);
+    if !chords {
+        return Cone::Nothing;
+    }
+    // Else the hulls' boundaries cross, and (the other set lying on its side of the
+    // LP's line) an edge of the other hull crosses a side x e of the cone's triangle:
+    // on the ray from x through e, the points of the other set nearest the ray in
+    // direction on its left (u) and on its right (v) span a segment that meets the
+    // ray inside that hull; it crosses the side when that meeting is before e.
+    for e in [hi, lo] {
+        let (mut u, mut v): (Option<WitnessPoint>, Option<WitnessPoint>) = (None, None);
+        for w in examined() {
+            if w.in_b == own {
+                continue;
             }
+            match k.orient(x.point, e.point, w.point) {
+                Ccw => {
+                    if u.is_none_or(|u| k.orient(x.point, u.point, w.point) == Cw) {
+                        u = Some(w);
+                    }
+                }
+                Cw => {
+                    if v.is_none_or(|v| k.orient(x.point, v.point, w.point) == Ccw) {
+                        v = Some(w);
+                    }
+                }
+                Collinear => {}
+            }
+        }
+        if let (Some(u), Some(v)) = (u, v)
+            && segment_contact(k, x.point, e.point, u.point, v.point) == SegmentContact::Crossing
+        {
+            return Cone::Chords([x, e], [u, v]);
         }
     }
     Cone::Nothing
@@ -1838,5 +1863,95 @@ mod tests {
         // The line x + y = 5.5... through no vertex: faces (2,2) of P and (3,3) of Q.
         let c = from_faces(Exact, p.vertices(), &[2], q.vertices(), &[0]).unwrap();
         assert_eq!(verify(&p, &q, &c), Ok(()), "{c:?}");
+    }
+
+    /// The cone search on hand-made examined sets (A's points, then B's, the violating
+    /// point x of A last): a point of B in the cone's triangle (inside, and exactly on
+    /// its side), none when it is one ulp outside, x in a triangle of B's points, and
+    /// two crossing segments when B's hull only crosses the triangle.
+    #[test]
+    fn cone_witness_finds_points_in_the_triangle_or_crossing_segments() {
+        let a = |x: f64, y: f64, i: usize| WitnessPoint {
+            point: Point::new(x, y),
+            in_b: false,
+            index: Some(i),
+        };
+        let b = |x: f64, y: f64, i: usize| WitnessPoint {
+            point: Point::new(x, y),
+            in_b: true,
+            index: Some(i),
+        };
+        let x = a(0.0, 2.0, 3);
+        let own = [a(-2.0, 0.0, 0), a(2.0, 0.0, 1), a(0.0, -1.0, 2)];
+        let of = |in_b: bool| if in_b { Which::Q } else { Which::P };
+        let run = |others: &[WitnessPoint], chords: bool| {
+            let pts: Vec<WitnessPoint> = own.iter().chain(others).chain([&x]).copied().collect();
+            cone_witness(Exact, x, || pts.clone().into_iter(), of, chords)
+        };
+        let inside = |c: Cone| match c {
+            Cone::Inside(Certificate::VertexInside { of, point }) => Some((of, point)),
+            _ => None,
+        };
+        // Strictly inside, and on the side x → (2, 0) (the line x + y = 2).
+        assert_eq!(
+            inside(run(&[b(5.0, 5.0, 0), b(0.0, 1.0, 1)], false)),
+            Some((Which::Q, Point::new(0.0, 1.0)))
+        );
+        assert_eq!(
+            inside(run(&[b(5.0, 5.0, 0), b(1.0, 1.0, 1)], false)),
+            Some((Which::Q, Point::new(1.0, 1.0)))
+        );
+        // One ulp beyond that side: not inside, and no segment asked for.
+        let up = f64::from_bits(1f64.to_bits() + 1);
+        assert!(matches!(
+            run(&[b(5.0, 5.0, 0), b(1.0, up, 1)], false),
+            Cone::Nothing
+        ));
+        // x in the triangle of B's points, none of which is in the cone's triangle.
+        assert_eq!(
+            inside(run(&[b(-1.0, 1.9, 0), b(1.0, 1.9, 1), b(0.0, 3.0, 2)], false)),
+            Some((Which::P, Point::new(0.0, 2.0)))
+        );
+        // B's segment y = 1.5 crosses the triangle: two crossing segments.
+        match run(&[b(-1.0, 1.5, 0), b(1.0, 1.5, 1)], true) {
+            Cone::Chords([s, e], [u, v]) => {
+                assert_eq!(s, x);
+                assert!(!s.in_b && !e.in_b && u.in_b && v.in_b);
+                assert_eq!(
+                    segment_contact(Exact, s.point, e.point, u.point, v.point),
+                    SegmentContact::Crossing
+                );
+            }
+            _ => panic!("no crossing segments"),
+        }
+    }
+
+    /// An end of an edge crossing a chord in the triangle of the chord and the farthest
+    /// point on its side: strictly inside, exactly on a side, and none when the only
+    /// point on that side makes a triangle that misses it by one ulp.
+    #[test]
+    fn end_in_triangle_is_exact() {
+        let pt = Point::new;
+        let (s, t) = (pt(0.0, 0.0), pt(4.0, 0.0));
+        let edge = (pt(2.0, -0.5), pt(2.5, 0.5));
+        assert_eq!(
+            end_in_triangle(Exact, edge, (s, t), &[pt(1.0, 1.0), pt(2.0, 3.0), pt(9.0, -9.0)]),
+            Some(pt(2.0, -0.5))
+        );
+        // Only a point above the chord: the end above it.
+        let w = pt(2.5, 3.0);
+        assert_eq!(end_in_triangle(Exact, edge, (s, t), &[w]), Some(pt(2.5, 0.5)));
+        // On the side s–w of the triangle s, t, w with w = (5, 1): (2.5, 0.5) is on it.
+        assert_eq!(
+            end_in_triangle(Exact, edge, (s, t), &[pt(5.0, 1.0)]),
+            Some(pt(2.5, 0.5))
+        );
+        // One ulp above that side: outside.
+        let above = pt(2.5, f64::from_bits(0.5f64.to_bits() + 1));
+        assert_eq!(
+            end_in_triangle(Exact, (edge.0, above), (s, t), &[pt(5.0, 1.0)]),
+            None
+        );
+        assert_eq!(end_in_triangle(Exact, edge, (s, t), &[]), None);
     }
 }

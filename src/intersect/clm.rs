@@ -484,9 +484,10 @@ fn certify<K: Kernel>(
                 x,
                 || ws.lp.examined(),
                 |in_b| if in_b { b.of() } else { a.of() },
+                chords.is_none(),
             ) {
                 Cone::Inside(c) => return Some(c),
-                Cone::Chords(own, other) if chords.is_none() => {
+                Cone::Chords(own, other) => {
                     let (own, other) = (own.map(|w| vertex(w).pos), other.map(|w| vertex(w).pos));
                     chords = Some(if vertex(x).of == Which::P {
                         (own, other)
@@ -497,7 +498,8 @@ fn certify<K: Kernel>(
                 _ => {}
             }
         }
-        // Two crossing chords: from the last step, else from the whole witness.
+        // Two crossing chords: from the last step, else from the cone, else from the
+        // whole witness.
         let (pc, qc) = match chords {
             Some(c) => c,
             None => match witness_certificate(k, ws.lp.witness_points().iter().map(|&w| vertex(w))) {
