@@ -56,6 +56,7 @@
 use crate::kernel::{
     DirectedLine, Exact, Kernel, Orientation, Point, SegmentContact, Sign, point_on_segment, segment_contact,
 };
+use crate::lp::WitnessPoint;
 use crate::polygon::{ConvexPolygon, LinkedPolygon};
 use std::fmt;
 
@@ -1164,107 +1165,147 @@ pub(crate) fn in_triangles<K: Kernel>(
     })
 }
 
-/// Scratch buffers for [`examined_witness`], kept in a workspace so that a query
-/// allocates nothing in the steady state.
-#[derive(Clone, Debug, Default)]
-pub(crate) struct WitnessScratch {
-    p: Vec<Point>,
-    q: Vec<Point>,
-    hull_p: Vec<Point>,
-    hull_q: Vec<Point>,
-}
-
-/// The convex hull of `pts` (sorted and deduplicated in place) into `out`,
-/// counter-clockwise without collinear points (Andrew's monotone chain).
-fn hull_into<K: Kernel>(k: K, pts: &mut Vec<Point>, out: &mut Vec<Point>) {
-    pts.sort_by(|a, b| a.lex_cmp(*b));
-    pts.dedup();
-    out.clear();
-    if pts.len() < 3 {
-        out.extend_from_slice(pts);
-        return;
-    }
-    let push = |out: &mut Vec<Point>, start: usize, x: Point| {
-        while out.len() >= start + 2 && k.orient(out[out.len() - 2], out[out.len() - 1], x) != Ccw {
-            out.pop();
+/// A vertex inside from the points an LP examined before it found their hulls
+/// intersecting ([`LpWorkspace::examined`](crate::lp::LpWorkspace::examined)), without
+/// building a hull: `x` is the point that made the LP infeasible (the last examined),
+/// `examined` yields the examined points (`true`: of the LP's set B), and `of` names
+/// the polygon of each set. Before x the optimum line L separated the examined points
+/// of x's set (on one closed side) from the others (on the other), and x lies strictly
+/// beyond L; so seen from x the points of its own set span less than a half-turn,
+/// between two extreme directions lo and hi (one orientation per point, two for a few),
+/// and a point y of the other set lies in the hull of x's set as soon as it lies in
+/// the cone at x between lo and hi: on its closed side of L, it is then in the
+/// triangle x, lo, hi. Each candidate is checked against that triangle exactly (three
+/// orientations), so the answer never depends on the invariant, only its chance does.
+/// Else (when `chords` asks for them) two crossing segments, each between two of the
+/// points.
+pub(crate) fn cone_witness<K: Kernel, I: Iterator<Item = WitnessPoint>>(
+    k: K,
+    x: WitnessPoint,
+    examined: impl Fn() -> I,
+    of: impl Fn(bool) -> Which,
+    chords: bool,
+) -> Cone {
+    let own = x.in_b;
+    // The extreme directions from x among its own set's points: lo the most clockwise,
+    // hi the most counter-clockwise.
+    let mut ends: Option<(WitnessPoint, WitnessPoint)> = None;
+    for w in examined() {
+        if w.in_b != own || w.point == x.point {
+            continue;
         }
-        out.push(x);
-    };
-    for &x in pts.iter() {
-        push(out, 0, x);
-    }
-    out.pop(); // the last point starts the other chain
-    let start = out.len();
-    for &x in pts.iter().rev() {
-        push(out, start, x);
-    }
-    out.pop();
-    if out.len() < 3 {
-        // All collinear: keep the two extremes.
-        out.clear();
-        out.push(pts[0]);
-        out.push(pts[pts.len() - 1]);
-    }
-}
-
-/// Whether `x` lies in a hull from [`hull_into`] (closed): O(log h) by the fan from
-/// its first vertex.
-fn in_hull<K: Kernel>(k: K, h: &[Point], x: Point) -> bool {
-    let n = h.len();
-    match n {
-        0 => false,
-        1 => h[0] == x,
-        2 => point_on_segment(k, h[0], h[1], x),
-        _ => {
-            if k.orient(h[0], h[1], x) == Cw || k.orient(h[n - 1], h[0], x) == Cw {
-                return false;
-            }
-            let (mut lo, mut hi) = (1, n - 1);
-            while hi - lo > 1 {
-                let mid = (lo + hi) / 2;
-                if k.orient(h[0], h[mid], x) != Cw {
-                    lo = mid;
+        ends = Some(match ends {
+            None => (w, w),
+            Some((lo, hi)) => {
+                if k.orient(x.point, lo.point, w.point) == Cw {
+                    (w, hi)
+                } else if k.orient(x.point, hi.point, w.point) == Ccw {
+                    (lo, w)
                 } else {
-                    hi = mid;
+                    (lo, hi)
                 }
             }
-            k.orient(h[lo], h[hi], x) != Cw
-        }
-    }
-}
-
-/// A vertex of P in the hull of the Q-vertices among `points`, or a vertex of Q in the
-/// hull of the P-vertices (each hull lies in its polygon): a certificate from the
-/// points an LP examined before it found their hulls intersecting. O(t log t) for t
-/// points. `None` when no point lies in the other hull (the hulls then only cross).
-pub(crate) fn examined_witness<K: Kernel>(
-    k: K,
-    points: impl Iterator<Item = WitnessVertex>,
-    scratch: &mut WitnessScratch,
-) -> Option<Certificate> {
-    let WitnessScratch { p, q, hull_p, hull_q } = scratch;
-    p.clear();
-    q.clear();
-    for w in points {
-        match w.of {
-            Which::P => p.push(w.point),
-            Which::Q => q.push(w.point),
-        }
-    }
-    hull_into(k, p, hull_p);
-    hull_into(k, q, hull_q);
-    if let Some(&x) = p.iter().find(|&&x| in_hull(k, hull_q, x)) {
-        return Some(Certificate::VertexInside {
-            of: Which::P,
-            point: x,
         });
     }
-    q.iter()
-        .find(|&&x| in_hull(k, hull_p, x))
-        .map(|&x| Certificate::VertexInside {
-            of: Which::Q,
-            point: x,
+    let Some((lo, hi)) = ends else {
+        return Cone::Nothing;
+    };
+    let (l, h) = (lo.point, hi.point);
+    if k.orient(x.point, l, h) == Ccw
+        && let Some(w) = examined().find(|w| {
+            w.in_b != own
+                && k.orient(x.point, l, w.point) != Cw
+                && k.orient(x.point, h, w.point) != Ccw
+                && k.orient(l, h, w.point) != Cw
         })
+    {
+        return Cone::Inside(Certificate::VertexInside {
+            of: of(w.in_b),
+            point: w.point,
+        });
+    }
+    // x itself in the hull of the other set's points: then it lies in a triangle r, u,
+    // v for any of them r, where u and v are the points on the left and on the right
+    // of the line from r through x whose directions from x are nearest that line's
+    // direction beyond x (each side spans less than a half-turn seen from x).
+    let mut others = examined().filter(|w| w.in_b != own);
+    let Some(r) = others.next() else {
+        return Cone::Nothing;
+    };
+    let (mut u, mut v): (Option<WitnessPoint>, Option<WitnessPoint>) = (None, None);
+    for w in others {
+        match k.orient(r.point, x.point, w.point) {
+            Ccw => {
+                if u.is_none_or(|u| k.orient(x.point, u.point, w.point) == Cw) {
+                    u = Some(w);
+                }
+            }
+            Cw => {
+                if v.is_none_or(|v| k.orient(x.point, v.point, w.point) == Ccw) {
+                    v = Some(w);
+                }
+            }
+            Collinear => {}
+        }
+    }
+    // r, u, v counter-clockwise: v on the right of r → x, u on its left.
+    if let (Some(u), Some(v)) = (u, v)
+        && k.orient(r.point, v.point, u.point) == Ccw
+        && k.orient(r.point, v.point, x.point) != Cw
+        && k.orient(v.point, u.point, x.point) != Cw
+        && k.orient(u.point, r.point, x.point) != Cw
+    {
+        return Cone::Inside(Certificate::VertexInside {
+            of: of(x.in_b),
+            point: x.point,
+        });
+    }
+    if !chords {
+        return Cone::Nothing;
+    }
+    // Else the hulls' boundaries cross, and (the other set lying on its side of the
+    // LP's line) an edge of the other hull crosses a side x e of the cone's triangle:
+    // on the ray from x through e, the points of the other set nearest the ray in
+    // direction on its left (u) and on its right (v) span a segment that meets the
+    // ray inside that hull; it crosses the side when that meeting is before e.
+    for e in [hi, lo] {
+        let (mut u, mut v): (Option<WitnessPoint>, Option<WitnessPoint>) = (None, None);
+        for w in examined() {
+            if w.in_b == own {
+                continue;
+            }
+            match k.orient(x.point, e.point, w.point) {
+                Ccw => {
+                    if u.is_none_or(|u| k.orient(x.point, u.point, w.point) == Cw) {
+                        u = Some(w);
+                    }
+                }
+                Cw => {
+                    if v.is_none_or(|v| k.orient(x.point, v.point, w.point) == Ccw) {
+                        v = Some(w);
+                    }
+                }
+                Collinear => {}
+            }
+        }
+        if let (Some(u), Some(v)) = (u, v)
+            && segment_contact(k, x.point, e.point, u.point, v.point) == SegmentContact::Crossing
+        {
+            return Cone::Chords([x, e], [u, v]);
+        }
+    }
+    Cone::Nothing
+}
+
+/// What [`cone_witness`] found.
+pub(crate) enum Cone {
+    /// A vertex inside.
+    Inside(Certificate),
+    /// Two crossing segments: between two points of the violating point's set (the
+    /// violating point first), and two of the other set.
+    Chords([WitnessPoint; 2], [WitnessPoint; 2]),
+    /// Neither.
+    Nothing,
 }
 
 /// The edge of a linked polygon between positions `u` and `w`, as its start, if they
@@ -1374,6 +1415,44 @@ fn reduce_linked<K: Kernel>(
     })
 }
 
+/// An end of the edge `u`–`v` (which crosses the chord `s`–`t` of the other polygon)
+/// in the triangle of s, t and the vertex of `points` (the other polygon's) farthest
+/// from the chord's line on that end's side: then that end is a vertex inside. The
+/// farthest vertex is chosen by distances computed in `f64` (a guide), the triangle
+/// tested exactly (three orientations per end). `None` when neither end is found
+/// inside that way.
+fn end_in_triangle<K: Kernel>(
+    k: K,
+    (u, v): (Point, Point),
+    (s, t): (Point, Point),
+    points: &[Point],
+) -> Option<Point> {
+    let (dx, dy) = (t.x - s.x, t.y - s.y);
+    let height = |x: Point| dx * (x.y - s.y) - dy * (x.x - s.x);
+    // The farthest on the left (positive heights) and on the right.
+    let (mut left, mut right) = ((0.0, None), (0.0, None));
+    for &x in points {
+        let h = height(x);
+        if h > left.0 {
+            left = (h, Some(x));
+        } else if h < right.0 {
+            right = (h, Some(x));
+        }
+    }
+    [u, v].into_iter().find(|&z| {
+        let side = k.orient(s, t, z);
+        let w = match side {
+            Ccw => left.1,
+            Cw => right.1,
+            Collinear => None,
+        };
+        w.is_some_and(|w| {
+            let outside = side.reverse();
+            k.orient(s, t, w) == side && k.orient(t, w, z) != outside && k.orient(w, s, z) != outside
+        })
+    })
+}
+
 /// [`resolve_chords`] for linked polygons: the segment between positions `a1`, `a2` of
 /// P meets the segment between `b1`, `b2` of Q. Chords are reduced to edges by walks
 /// ([`reduce_linked`]) that start from the nearest vertex of `p_starts` (of
@@ -1431,6 +1510,14 @@ pub(crate) fn resolve_linked_chords<K: Kernel>(
         SegmentContact::Crossing => {}
         SegmentContact::Disjoint => return None,
         _ => return endpoint_on_other(k, (u, v), (s, t)),
+    }
+    // Usually an end of P's edge, near the crossing with Q's chord, is inside Q: no
+    // second walk.
+    if let Some(z) = end_in_triangle(k, (u, v), (s, t), q_starts.1) {
+        return Some(Certificate::VertexInside {
+            of: Which::P,
+            point: z,
+        });
     }
     match reduce_linked(k, q, b1, q_starts, (u, v)) {
         Reduced::Edge(f, _) => Some(Certificate::CrossingEdges {
@@ -1776,5 +1863,95 @@ mod tests {
         // The line x + y = 5.5... through no vertex: faces (2,2) of P and (3,3) of Q.
         let c = from_faces(Exact, p.vertices(), &[2], q.vertices(), &[0]).unwrap();
         assert_eq!(verify(&p, &q, &c), Ok(()), "{c:?}");
+    }
+
+    /// The cone search on hand-made examined sets (A's points, then B's, the violating
+    /// point x of A last): a point of B in the cone's triangle (inside, and exactly on
+    /// its side), none when it is one ulp outside, x in a triangle of B's points, and
+    /// two crossing segments when B's hull only crosses the triangle.
+    #[test]
+    fn cone_witness_finds_points_in_the_triangle_or_crossing_segments() {
+        let a = |x: f64, y: f64, i: usize| WitnessPoint {
+            point: Point::new(x, y),
+            in_b: false,
+            index: Some(i),
+        };
+        let b = |x: f64, y: f64, i: usize| WitnessPoint {
+            point: Point::new(x, y),
+            in_b: true,
+            index: Some(i),
+        };
+        let x = a(0.0, 2.0, 3);
+        let own = [a(-2.0, 0.0, 0), a(2.0, 0.0, 1), a(0.0, -1.0, 2)];
+        let of = |in_b: bool| if in_b { Which::Q } else { Which::P };
+        let run = |others: &[WitnessPoint], chords: bool| {
+            let pts: Vec<WitnessPoint> = own.iter().chain(others).chain([&x]).copied().collect();
+            cone_witness(Exact, x, || pts.clone().into_iter(), of, chords)
+        };
+        let inside = |c: Cone| match c {
+            Cone::Inside(Certificate::VertexInside { of, point }) => Some((of, point)),
+            _ => None,
+        };
+        // Strictly inside, and on the side x → (2, 0) (the line x + y = 2).
+        assert_eq!(
+            inside(run(&[b(5.0, 5.0, 0), b(0.0, 1.0, 1)], false)),
+            Some((Which::Q, Point::new(0.0, 1.0)))
+        );
+        assert_eq!(
+            inside(run(&[b(5.0, 5.0, 0), b(1.0, 1.0, 1)], false)),
+            Some((Which::Q, Point::new(1.0, 1.0)))
+        );
+        // One ulp beyond that side: not inside, and no segment asked for.
+        let up = f64::from_bits(1f64.to_bits() + 1);
+        assert!(matches!(
+            run(&[b(5.0, 5.0, 0), b(1.0, up, 1)], false),
+            Cone::Nothing
+        ));
+        // x in the triangle of B's points, none of which is in the cone's triangle.
+        assert_eq!(
+            inside(run(&[b(-1.0, 1.9, 0), b(1.0, 1.9, 1), b(0.0, 3.0, 2)], false)),
+            Some((Which::P, Point::new(0.0, 2.0)))
+        );
+        // B's segment y = 1.5 crosses the triangle: two crossing segments.
+        match run(&[b(-1.0, 1.5, 0), b(1.0, 1.5, 1)], true) {
+            Cone::Chords([s, e], [u, v]) => {
+                assert_eq!(s, x);
+                assert!(!s.in_b && !e.in_b && u.in_b && v.in_b);
+                assert_eq!(
+                    segment_contact(Exact, s.point, e.point, u.point, v.point),
+                    SegmentContact::Crossing
+                );
+            }
+            _ => panic!("no crossing segments"),
+        }
+    }
+
+    /// An end of an edge crossing a chord in the triangle of the chord and the farthest
+    /// point on its side: strictly inside, exactly on a side, and none when the only
+    /// point on that side makes a triangle that misses it by one ulp.
+    #[test]
+    fn end_in_triangle_is_exact() {
+        let pt = Point::new;
+        let (s, t) = (pt(0.0, 0.0), pt(4.0, 0.0));
+        let edge = (pt(2.0, -0.5), pt(2.5, 0.5));
+        assert_eq!(
+            end_in_triangle(Exact, edge, (s, t), &[pt(1.0, 1.0), pt(2.0, 3.0), pt(9.0, -9.0)]),
+            Some(pt(2.0, -0.5))
+        );
+        // Only a point above the chord: the end above it.
+        let w = pt(2.5, 3.0);
+        assert_eq!(end_in_triangle(Exact, edge, (s, t), &[w]), Some(pt(2.5, 0.5)));
+        // On the side s–w of the triangle s, t, w with w = (5, 1): (2.5, 0.5) is on it.
+        assert_eq!(
+            end_in_triangle(Exact, edge, (s, t), &[pt(5.0, 1.0)]),
+            Some(pt(2.5, 0.5))
+        );
+        // One ulp above that side: outside.
+        let above = pt(2.5, f64::from_bits(0.5f64.to_bits() + 1));
+        assert_eq!(
+            end_in_triangle(Exact, (edge.0, above), (s, t), &[pt(5.0, 1.0)]),
+            None
+        );
+        assert_eq!(end_in_triangle(Exact, edge, (s, t), &[]), None);
     }
 }

@@ -74,12 +74,20 @@
 //!   optimum's tangent point of p's set (or p's frame point)
 //!   ([`LpWorkspace::mixed`](crate::lp::LpWorkspace::mixed)). A point of one set in
 //!   the hull of the other's is a vertex inside. Else the points the LP examined (a
-//!   few dozen) are searched the same way. Else two of the points form crossing
-//!   chords (from the last step, else from the whole witness), resolved by walks
-//!   along the boundaries started from the sample or chain vertex nearest the chord's
-//!   line on either side, so each walk stays within one gap between those vertices:
-//!   expected O(n/r + r), i.e. O(√n) like the test itself, but far more than an
-//!   intersecting query that stopped after a few dozen points.
+//!   few dozen) are searched without building a hull
+//!   ([`cone_witness`](super::certificate::cone_witness)): before the violating point
+//!   x the LP's line separated them, so seen from x its own set spans less than a
+//!   half-turn, and a point of the other set in that cone lies in the triangle of x
+//!   and the cone's two extreme points (one or two orientations per point, three for a
+//!   candidate); then x itself in a triangle of the other set's points, found the same
+//!   way. Else two of the points form crossing chords (from the last step, else from
+//!   the cone, else from the whole witness): P's chord is resolved by a walk along P
+//!   started from the sample or chain vertex nearest Q's chord's line on either side,
+//!   so it stays within one gap between those vertices (expected O(n/r + r), i.e.
+//!   O(√n) like the test itself, but far more than an intersecting query that stopped
+//!   after a few dozen points); an end of the edge it finds usually lies in the
+//!   triangle of Q's chord and Q's sample vertex farthest from it on that side (a
+//!   vertex inside, no second walk), else Q's chord is resolved by a walk too.
 //! * Otherwise (an inconsistent kernel) only the answer, completed on the walked arrays.
 //!
 //! # Complexity
@@ -106,8 +114,8 @@
 //! capped at n steps, so the test always terminates.
 
 use super::certificate::{
-    Radon, WitnessScratch, WitnessVertex, examined_witness, from_support, in_triangles,
-    resolve_linked_chords, straddle_certificate, supports_left, supports_right, witness_certificate,
+    Cone, Radon, WitnessVertex, cone_witness, from_support, in_triangles, resolve_linked_chords,
+    straddle_certificate, supports_left, supports_right, witness_certificate,
 };
 use super::linked::LinkedIntersection;
 use super::{Certificate, Derivation, Probe, Which};
@@ -255,7 +263,6 @@ pub struct ClmWorkspace {
     swaps: Vec<u32>,
     /// What the last certified query found, for its certificate.
     trace: Trace,
-    scratch: WitnessScratch,
 }
 
 /// The point sets an LP of [`clm`] ran on: samples, first chains, second chains.
@@ -419,21 +426,7 @@ fn certify<K: Kernel>(
     answer: bool,
     p: &LinkedPolygon,
     q: &LinkedPolygon,
-    ws: &mut ClmWorkspace,
-) -> Option<Certificate> {
-    let mut scratch = std::mem::take(&mut ws.scratch);
-    let certificate = certify_with(k, answer, p, q, ws, &mut scratch);
-    ws.scratch = scratch;
-    certificate
-}
-
-fn certify_with<K: Kernel>(
-    k: K,
-    answer: bool,
-    p: &LinkedPolygon,
-    q: &LinkedPolygon,
     ws: &ClmWorkspace,
-    scratch: &mut WitnessScratch,
 ) -> Option<Certificate> {
     let set = |s: Set| -> (&[u32], &LinkedPolygon) {
         let positions = match s {
@@ -483,11 +476,30 @@ fn certify_with<K: Kernel>(
                 return Some(c);
             }
         }
-        // The points the LP examined (which hold most of its witness).
-        if let Some(c) = examined_witness(k, ws.lp.examined().map(vertex), scratch) {
-            return Some(c);
+        // The points the LP examined (which hold most of its witness): those of the
+        // other set than the violating point in the cone it sees its own set in.
+        if let Some(&x) = ws.lp.witness_points().first() {
+            match cone_witness(
+                k,
+                x,
+                || ws.lp.examined(),
+                |in_b| if in_b { b.of() } else { a.of() },
+                chords.is_none(),
+            ) {
+                Cone::Inside(c) => return Some(c),
+                Cone::Chords(own, other) => {
+                    let (own, other) = (own.map(|w| vertex(w).pos), other.map(|w| vertex(w).pos));
+                    chords = Some(if vertex(x).of == Which::P {
+                        (own, other)
+                    } else {
+                        (other, own)
+                    });
+                }
+                _ => {}
+            }
         }
-        // Two crossing chords: from the last step, else from the whole witness.
+        // Two crossing chords: from the last step, else from the cone, else from the
+        // whole witness.
         let (pc, qc) = match chords {
             Some(c) => c,
             None => match witness_certificate(k, ws.lp.witness_points().iter().map(|&w| vertex(w))) {
