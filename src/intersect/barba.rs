@@ -77,8 +77,10 @@
 //!   crosses the line of Q's edge exactly once), giving two crossing edges or an end of
 //!   Q's edge inside P. O(log n) more; the plain run never localises P's boundary
 //!   there, so this is the certified call's extra work on intersecting pairs. Where
-//!   Q' is a segment, nine orientations computed once decide every case, and the
-//!   proper crossing is resolved without testing the contact again.
+//!   Q' is a segment, the certified finish decides separation from the nine
+//!   orientations between T_P and the segment and ends with them (`Exit::Segment`):
+//!   they decide every case, and the proper crossing is resolved from them without
+//!   computing any of them or the contact again.
 //! * disjoint pieces: the last separating line is an edge of Q with P' strictly
 //!   outside (or an edge of P with Q' outside). If P's vertex deepest towards it is
 //!   extreme in all of P, that edge separates P and Q: the run ended because P''s
