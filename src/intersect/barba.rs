@@ -77,8 +77,10 @@
 //!   crosses the line of Q's edge exactly once), giving two crossing edges or an end of
 //!   Q's edge inside P. O(log n) more; the plain run never localises P's boundary
 //!   there, so this is the certified call's extra work on intersecting pairs. Where
-//!   Q' is a segment, nine orientations computed once decide every case, and the
-//!   proper crossing is resolved without testing the contact again.
+//!   Q' is a segment, the certified finish decides separation from the nine
+//!   orientations between T_P and the segment and ends with them (`Exit::Segment`):
+//!   they decide every case, and the proper crossing is resolved from them without
+//!   computing any of them or the contact again.
 //! * disjoint pieces: the last separating line is an edge of Q with P' strictly
 //!   outside (or an edge of P with Q' outside). If P's vertex deepest towards it is
 //!   extreme in all of P, that edge separates P and Q: the run ended because P''s
@@ -116,7 +118,8 @@
 //! remaining pieces.
 
 use super::certificate::{
-    extreme_left, resolve_chords, resolve_crossing_chords, same_direction, separates, turn_gt,
+    extreme_left, resolve_chords, resolve_crossing_chords, resolve_crossing_chords_known, same_direction,
+    separates, turn_gt,
 };
 use super::{ArrayIntersection, Certificate, Derivation, Linear, Probe, Which};
 use crate::kernel::{
@@ -247,7 +250,7 @@ impl<const T: bool, const S: usize, const E: bool> ArrayIntersection for BarbaVa
     }
 }
 
-use Orientation::{Collinear, Cw};
+use Orientation::{Ccw, Collinear, Cw};
 
 /// `len ≥ 3` consecutive vertices of a polygon from array index `start`. For P' it may
 /// also be the whole of P with the thesis's first triangle (`thirds`, see
@@ -377,6 +380,13 @@ enum Exit {
     Chord { a: usize, b: usize, e: usize },
     /// T_P of `pr` meets the explicit Q' `qs` (constant-size finish).
     Small { pr: Range, qs: SmallQ },
+    /// T_P of `pr` meets the segment Q' `qs` (a chord of Q), with the orientations the
+    /// certified finish decided it by ([`SegmentTable`]).
+    Segment {
+        pr: Range,
+        qs: SmallQ,
+        table: SegmentTable,
+    },
     /// P' = CH(`pr`) and Q' (`q`) are disjoint, by `line`.
     Apart { pr: Range, q: SmallQ, line: Sep },
     /// An inconsistent kernel: the reference's answer on the remaining pieces.
@@ -388,6 +398,10 @@ enum Exit {
 /// cases. The algorithm is written once.
 trait Mode {
     type Out;
+    /// Whether the run's exits are turned into certificates: then the finish against a
+    /// segment Q' computes all nine orientations between T_P and the segment, decides
+    /// with them, and hands them to the witness ([`Exit::Segment`]).
+    const CERTIFY: bool;
     /// The run on `pv` and `qv` ended with this answer; `exit` says how.
     fn done<K: Kernel, V: Variant>(
         k: K,
@@ -403,6 +417,7 @@ struct Plain;
 
 impl Mode for Plain {
     type Out = bool;
+    const CERTIFY: bool = false;
     #[inline(always)]
     fn done<K: Kernel, V: Variant>(
         _: K,
@@ -420,6 +435,7 @@ struct Record;
 
 impl Mode for Record {
     type Out = Exit;
+    const CERTIFY: bool = true;
     #[inline(always)]
     fn done<K: Kernel, V: Variant>(
         _: K,
@@ -438,6 +454,7 @@ struct Derive;
 
 impl Mode for Derive {
     type Out = Derivation;
+    const CERTIFY: bool = true;
     #[inline(always)]
     fn done<K: Kernel, V: Variant>(
         k: K,
@@ -450,8 +467,9 @@ impl Mode for Derive {
     }
 }
 
-/// The certified call's result for a run's exit (the module docs' "Certificate").
-#[inline(always)]
+/// The certified call's result for a run's exit (the module docs' "Certificate"). Out
+/// of line, so that the certified loop's code stays the plain loop's.
+#[inline(never)]
 fn derivation<K: Kernel, V: Variant>(k: K, pv: &[Point], qv: &[Point], exit: Exit) -> Derivation {
     match exit {
         Exit::Apart { pr, q, line } => lift(k, pv, qv, pr, q, line)
@@ -817,7 +835,17 @@ fn against_small<K: Kernel, P: Probe, M: Mode, V: Variant>(
         });
         let tp = pr.tri();
         let t = tp.map(|pos| pr.at(pv, pos));
-        let Some(axis) = separating_axis(k, &t, qs) else {
+        let axis = if M::CERTIFY && small.chord {
+            match SegmentTable::axis(k, &t, [qs[0], qs[1]]) {
+                Ok(axis) => Some(axis),
+                Err(table) => {
+                    return M::done::<K, V>(k, pv, qv, true, || Exit::Segment { pr, qs: small, table });
+                }
+            }
+        } else {
+            separating_axis(k, &t, qs)
+        };
+        let Some(axis) = axis else {
             return M::done::<K, V>(k, pv, qv, true, || Exit::Small { pr, qs: small });
         };
         let keep = match axis {
@@ -866,6 +894,50 @@ fn separating_axis<K: Kernel>(k: K, t: &[Point; 3], qs: &[Point]) -> Option<Axis
         .map(Axis::OfTriangle)
 }
 
+/// The orientations between a triangle T_P and a segment Q' = (q₀, q₁): `o[a]` of
+/// T_P's vertex `a` against the line q₀ → q₁, `w[j][a]` of the segment's end `j`
+/// against T_P's edge `a` → `a + 1`. Nine predicates decide whether they meet and, if
+/// they do, which witness they have ([`segment_witness`]).
+#[derive(Clone, Copy, Debug)]
+struct SegmentTable {
+    o: [Orientation; 3],
+    w: [[Orientation; 3]; 2],
+}
+
+impl SegmentTable {
+    /// [`separating_axis`] for the segment `q`, in the same order and with the same
+    /// predicates under an exact kernel (the line q₁ → q₀ has T_P strictly right iff
+    /// every `o` is counter-clockwise), or, when none separates, the whole table: the
+    /// orientations the separation tests skipped are computed then, each once.
+    #[inline]
+    fn axis<K: Kernel>(k: K, t: &[Point; 3], q: [Point; 2]) -> Result<Axis, SegmentTable> {
+        let o: [Orientation; 3] = std::array::from_fn(|a| k.orient(q[0], q[1], t[a]));
+        if o.iter().all(|&x| x == Cw) {
+            return Ok(Axis::OfQ(0, 1));
+        }
+        if o.iter().all(|&x| x == Ccw) {
+            return Ok(Axis::OfQ(1, 0));
+        }
+        let mut w = [[Collinear; 3]; 2];
+        for a in 0..3 {
+            let b = (a + 1) % 3;
+            w[0][a] = k.orient(t[a], t[b], q[0]);
+            if w[0][a] == Cw {
+                w[1][a] = k.orient(t[a], t[b], q[1]);
+                if w[1][a] == Cw {
+                    return Ok(Axis::OfTriangle(a));
+                }
+            }
+        }
+        for a in 0..3 {
+            if w[0][a] != Cw {
+                w[1][a] = k.orient(t[a], t[(a + 1) % 3], q[1]);
+            }
+        }
+        Err(SegmentTable { o, w })
+    }
+}
+
 /// Only for kernels that contradict themselves: the O(n + m) reference on the
 /// remaining pieces.
 fn fallback<K: Kernel>(k: K, pv: &[Point], pr: Range, qv: &[Point], qr: Range) -> bool {
@@ -894,6 +966,7 @@ fn meet_certificate<K: Kernel>(k: K, pv: &[Point], qv: &[Point], exit: Exit) -> 
         }),
         Exit::Chord { a, b, e } => resolve_chords(k, pv, (a, b), qv, (e, (e + 1) % qv.len())),
         Exit::Small { pr, qs } => small_witness(k, pv, pr, qv, qs),
+        Exit::Segment { pr, qs, table } => segment_witness(k, pv, pr, qv, qs, table),
         Exit::Apart { .. } | Exit::Stuck(_) => None,
     }
 }
@@ -916,30 +989,11 @@ fn small_witness<K: Kernel>(
     let tp = t.map(|i| pv[i]);
     let (qi, len) = small.indices(qv.len());
     if len == 2 {
-        let qp = [qv[qi[0]], qv[qi[1]]];
-        // Q' is a segment: the orientations of T_P's vertices against its line (3) and
-        // of its ends against T_P's edges (6) decide every case, each computed once.
-        let o: [Orientation; 3] = std::array::from_fn(|a| k.orient(qp[0], qp[1], tp[a]));
-        if let Some(a) = (0..3).find(|&a| o[a] == Collinear && point_on_segment(k, qp[0], qp[1], tp[a])) {
-            return Some(Certificate::VertexInside {
-                of: Which::P,
-                point: tp[a],
-            });
-        }
-        let w: [[Orientation; 3]; 2] =
-            std::array::from_fn(|j| std::array::from_fn(|a| k.orient(tp[a], tp[(a + 1) % 3], qp[j])));
-        if let Some(j) = (0..2).find(|&j| w[j].iter().all(|&x| x != Cw)) {
-            return Some(Certificate::VertexInside {
-                of: Which::Q,
-                point: qp[j],
-            });
-        }
-        // Neither end inside T_P and no vertex of T_P on the segment, yet they meet: an
-        // edge of T_P crosses the segment properly (both pairs strictly apart).
-        let straddle = |x: Orientation, y: Orientation| x != Collinear && y == x.reverse();
-        let a = (0..3).find(|&a| straddle(o[a], o[(a + 1) % 3]) && straddle(w[0][a], w[1][a]))?;
-        let (a, b) = pr.chord(a);
-        return resolve_crossing_chords(k, pv, (t[a], t[b]), qv, (qi[0], qi[1]));
+        // Q' is a segment (certified runs end there with `Exit::Segment` instead).
+        return match SegmentTable::axis(k, &tp, [qv[qi[0]], qv[qi[1]]]) {
+            Ok(_) => None,
+            Err(table) => segment_witness(k, pv, pr, qv, small, table),
+        };
     }
     let qp: [Point; SMALL_Q] = std::array::from_fn(|j| if j < len { qv[qi[j]] } else { Point::default() });
     // A vertex of either inside the other, each test stopping at the first edge it is
@@ -982,6 +1036,48 @@ fn small_witness<K: Kernel>(
     })?;
     let (a, b) = pr.chord(a);
     resolve_crossing_chords(k, pv, (t[a], t[b]), qv, (qi[e], qi[(e + 1) % len]))
+}
+
+/// T_P meets the segment Q' (a chord of Q), as its orientation table shows: a vertex of
+/// T_P on the segment (a vertex of P in Q), an end of the segment in T_P (a vertex of Q
+/// in P), or else an edge of T_P (a chord of P) crossing the segment properly, resolved
+/// by [`resolve_crossing_chords_known`] (one search within P', then one within Q' if
+/// needed) starting from the table's orientations: which end of the segment lies
+/// beyond the chord, and the chord's start against the segment's line.
+fn segment_witness<K: Kernel>(
+    k: K,
+    pv: &[Point],
+    pr: Range,
+    qv: &[Point],
+    small: SmallQ,
+    SegmentTable { o, w }: SegmentTable,
+) -> Option<Certificate> {
+    let t = pr.triangle(pv.len());
+    let tp = t.map(|i| pv[i]);
+    let (qi, _) = small.indices(qv.len());
+    let qp = [qv[qi[0]], qv[qi[1]]];
+    if let Some(a) = (0..3).find(|&a| o[a] == Collinear && point_on_segment(k, qp[0], qp[1], tp[a])) {
+        return Some(Certificate::VertexInside {
+            of: Which::P,
+            point: tp[a],
+        });
+    }
+    if let Some(j) = (0..2).find(|&j| w[j].iter().all(|&x| x != Cw)) {
+        return Some(Certificate::VertexInside {
+            of: Which::Q,
+            point: qp[j],
+        });
+    }
+    // Neither end inside T_P and no vertex of T_P on the segment, yet they meet: an
+    // edge of T_P crosses the segment properly (both pairs strictly apart).
+    let straddle = |x: Orientation, y: Orientation| x != Collinear && y == x.reverse();
+    let a = (0..3).find(|&a| straddle(o[a], o[(a + 1) % 3]) && straddle(w[0][a], w[1][a]))?;
+    let (ca, cb) = pr.chord(a);
+    // The end strictly right of the chord t[ca] → t[cb]: right of T_P's edge a → a + 1,
+    // or left of it for P''s closing chord, given reversed (0 → 2).
+    let beyond = if (ca, cb) == (a, (a + 1) % 3) { Cw } else { Ccw };
+    let near = if w[0][a] == beyond { qp[0] } else { qp[1] };
+    resolve_crossing_chords_known(k, pv, (t[ca], t[cb]), qv, (qi[0], qi[1]), (near, o[ca]))
 }
 
 /// A separating edge for the whole polygons from a run's final separation of the
@@ -1235,13 +1331,7 @@ mod tests {
                         let (pv, qv) = (p.vertices(), q.vertices());
                         let k = Exact.within([p.bounding_box(), q.bounding_box()]);
                         let exit = run::<_, (), Record, Ours>(k, pv, qv, &mut ());
-                        let segment = matches!(
-                            exit,
-                            Exit::Small {
-                                qs: SmallQ { chord: true, .. },
-                                ..
-                            }
-                        );
+                        let segment = matches!(exit, Exit::Segment { .. });
                         let c = meet_certificate(k, pv, qv, exit)
                             .unwrap_or_else(|| panic!("{family:?} 2^{log2} ×{scale}: {exit:?} gave none"));
                         assert_eq!(verify(&p, &q, &c), Ok(()), "{family:?} 2^{log2} ×{scale}: {c:?}");

@@ -720,8 +720,11 @@ fn edge_between(n: usize, i: usize, j: usize) -> Option<usize> {
 
 /// What [`reduce_chord`] found.
 enum Reduced {
-    /// The edge starting at this index meets the segment, as classified.
-    Edge(usize, SegmentContact),
+    /// The edge starting at this index meets the segment, as classified; for a
+    /// crossing, also what starts the reduction of the segment (if a chord) against
+    /// the edge: the edge's end strictly right of the segment, and the side of the
+    /// segment's first end against the edge.
+    Edge(usize, SegmentContact, Option<(Point, Orientation)>),
     /// This endpoint of the segment lies in the polygon.
     Inside(Point),
     /// Only an inconsistent kernel gets here.
@@ -739,15 +742,34 @@ enum Reduced {
 /// st does not reach Y, its endpoint on the chain's side lies strictly between X and Y.
 /// That endpoint is first tested against the triangle of the chord and the chain's
 /// middle vertex (two orientations): inside it, it is inside the polygon.
-fn reduce_chord<K: Kernel>(k: K, av: &[Point], i: usize, j: usize, s: Point, t: Point) -> Reduced {
+///
+/// The search ([`crossing_edge`]) ends at an edge whose ends are known on either side of
+/// the line, so its contact with the segment takes two orientations more.
+///
+/// `known`, when the caller has them: the segment's end strictly right of the chord
+/// `av[i]` → `av[j]` and the side of `av[i]` against the line s → t.
+fn reduce_chord<K: Kernel>(
+    k: K,
+    av: &[Point],
+    (i, j): (usize, usize),
+    (s, t): (Point, Point),
+    known: Option<(Point, Orientation)>,
+) -> Reduced {
     let n = av.len();
     let (a, b) = (av[i], av[j]);
-    let near = if k.orient(a, b, s) == Cw {
-        s
-    } else if k.orient(a, b, t) == Cw {
-        t
-    } else {
-        return Reduced::Fail;
+    let line = DirectedLine::new(s, t);
+    let (near, sigma) = match known {
+        Some(known) => known,
+        None => {
+            let near = if k.orient(a, b, s) == Cw {
+                s
+            } else if k.orient(a, b, t) == Cw {
+                t
+            } else {
+                return Reduced::Fail;
+            };
+            (near, k.orient_line(&line, a))
+        }
     };
     let len = if j >= i { j - i } else { j + n - i };
     let at = |off: usize| {
@@ -761,24 +783,55 @@ fn reduce_chord<K: Kernel>(k: K, av: &[Point], i: usize, j: usize, s: Point, t: 
     if len >= 2 && k.orient(a, m, near) != Cw && k.orient(m, b, near) != Cw {
         return Reduced::Inside(near);
     }
-    let sigma = k.orient(s, t, a);
-    let side = |off: usize| k.orient(s, t, at(off));
-    // side(lo) == sigma, side(hi) != sigma.
+    let (lo, o_next) = crossing_edge(k, &line, &at, len, sigma);
+    let e = if i + lo >= n { i + lo - n } else { i + lo };
+    let (u, v) = (av[e], at(lo + 1));
+    // u is strictly on a's side of the line; v strictly on the other (the edge crosses
+    // the line at an interior point) or on it.
+    if o_next == Collinear {
+        return match segment_contact(k, u, v, s, t) {
+            SegmentContact::Disjoint => Reduced::Inside(near),
+            contact => Reduced::Edge(e, contact, None),
+        };
+    }
+    let (os, ot) = (k.orient(u, v, s), k.orient(u, v, t));
+    if os == ot && os != Collinear {
+        Reduced::Inside(near)
+    } else if os != Collinear && ot != Collinear {
+        // u is on a's side of the line s → t, v strictly on the other.
+        let right = if sigma == Cw { u } else { v };
+        Reduced::Edge(e, SegmentContact::Crossing, Some((right, os)))
+    } else {
+        Reduced::Edge(e, SegmentContact::Touching, None)
+    }
+}
+
+/// The chain `at(0..=len)` has `at(0)` strictly on side `sigma` of `line` and `at(len)`
+/// strictly on the other side, and crosses the line once: the offset `lo` of the edge
+/// `at(lo)` → `at(lo + 1)` where it does (`at(lo)` on side `sigma`, `at(lo + 1)` not),
+/// with the side of `at(lo + 1)`. A binary search, one exact orientation per probe
+/// against the line's precomputed direction.
+#[inline]
+fn crossing_edge<K: Kernel>(
+    k: K,
+    line: &DirectedLine,
+    at: &impl Fn(usize) -> Point,
+    len: usize,
+    sigma: Orientation,
+) -> (usize, Orientation) {
     let (mut lo, mut hi) = (0, len);
+    let mut o_hi = sigma.reverse();
     while hi - lo > 1 {
         let mid = lo + (hi - lo) / 2;
-        if side(mid) == sigma {
+        let o = k.orient_line(line, at(mid));
+        if o == sigma {
             lo = mid;
         } else {
             hi = mid;
+            o_hi = o;
         }
     }
-    let e = (i + lo) % n;
-    let (u, v) = (av[e], av[(e + 1) % n]);
-    match segment_contact(k, u, v, s, t) {
-        SegmentContact::Disjoint => Reduced::Inside(near),
-        contact => Reduced::Edge(e, contact),
-    }
+    (lo, o_hi)
 }
 
 /// An endpoint of one segment on the other segment, as a vertex-inside certificate: the
@@ -845,12 +898,40 @@ pub(crate) fn resolve_crossing_chords<K: Kernel>(
     qv: &[Point],
     (c, d): (usize, usize),
 ) -> Option<Certificate> {
+    resolve_crossing(k, pv, (i, j), qv, (c, d), None)
+}
+
+/// [`resolve_crossing_chords`] for a caller that also has the orientations that start
+/// the reduction of P's chord: `near`, the end of Q's segment strictly right of the
+/// chord `pv[i]` → `pv[j]`, and `sigma`, the side of `pv[i]` against the line
+/// `qv[c]` → `qv[d]`. The reduction of Q's chord then starts from the orientations
+/// P's found (none recomputed either).
+pub(crate) fn resolve_crossing_chords_known<K: Kernel>(
+    k: K,
+    pv: &[Point],
+    (i, j): (usize, usize),
+    qv: &[Point],
+    (c, d): (usize, usize),
+    (near, sigma): (Point, Orientation),
+) -> Option<Certificate> {
+    resolve_crossing(k, pv, (i, j), qv, (c, d), Some((near, sigma)))
+}
+
+#[inline]
+fn resolve_crossing<K: Kernel>(
+    k: K,
+    pv: &[Point],
+    (i, j): (usize, usize),
+    qv: &[Point],
+    (c, d): (usize, usize),
+    known: Option<(Point, Orientation)>,
+) -> Option<Certificate> {
     let (s, t) = (qv[c], qv[d]);
     let q_edge = edge_between(qv.len(), c, d);
-    let (e, contact) = match edge_between(pv.len(), i, j) {
-        Some(e) => (e, SegmentContact::Crossing),
-        None => match reduce_chord(k, pv, i, j, s, t) {
-            Reduced::Edge(e, contact) => (e, contact),
+    let (e, contact, known_q) = match edge_between(pv.len(), i, j) {
+        Some(e) => (e, SegmentContact::Crossing, None),
+        None => match reduce_chord(k, pv, (i, j), (s, t), known) {
+            Reduced::Edge(e, contact, next) => (e, contact, next),
             Reduced::Inside(x) => {
                 return Some(Certificate::VertexInside {
                     of: Which::Q,
@@ -867,8 +948,8 @@ pub(crate) fn resolve_crossing_chords<K: Kernel>(
     if contact != SegmentContact::Crossing {
         return endpoint_on_other(k, (u, v), (s, t));
     }
-    match reduce_chord(k, qv, c, d, u, v) {
-        Reduced::Edge(f, _) => Some(crossing(pv, e, qv, f)),
+    match reduce_chord(k, qv, (c, d), (u, v), known_q) {
+        Reduced::Edge(f, ..) => Some(crossing(pv, e, qv, f)),
         Reduced::Inside(x) => Some(Certificate::VertexInside {
             of: Which::P,
             point: x,
@@ -1405,7 +1486,7 @@ fn reduce_linked<K: Kernel>(
     let (u, w) = (poly.point_at(edge), poly.point_at(poly.next_at(edge)));
     let contact = segment_contact(k, u, w, s, t);
     if contact.meets() {
-        return Reduced::Edge(edge, contact);
+        return Reduced::Edge(edge, contact, None);
     }
     let side = k.orient(u, w, s);
     Reduced::Inside(if k.cross(u, w, t, s) == side.reverse() {
@@ -1487,7 +1568,7 @@ pub(crate) fn resolve_linked_chords<K: Kernel>(
     let e = match p_edge {
         Some(e) => e,
         None => match reduce_linked(k, p, a1, p_starts, (s, t)) {
-            Reduced::Edge(e, _) => e,
+            Reduced::Edge(e, ..) => e,
             Reduced::Inside(x) => {
                 return Some(Certificate::VertexInside {
                     of: Which::Q,
@@ -1520,7 +1601,7 @@ pub(crate) fn resolve_linked_chords<K: Kernel>(
         });
     }
     match reduce_linked(k, q, b1, q_starts, (u, v)) {
-        Reduced::Edge(f, _) => Some(Certificate::CrossingEdges {
+        Reduced::Edge(f, ..) => Some(Certificate::CrossingEdges {
             p: [u, v],
             q: edge_points(q, f),
         }),
@@ -1635,6 +1716,71 @@ mod tests {
             verify_linked(&lp, &lr, &outside),
             Err(CertificateError::Outside { .. })
         ));
+    }
+
+    /// The chain search finds the crossing edge a scan finds, on every family's polygons
+    /// (touching, one-ulp, nested and ordinary pairs) for lines through two vertices,
+    /// with the side of the edge's end; and every chord of P crossing a chord of Q properly resolves to a certificate
+    /// that verifies, at ordinary scale and scaled by 2^600 and 2^-600.
+    #[test]
+    fn chain_search_finds_the_crossing_and_chords_resolve() {
+        use crate::generate::{self, Family, Relation, map_pair};
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand::rngs::SmallRng::seed_from_u64(0x1e7);
+        let (mut searches, mut resolved) = (0, 0);
+        for &family in Family::ALL {
+            for log2 in [3, 6, 10] {
+                for relation in [Relation::Intersecting, Relation::Any] {
+                    let Ok(base) = generate::try_pair(family, 1 << log2, relation, &mut rng) else {
+                        continue;
+                    };
+                    for scale in [1.0, 2f64.powi(600), 2f64.powi(-600)] {
+                        let Some((p, q)) = map_pair(&base, |v| Point::new(v.x * scale, v.y * scale)) else {
+                            continue;
+                        };
+                        let (pv, qv) = (p.vertices(), q.vertices());
+                        let (n, m) = (pv.len(), qv.len());
+                        for _ in 0..20 {
+                            // A chord of P and a line through two vertices of Q.
+                            let (i, len) = (rng.random_range(0..n), rng.random_range(2..n));
+                            let j = (i + len) % n;
+                            let (c, d) = (rng.random_range(0..m), rng.random_range(0..m));
+                            let (s, t) = (qv[c], qv[d]);
+                            let line = DirectedLine::new(s, t);
+                            let at = |off: usize| pv[(i + off) % n];
+                            let sigma = Exact.orient_line(&line, at(0));
+                            let end = Exact.orient_line(&line, at(len));
+                            if c == d || sigma == Collinear || end != sigma.reverse() {
+                                continue;
+                            }
+                            let sides: Vec<bool> = (0..=len)
+                                .map(|o| Exact.orient_line(&line, at(o)) == sigma)
+                                .collect();
+                            let Some(first_off) = sides.iter().position(|&x| !x) else {
+                                unreachable!("the chain ends off sigma's side");
+                            };
+                            // One crossing (a convex chain): sides hold until first_off.
+                            let (lo, o_next) = crossing_edge(Exact, &line, &at, len, sigma);
+                            if sides[first_off..].iter().all(|&x| !x) {
+                                assert_eq!(lo + 1, first_off, "{family:?} 2^{log2} ×{scale}");
+                                assert_eq!(o_next, Exact.orient_line(&line, at(lo + 1)));
+                                searches += 1;
+                            }
+                            if segment_contact(Exact, pv[i], pv[j], s, t) == SegmentContact::Crossing {
+                                let cert = resolve_chords(Exact, pv, (i, j), qv, (c, d))
+                                    .unwrap_or_else(|| panic!("{family:?} 2^{log2} ×{scale}: none"));
+                                assert_eq!(verify(&p, &q, &cert), Ok(()), "{family:?} 2^{log2} ×{scale}");
+                                resolved += 1;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        assert!(
+            searches > 300 && resolved > 80,
+            "{searches} searches, {resolved} resolved"
+        );
     }
 
     #[test]
