@@ -28,8 +28,10 @@
 //!    and C_Q's tangent vertex on L′), the LP only when the walk gives no answer.
 //!    With [`ClmVariant::sample_walk`] (the default) the LPs of steps 2 and 5 on a
 //!    sample are such walks too: the samples are put in boundary order first
-//!    (`boundary_order`, exact), after an LP on the first 12 points of each
-//!    (intersecting samples usually show there, before any ordering).
+//!    (`boundary_order`: sorted by `f64` angle keys whose order is proved exact when
+//!    they are two or more apart, `orient` only on near-ties), after an LP on the
+//!    first 12 points of each (intersecting samples usually show there, before any
+//!    ordering).
 //!    Order of work: chain walks run two at a time in lockstep, so that their cache
 //!    misses (each step is a dependent load at a random arena position) overlap, and
 //!    each LP runs as soon as the chain it needs is walked (either sample-against-chain
