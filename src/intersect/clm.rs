@@ -567,7 +567,7 @@ struct OrderScratch {
 /// Each point gets a 32-bit key, an `f64` pseudo-angle about o scaled by 2³¹
 /// ([`angle_key`]), and keys two or more apart are in the exact order (the error bound
 /// is proved there). So the points are sorted by key alone (key and index in one
-/// `u64`: one counting pass into 2r–4r buckets by the top bits, then an insertion sort,
+/// `u64`: one counting pass into r–2r buckets by the top bits, then an insertion sort,
 /// which falls back to a full sort after 4r moves when the angles crowd), gathered in
 /// that order, and only the runs of near-ties (consecutive keys at most one apart:
 /// repeats, o's neighbours, angles within about 2⁻³¹) are sorted again with `orient`
@@ -624,7 +624,7 @@ fn boundary_order<K: Kernel>(
         return false;
     }
     // Counting sort on the keys' top bits, then insertion sort on the whole entries.
-    let bits = (2 * n).next_power_of_two().trailing_zeros().clamp(1, 24);
+    let bits = n.next_power_of_two().trailing_zeros().clamp(1, 24);
     let bucket = |entry: u64| (entry >> (64 - bits)) as usize;
     counts.clear();
     counts.resize(1 << bits, 0);
@@ -663,10 +663,10 @@ fn boundary_order<K: Kernel>(
     sorted_points.clear();
     sorted_points.extend(sorted.iter().map(|&e| points[e as u32 as usize]));
     let near_tie = |w: &[u64]| (w[1] >> 32) - (w[0] >> 32) <= 1;
-    if sorted.windows(2).any(near_tie) {
+    if let Some(first) = sorted.windows(2).position(near_tie) {
         // Every `orient` is on three points of the sample.
         let k = k.within([(lo, hi), (lo, hi)]);
-        if !settle_near_ties(k, o, sorted, sorted_positions, sorted_points) {
+        if !settle_near_ties(k, o, sorted, first, sorted_positions, sorted_points) {
             return false;
         }
     }
@@ -701,7 +701,8 @@ fn angle_key(o: Point, x: Point) -> (u32, f64) {
 }
 
 /// The last step of [`boundary_order`], in place on the sample gathered in key order
-/// (`sorted`, its entries, gives the keys): each run of near-ties (consecutive keys at
+/// (`sorted`, its entries, gives the keys; the first near-tie is at `first`, `first +
+/// 1`): each run of near-ties (consecutive keys at
 /// most one apart) is sorted by insertion with `orient` about `o`, and repeats (equal
 /// points, which have equal keys and end up adjacent) are dropped. Keys two or more
 /// apart are in the exact order ([`angle_key`]), so every point of a run is rightly
@@ -711,6 +712,7 @@ fn settle_near_ties<K: Kernel>(
     k: K,
     o: Point,
     sorted: &[u64],
+    first: usize,
     positions: &mut Vec<u32>,
     points: &mut Vec<Point>,
 ) -> bool {
@@ -718,8 +720,8 @@ fn settle_near_ties<K: Kernel>(
     let before = |a: Point, b: Point| b != o && (a == o || k.orient(o, a, b) == Orientation::Ccw);
     let mut budget = 4 * n + 16;
     let mut repeats = false;
-    let mut start = 0;
-    for end in 1..=n {
+    let mut start = first;
+    for end in first + 1..=n {
         if end < n && (sorted[end] >> 32) - (sorted[end - 1] >> 32) <= 1 {
             continue;
         }
@@ -742,8 +744,8 @@ fn settle_near_ties<K: Kernel>(
         start = end;
     }
     if repeats {
-        let mut len = 1;
-        for i in 1..n {
+        let mut len = first + 1;
+        for i in first + 1..n {
             if points[i] != points[len - 1] {
                 (points[len], positions[len]) = (points[i], positions[i]);
                 len += 1;
