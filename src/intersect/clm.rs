@@ -28,8 +28,10 @@
 //!    and C_Q's tangent vertex on L′), the LP only when the walk gives no answer.
 //!    With [`ClmVariant::sample_walk`] (the default) the LPs of steps 2 and 5 on a
 //!    sample are such walks too: the samples are put in boundary order first
-//!    (`boundary_order`, exact), after an LP on the first 12 points of each
-//!    (intersecting samples usually show there, before any ordering).
+//!    (`boundary_order`: sorted by `f64` angle keys whose order is proved exact when
+//!    they are two or more apart, `orient` only on near-ties), after an LP on the
+//!    first 12 points of each (intersecting samples usually show there, before any
+//!    ordering).
 //!    Order of work: chain walks run two at a time in lockstep, so that their cache
 //!    misses (each step is a dependent load at a random arena position) overlap, and
 //!    each LP runs as soon as the chain it needs is walked (either sample-against-chain
@@ -555,13 +557,13 @@ fn gather(poly: &LinkedPolygon, positions: &[u32], out: &mut Vec<Point>) {
     out.extend(positions.iter().map(|&i| poly.point_at(i as usize)));
 }
 
-/// Scratch memory of [`boundary_order`]: the keys, the bucket counts, the order, and
-/// a second copy of the sample.
+/// Scratch memory of [`boundary_order`]: the keyed entries, the bucket counts, the
+/// entries in key order, and the sorted copy of the sample.
 #[derive(Clone, Debug, Default)]
 struct OrderScratch {
-    keys: Vec<u32>,
+    entries: Vec<u64>,
     counts: Vec<u32>,
-    order: Vec<u32>,
+    sorted: Vec<u64>,
     positions: Vec<u32>,
     points: Vec<Point>,
 }
@@ -574,13 +576,16 @@ struct OrderScratch {
 /// Ccw`, and no two distinct vertices of a strictly convex polygon tie: under an exact
 /// kernel the order is exact.
 ///
-/// The points are first placed by an `f64` pseudo-angle about o into 2r–4r buckets (one
-/// counting pass, O(r)); then an insertion pass with that `orient` sorts within the
-/// buckets and puts right what rounding misplaced, and drops repeats (adjacent in the
-/// exact order). When the angles crowd into few buckets and the pass would need more
-/// than 4r + 16 moves, the keys are sorted in full (32 bits) and the pass runs again.
-/// Returns `false` when that fails too (keys ruined by differences that overflow); the
-/// sample is then unchanged and the caller runs the LP.
+/// Each point gets a 32-bit key, an `f64` pseudo-angle about o scaled by 2³¹
+/// ([`angle_key`]), and keys two or more apart are in the exact order (the error bound
+/// is proved there). So the points are sorted by key alone (key and index in one
+/// `u64`: one counting pass into r–2r buckets by the top bits, then an insertion sort,
+/// which falls back to a full sort after 4r moves when the angles crowd), gathered in
+/// that order, and only the runs of near-ties (consecutive keys at most one apart:
+/// repeats, o's neighbours, angles within about 2⁻³¹) are sorted again with `orient`
+/// ([`settle_near_ties`]), which also drops the repeats. Returns `false` when a
+/// difference overflows (the keys are then unsound) or the near-ties need more than
+/// 4r + 16 moves; the sample is then unchanged and the caller runs the LP.
 fn boundary_order<K: Kernel>(
     k: K,
     positions: &mut Vec<u32>,
@@ -598,56 +603,82 @@ fn boundary_order<K: Kernel>(
         if x.y < o.y || (x.y == o.y && x.x < o.x) {
             o = x;
         }
-        lo.x = lo.x.min(x.x);
-        hi.x = hi.x.max(x.x);
-        hi.y = hi.y.max(x.y);
+        if x.x < lo.x {
+            lo.x = x.x;
+        }
+        if x.x > hi.x {
+            hi.x = x.x;
+        }
+        if x.y > hi.y {
+            hi.y = x.y;
+        }
     }
     lo.y = o.y;
-    // Every `orient` below is on three points of the sample.
-    let k = k.within([(lo, hi), (lo, hi)]);
     let OrderScratch {
-        keys,
+        entries,
         counts,
-        order,
+        sorted,
         positions: sorted_positions,
         points: sorted_points,
     } = scratch;
-    keys.clear();
-    keys.extend(points.iter().map(|x| {
-        let (dx, dy) = (x.x - o.x, x.y - o.y);
-        // In [0, 2], increasing with the angle (NaN for o itself, which `as` maps to 0).
-        let angle = 1.0 - dx / (dx.abs() + dy);
-        (angle * 2_147_483_648.0) as u32
+    // Each point's key above its index; and the largest |dx| + dy (infinite if a
+    // difference overflowed).
+    let mut widest = 0.0f64;
+    entries.clear();
+    entries.extend(points.iter().zip(0u32..).map(|(&x, i)| {
+        let (key, width) = angle_key(o, x);
+        if width > widest {
+            widest = width;
+        }
+        u64::from(key) << 32 | u64::from(i)
     }));
-    // Counting sort on the keys' top bits.
-    let bits = (2 * n).next_power_of_two().trailing_zeros().min(24);
+    if widest == f64::INFINITY {
+        return false;
+    }
+    // Counting sort on the keys' top bits, then insertion sort on the whole entries.
+    let bits = n.next_power_of_two().trailing_zeros().clamp(1, 24);
+    let bucket = |entry: u64| (entry >> (64 - bits)) as usize;
     counts.clear();
-    counts.resize((1 << bits) + 1, 0);
-    let bucket = |key: u32| (u64::from(key) >> (32 - bits)) as usize;
-    for &key in keys.iter() {
-        counts[bucket(key) + 1] += 1;
+    counts.resize(1 << bits, 0);
+    for &entry in entries.iter() {
+        counts[bucket(entry)] += 1;
     }
-    for b in 1..counts.len() {
-        counts[b] += counts[b - 1];
+    let mut sum = 0;
+    for count in counts.iter_mut() {
+        (*count, sum) = (sum, sum + *count);
     }
-    order.clear();
-    order.resize(n, 0);
-    for (i, &key) in keys.iter().enumerate() {
-        let at = &mut counts[bucket(key)];
-        order[*at as usize] = i as u32;
-        *at += 1;
+    sorted.clear();
+    sorted.resize(n, 0);
+    for &entry in entries.iter() {
+        let slot = &mut counts[bucket(entry)];
+        sorted[*slot as usize] = entry;
+        *slot += 1;
     }
-    let mut sorted = |order: &[u32]| {
-        sorted_positions.clear();
-        sorted_positions.extend(order.iter().map(|&i| positions[i as usize]));
-        sorted_points.clear();
-        sorted_points.extend(order.iter().map(|&i| points[i as usize]));
-        insertion_pass(k, o, sorted_positions, sorted_points)
-    };
-    if !sorted(order) {
-        // Crowded buckets: sort by the whole keys.
-        order.sort_unstable_by_key(|&i| keys[i as usize]);
-        if !sorted(order) {
+    let mut moves = 0;
+    for i in 1..n {
+        let entry = sorted[i];
+        let mut j = i;
+        while j > 0 && sorted[j - 1] > entry {
+            sorted[j] = sorted[j - 1];
+            j -= 1;
+        }
+        sorted[j] = entry;
+        moves += i - j;
+        if moves > 4 * n {
+            // Crowded buckets.
+            sorted.sort_unstable();
+            break;
+        }
+    }
+    sorted_positions.clear();
+    sorted_positions.extend(sorted.iter().map(|&e| positions[e as u32 as usize]));
+    sorted_points.clear();
+    sorted_points.extend(sorted.iter().map(|&e| points[e as u32 as usize]));
+    let near_tie = |w: &[u64]| (w[1] >> 32) - (w[0] >> 32) <= 1;
+    if let Some(first) = sorted.windows(2).position(near_tie) {
+        // Every `orient` is on three points of the sample.
+        let k = k.within([(lo, hi), (lo, hi)]);
+        if !settle_near_ties(k, o, sorted, first, sorted_positions, sorted_points) {
             return false;
         }
     }
@@ -656,37 +687,85 @@ fn boundary_order<K: Kernel>(
     true
 }
 
-/// The insertion pass of [`boundary_order`] about its lowest point `o`, in place:
-/// `false` after 4r + 16 moves (the contents are then scrambled).
-fn insertion_pass<K: Kernel>(k: K, o: Point, positions: &mut Vec<u32>, points: &mut Vec<Point>) -> bool {
+/// The key of `x` in [`boundary_order`] about the lowest point `o`, and |dx| + dy as
+/// computed (infinite when a difference overflowed; the key is then unsound).
+///
+/// The key is ⌊2³¹·v⌋ (saturating; 0 for o itself, whose 0/0 is NaN) for the `f64`
+/// value v of the pseudo-angle 1 − dx/(|dx| + dy), (dx, dy) = x − o: exactly, it lies in
+/// [0, 2] and increases strictly with the angle of x − o in [0, π]. **Keys two or more
+/// apart are in the exact order.** Proof: unless |dx| + dy overflows, dx and dy are
+/// computed with relative error at most u = 2⁻⁵³ (exactly when subnormal), then
+/// |dx| + dy (no cancellation: dy ≥ 0) and the quotient t = dx/(|dx| + dy) with relative
+/// error u each (or absolute error 2⁻¹⁰⁷⁵ when subnormal); so the computed t is
+/// t·(1 + δ) with |δ| < 4.1u, within 4.1u of t as |t| ≤ 1, and 1 − t rounds once more
+/// (error ≤ u): the computed v is within 5.2u of the exact one. If key(b) ≥ key(a) + 2,
+/// then with the computed values 2³¹·v(b) ≥ key(b) ≥ key(a) + 2 > 2³¹·v(a) + 1 (the
+/// floor gives key ≤ 2³¹·v < key + 1; saturation at 2³² − 1 lowers only a key that
+/// cannot be the smaller, and v ≥ 0 as |dx| ≤ |dx| + dy survives rounding), so the
+/// exact values differ by more than 2⁻³¹ − 10.4u > 0 and the angle of a is smaller.
+/// o comes before every other point, and its key 0 is the smallest: right as well.
+#[inline]
+fn angle_key(o: Point, x: Point) -> (u32, f64) {
+    let (dx, dy) = (x.x - o.x, x.y - o.y);
+    let width = dx.abs() + dy;
+    let v = 1.0 - dx / width;
+    ((v * 2_147_483_648.0) as u32, width)
+}
+
+/// The last step of [`boundary_order`], in place on the sample gathered in key order
+/// (`sorted`, its entries, gives the keys; the first near-tie is at `first`, `first +
+/// 1`): each run of near-ties (consecutive keys at
+/// most one apart) is sorted by insertion with `orient` about `o`, and repeats (equal
+/// points, which have equal keys and end up adjacent) are dropped. Keys two or more
+/// apart are in the exact order ([`angle_key`]), so every point of a run is rightly
+/// placed against every point outside it. `false` after 4r + 16 moves (the contents
+/// are then scrambled).
+fn settle_near_ties<K: Kernel>(
+    k: K,
+    o: Point,
+    sorted: &[u64],
+    first: usize,
+    positions: &mut Vec<u32>,
+    points: &mut Vec<Point>,
+) -> bool {
     let n = points.len();
     let before = |a: Point, b: Point| b != o && (a == o || k.orient(o, a, b) == Orientation::Ccw);
     let mut budget = 4 * n + 16;
-    // points[..len] holds the points kept so far, in order; len ≤ i.
-    let mut len = 0;
-    for i in 0..n {
-        let (x, at) = (points[i], positions[i]);
-        let mut j = len;
-        while j > 0 && before(x, points[j - 1]) {
-            if budget == 0 {
-                return false;
-            }
-            budget -= 1;
-            points[j] = points[j - 1];
-            positions[j] = positions[j - 1];
-            j -= 1;
-        }
-        if j > 0 && points[j - 1] == x {
-            // A repeat: close the gap again.
-            points.copy_within(j + 1..=len, j);
-            positions.copy_within(j + 1..=len, j);
+    let mut repeats = false;
+    let mut start = first;
+    for end in first + 1..=n {
+        if end < n && (sorted[end] >> 32) - (sorted[end - 1] >> 32) <= 1 {
             continue;
         }
-        (points[j], positions[j]) = (x, at);
-        len += 1;
+        // The run start..end.
+        for i in start + 1..end {
+            let (x, at) = (points[i], positions[i]);
+            let mut j = i;
+            while j > start && before(x, points[j - 1]) {
+                if budget == 0 {
+                    return false;
+                }
+                budget -= 1;
+                points[j] = points[j - 1];
+                positions[j] = positions[j - 1];
+                j -= 1;
+            }
+            (points[j], positions[j]) = (x, at);
+            repeats |= j > start && points[j - 1] == x;
+        }
+        start = end;
     }
-    points.truncate(len);
-    positions.truncate(len);
+    if repeats {
+        let mut len = first + 1;
+        for i in first + 1..n {
+            if points[i] != points[len - 1] {
+                (points[len], positions[len]) = (points[i], positions[i]);
+                len += 1;
+            }
+        }
+        points.truncate(len);
+        positions.truncate(len);
+    }
     true
 }
 
