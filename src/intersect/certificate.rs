@@ -1246,6 +1246,36 @@ pub(crate) fn in_triangles<K: Kernel>(
     })
 }
 
+/// Among `points`, the one left of the directed line `line` and the one right of it
+/// whose directions from `x` lie nearest the line's (`x` on the line, the points
+/// beyond it seen from x): one orientation for the side, one against the best so far.
+/// Points on the line are skipped. Used by [`cone_witness`] twice: through x from a
+/// point of the other set, and from x through an end of the cone.
+fn nearest_beside<K: Kernel>(
+    k: K,
+    x: Point,
+    line: (Point, Point),
+    points: impl Iterator<Item = WitnessPoint>,
+) -> (Option<WitnessPoint>, Option<WitnessPoint>) {
+    let (mut u, mut v): (Option<WitnessPoint>, Option<WitnessPoint>) = (None, None);
+    for w in points {
+        match k.orient(line.0, line.1, w.point) {
+            Ccw => {
+                if u.is_none_or(|u| k.orient(x, u.point, w.point) == Cw) {
+                    u = Some(w);
+                }
+            }
+            Cw => {
+                if v.is_none_or(|v| k.orient(x, v.point, w.point) == Ccw) {
+                    v = Some(w);
+                }
+            }
+            Collinear => {}
+        }
+    }
+    (u, v)
+}
+
 /// A vertex inside from the points an LP examined before it found their hulls
 /// intersecting ([`LpWorkspace::examined`](crate::lp::LpWorkspace::examined)), without
 /// building a hull: `x` is the point that made the LP infeasible (the last examined),
@@ -1313,22 +1343,7 @@ pub(crate) fn cone_witness<K: Kernel, I: Iterator<Item = WitnessPoint>>(
     let Some(r) = others.next() else {
         return Cone::Nothing;
     };
-    let (mut u, mut v): (Option<WitnessPoint>, Option<WitnessPoint>) = (None, None);
-    for w in others {
-        match k.orient(r.point, x.point, w.point) {
-            Ccw => {
-                if u.is_none_or(|u| k.orient(x.point, u.point, w.point) == Cw) {
-                    u = Some(w);
-                }
-            }
-            Cw => {
-                if v.is_none_or(|v| k.orient(x.point, v.point, w.point) == Ccw) {
-                    v = Some(w);
-                }
-            }
-            Collinear => {}
-        }
-    }
+    let (u, v) = nearest_beside(k, x.point, (r.point, x.point), others);
     // r, u, v counter-clockwise: v on the right of r → x, u on its left.
     if let (Some(u), Some(v)) = (u, v)
         && k.orient(r.point, v.point, u.point) == Ccw
@@ -1350,25 +1365,8 @@ pub(crate) fn cone_witness<K: Kernel, I: Iterator<Item = WitnessPoint>>(
     // direction on its left (u) and on its right (v) span a segment that meets the
     // ray inside that hull; it crosses the side when that meeting is before e.
     for e in [hi, lo] {
-        let (mut u, mut v): (Option<WitnessPoint>, Option<WitnessPoint>) = (None, None);
-        for w in examined() {
-            if w.in_b == own {
-                continue;
-            }
-            match k.orient(x.point, e.point, w.point) {
-                Ccw => {
-                    if u.is_none_or(|u| k.orient(x.point, u.point, w.point) == Cw) {
-                        u = Some(w);
-                    }
-                }
-                Cw => {
-                    if v.is_none_or(|v| k.orient(x.point, v.point, w.point) == Ccw) {
-                        v = Some(w);
-                    }
-                }
-                Collinear => {}
-            }
-        }
+        let others = examined().filter(|w| w.in_b != own);
+        let (u, v) = nearest_beside(k, x.point, (x.point, e.point), others);
         if let (Some(u), Some(v)) = (u, v)
             && segment_contact(k, x.point, e.point, u.point, v.point) == SegmentContact::Crossing
         {

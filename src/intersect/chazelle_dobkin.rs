@@ -464,21 +464,20 @@ impl<'a> Chain<'a> {
     /// The array index of the position after the one at array index `idx`.
     #[inline]
     fn step(&self, idx: usize) -> usize {
-        let len = self.pts.len();
-        if self.forward {
-            if idx + 1 >= len { 0 } else { idx + 1 }
-        } else if idx == 0 {
-            len - 1
-        } else {
-            idx - 1
-        }
+        self.array_step(idx, self.forward)
     }
 
     /// The array index of the position before the one at array index `idx`.
     #[inline]
     fn step_back(&self, idx: usize) -> usize {
+        self.array_step(idx, !self.forward)
+    }
+
+    /// The array index next to `idx`, cyclically: the following one if `up`.
+    #[inline]
+    fn array_step(&self, idx: usize, up: bool) -> usize {
         let len = self.pts.len();
-        if !self.forward {
+        if up {
             if idx + 1 >= len { 0 } else { idx + 1 }
         } else if idx == 0 {
             len - 1
