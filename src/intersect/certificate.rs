@@ -1615,6 +1615,15 @@ pub(crate) fn resolve_linked_chords<K: Kernel>(
 mod tests {
     use super::*;
 
+    /// A witness point at (x, y) of polygon `of`, at arena position `pos`.
+    fn w(x: f64, y: f64, of: Which, pos: usize) -> WitnessVertex {
+        WitnessVertex {
+            point: Point::new(x, y),
+            of,
+            pos: Some(pos),
+        }
+    }
+
     fn poly(pts: &[[f64; 2]]) -> ConvexPolygon {
         ConvexPolygon::new(pts.iter().copied()).unwrap()
     }
@@ -1872,11 +1881,6 @@ mod tests {
     /// inside), repeats, and crossing segments with no vertex inside.
     #[test]
     fn witness_points_give_a_vertex_inside_or_chords() {
-        let w = |x: f64, y: f64, of: Which, pos: usize| WitnessVertex {
-            point: Point::new(x, y),
-            of,
-            pos: Some(pos),
-        };
         let (p, q) = (Which::P, Which::Q);
         // A point of P on an edge of Q's triangle (touching), repeated.
         let pts = [
@@ -1944,11 +1948,6 @@ mod tests {
 
     #[test]
     fn last_step_witnesses_give_a_vertex_inside_or_chords() {
-        let w = |x: f64, y: f64, of: Which, pos: usize| WitnessVertex {
-            point: Point::new(x, y),
-            of,
-            pos: Some(pos),
-        };
         let (p, q) = (Which::P, Which::Q);
         let tri = [w(0., 0., q, 0), w(4., 0., q, 1), w(0., 4., q, 2)];
         // x on the triangle's edge (touching): a vertex inside.

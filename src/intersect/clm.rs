@@ -1593,14 +1593,7 @@ mod tests {
     fn last_step_witnesses_verify_on_touching_one_ulp_and_extreme_pairs() {
         let mut rng = SmallRng::seed_from_u64(0x57d1);
         let mut ws = ClmWorkspace::default();
-        let families = [
-            Family::SharedVertex,
-            Family::VertexOnEdge,
-            Family::SharedEdge,
-            Family::OverlappingEdges,
-            Family::OneUlpGap,
-            Family::Nested,
-        ];
+        let families: Vec<Family> = Family::TOUCHING.iter().copied().chain([Family::Nested]).collect();
         let (mut straddles, mut mixed, mut checked) = (0, 0, 0);
         for i in 0..240 {
             let family = families[i % families.len()];
