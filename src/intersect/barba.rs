@@ -463,7 +463,20 @@ impl Mode for Derive {
         _: bool,
         exit: impl FnOnce() -> Exit,
     ) -> Derivation {
-        derivation::<K, V>(k, pv, qv, exit())
+        // A vertex inside is its own certificate, built where the run ends (each call
+        // site's exit is a known variant, so this match folds away there); the other
+        // exits go out of line.
+        match exit() {
+            Exit::PInside(i) => Derivation::Certified(Certificate::VertexInside {
+                of: Which::P,
+                point: pv[i],
+            }),
+            Exit::QInside(j) => Derivation::Certified(Certificate::VertexInside {
+                of: Which::Q,
+                point: qv[j],
+            }),
+            other => derivation::<K, V>(k, pv, qv, other),
+        }
     }
 }
 
