@@ -118,12 +118,13 @@
 //! remaining pieces.
 
 use super::certificate::{
-    extreme_left, resolve_chords, resolve_crossing_chords, resolve_crossing_chords_known, same_direction,
-    separates, turn_gt,
+    Reduced, crossing, endpoint_on_other, extreme_left, reduce_chord, resolve_chords,
+    resolve_crossing_chords, same_direction, separates, turn_gt,
 };
 use super::{ArrayIntersection, Certificate, Derivation, Linear, Probe, Which};
 use crate::kernel::{
-    Kernel, Orientation, Point, ShortEdges, line_meet_side, point_on_segment, segments_intersect,
+    Kernel, Orientation, Point, SegmentContact, ShortEdges, line_meet_side, point_on_segment,
+    segments_intersect,
 };
 use crate::polygon::ConvexPolygon;
 
@@ -475,6 +476,7 @@ impl Mode for Derive {
                 of: Which::Q,
                 point: qv[j],
             }),
+            Exit::Segment { pr, qs, table } => segment_derivation(k, pv, pr, qv, qs, table),
             other => derivation::<K, V>(k, pv, qv, other),
         }
     }
@@ -1054,9 +1056,10 @@ fn small_witness<K: Kernel>(
 /// T_P meets the segment Q' (a chord of Q), as its orientation table shows: a vertex of
 /// T_P on the segment (a vertex of P in Q), an end of the segment in T_P (a vertex of Q
 /// in P), or else an edge of T_P (a chord of P) crossing the segment properly, resolved
-/// by [`resolve_crossing_chords_known`] (one search within P', then one within Q' if
-/// needed) starting from the table's orientations: which end of the segment lies
-/// beyond the chord, and the chord's start against the segment's line.
+/// by [`reduce_chord`] (one search within P', then one within Q' if needed) starting
+/// from the table's orientations: which end of the segment lies beyond the chord, and
+/// the chord's start against the segment's line. The steps of
+/// [`resolve_chords`] that the table already decides are not taken.
 fn segment_witness<K: Kernel>(
     k: K,
     pv: &[Point],
@@ -1065,14 +1068,17 @@ fn segment_witness<K: Kernel>(
     small: SmallQ,
     SegmentTable { o, w }: SegmentTable,
 ) -> Option<Certificate> {
-    let t = pr.triangle(pv.len());
-    let tp = t.map(|i| pv[i]);
-    let (qi, _) = small.indices(qv.len());
-    let qp = [qv[qi[0]], qv[qi[1]]];
-    if let Some(a) = (0..3).find(|&a| o[a] == Collinear && point_on_segment(k, qp[0], qp[1], tp[a])) {
+    let (n, m) = (pv.len(), qv.len());
+    let t = pr.triangle(n);
+    let r = small.range;
+    let (c, d) = (r.idx(m, 0), r.idx(m, r.len - 1));
+    let qp = [qv[c], qv[d]];
+    if o.contains(&Collinear)
+        && let Some(a) = (0..3).find(|&a| o[a] == Collinear && point_on_segment(k, qp[0], qp[1], pv[t[a]]))
+    {
         return Some(Certificate::VertexInside {
             of: Which::P,
-            point: tp[a],
+            point: pv[t[a]],
         });
     }
     if let Some(j) = (0..2).find(|&j| w[j].iter().all(|&x| x != Cw)) {
@@ -1090,7 +1096,62 @@ fn segment_witness<K: Kernel>(
     // or left of it for P''s closing chord, given reversed (0 → 2).
     let beyond = if (ca, cb) == (a, (a + 1) % 3) { Cw } else { Ccw };
     let near = if w[0][a] == beyond { qp[0] } else { qp[1] };
-    resolve_crossing_chords_known(k, pv, (t[ca], t[cb]), qv, (qi[0], qi[1]), (near, o[ca]))
+    // P's chord reduced to an edge (one search within P', from the table's orientations;
+    // none when the chord is an edge of P), then, if that edge crosses the segment and
+    // the segment is a chord of Q (not its edge Q[d] → Q[c]), Q's chord reduced against
+    // it from the orientations P's search found.
+    let (i, j) = (t[ca], t[cb]);
+    let next = |x: usize| if x + 1 == n { 0 } else { x + 1 };
+    let edge = if next(i) == j {
+        Some(i)
+    } else if next(j) == i {
+        Some(j)
+    } else {
+        None
+    };
+    let (e, contact, known_q) = if let Some(e) = edge {
+        (e, SegmentContact::Crossing, None)
+    } else {
+        match reduce_chord(k, pv, (i, j), (qp[0], qp[1]), Some((near, o[ca]))) {
+            Reduced::Edge(e, contact, next) => (e, contact, next),
+            Reduced::Inside(x) => {
+                return Some(Certificate::VertexInside {
+                    of: Which::Q,
+                    point: x,
+                });
+            }
+            Reduced::Fail => return None,
+        }
+    };
+    if r.len == m {
+        // Q' was all of Q: the segment is Q's edge from Q[d] to Q[c].
+        return Some(crossing(pv, e, qv, d));
+    }
+    let (u, v) = (pv[e], pv[next(e)]);
+    if contact != SegmentContact::Crossing {
+        return endpoint_on_other(k, (u, v), (qp[0], qp[1]));
+    }
+    match reduce_chord(k, qv, (c, d), (u, v), known_q) {
+        Reduced::Edge(f, ..) => Some(crossing(pv, e, qv, f)),
+        Reduced::Inside(x) => Some(Certificate::VertexInside {
+            of: Which::P,
+            point: x,
+        }),
+        Reduced::Fail => None,
+    }
+}
+
+/// The certified call's result for a segment exit ([`segment_witness`]), out of line.
+#[inline(never)]
+fn segment_derivation<K: Kernel>(
+    k: K,
+    pv: &[Point],
+    pr: Range,
+    qv: &[Point],
+    small: SmallQ,
+    table: SegmentTable,
+) -> Derivation {
+    segment_witness(k, pv, pr, qv, small, table).map_or(Derivation::Answer(true), Derivation::Certified)
 }
 
 /// A separating edge for the whole polygons from a run's final separation of the

@@ -719,7 +719,7 @@ fn edge_between(n: usize, i: usize, j: usize) -> Option<usize> {
 }
 
 /// What [`reduce_chord`] found.
-enum Reduced {
+pub(crate) enum Reduced {
     /// The edge starting at this index meets the segment, as classified; for a
     /// crossing, also what starts the reduction of the segment (if a chord) against
     /// the edge: the edge's end strictly right of the segment, and the side of the
@@ -748,7 +748,7 @@ enum Reduced {
 ///
 /// `known`, when the caller has them: the segment's end strictly right of the chord
 /// `av[i]` → `av[j]` and the side of `av[i]` against the line s → t.
-fn reduce_chord<K: Kernel>(
+pub(crate) fn reduce_chord<K: Kernel>(
     k: K,
     av: &[Point],
     (i, j): (usize, usize),
@@ -783,7 +783,14 @@ fn reduce_chord<K: Kernel>(
     if len >= 2 && k.orient(a, m, near) != Cw && k.orient(m, b, near) != Cw {
         return Reduced::Inside(near);
     }
-    let (lo, o_next) = crossing_edge(k, &line, &at, len, sigma);
+    // The search probes offsets 1 to len − 1 only: where they do not pass the array's
+    // end, it reads them from a slice, with no wrap-around test per probe.
+    let (lo, o_next) = if i + len <= n {
+        let chain = &av[i..i + len];
+        crossing_edge(k, &line, &|off: usize| chain[off], len, sigma)
+    } else {
+        crossing_edge(k, &line, &at, len, sigma)
+    };
     let e = if i + lo >= n { i + lo - n } else { i + lo };
     let (u, v) = (av[e], at(lo + 1));
     // u is strictly on a's side of the line; v strictly on the other (the edge crosses
@@ -836,7 +843,11 @@ fn crossing_edge<K: Kernel>(
 
 /// An endpoint of one segment on the other segment, as a vertex-inside certificate: the
 /// segment `pv[i]`–`pv[j]` lies in P and `qv[c]`–`qv[d]` in Q (chords or edges).
-fn endpoint_on_other<K: Kernel>(k: K, (a, b): (Point, Point), (s, t): (Point, Point)) -> Option<Certificate> {
+pub(crate) fn endpoint_on_other<K: Kernel>(
+    k: K,
+    (a, b): (Point, Point),
+    (s, t): (Point, Point),
+) -> Option<Certificate> {
     for x in [s, t] {
         if point_on_segment(k, a, b, x) {
             return Some(Certificate::VertexInside {
@@ -901,22 +912,6 @@ pub(crate) fn resolve_crossing_chords<K: Kernel>(
     resolve_crossing(k, pv, (i, j), qv, (c, d), None)
 }
 
-/// [`resolve_crossing_chords`] for a caller that also has the orientations that start
-/// the reduction of P's chord: `near`, the end of Q's segment strictly right of the
-/// chord `pv[i]` → `pv[j]`, and `sigma`, the side of `pv[i]` against the line
-/// `qv[c]` → `qv[d]`. The reduction of Q's chord then starts from the orientations
-/// P's found (none recomputed either).
-pub(crate) fn resolve_crossing_chords_known<K: Kernel>(
-    k: K,
-    pv: &[Point],
-    (i, j): (usize, usize),
-    qv: &[Point],
-    (c, d): (usize, usize),
-    (near, sigma): (Point, Orientation),
-) -> Option<Certificate> {
-    resolve_crossing(k, pv, (i, j), qv, (c, d), Some((near, sigma)))
-}
-
 #[inline]
 fn resolve_crossing<K: Kernel>(
     k: K,
@@ -959,7 +954,7 @@ fn resolve_crossing<K: Kernel>(
 }
 
 #[inline]
-fn crossing(pv: &[Point], e: usize, qv: &[Point], f: usize) -> Certificate {
+pub(crate) fn crossing(pv: &[Point], e: usize, qv: &[Point], f: usize) -> Certificate {
     Certificate::CrossingEdges {
         p: [pv[e], pv[(e + 1) % pv.len()]],
         q: [qv[f], qv[(f + 1) % qv.len()]],
