@@ -1112,7 +1112,7 @@ fn segment_witness<K: Kernel>(
     let (e, contact, known_q) = if let Some(e) = edge {
         (e, SegmentContact::Crossing, None)
     } else {
-        match reduce_chord(k, pv, (i, j), (qp[0], qp[1]), Some((near, o[ca]))) {
+        match reduce_chord(k, pv, (i, j), (qp[0], qp[1]), Some((near, o[ca])), 2) {
             Reduced::Edge(e, contact, next) => (e, contact, next),
             Reduced::Inside(x) => {
                 return Some(Certificate::VertexInside {
@@ -1131,7 +1131,7 @@ fn segment_witness<K: Kernel>(
     if contact != SegmentContact::Crossing {
         return endpoint_on_other(k, (u, v), (qp[0], qp[1]));
     }
-    match reduce_chord(k, qv, (c, d), (u, v), known_q) {
+    match reduce_chord(k, qv, (c, d), (u, v), known_q, 2) {
         Reduced::Edge(f, ..) => Some(crossing(pv, e, qv, f)),
         Reduced::Inside(x) => Some(Certificate::VertexInside {
             of: Which::P,
@@ -1380,14 +1380,15 @@ mod tests {
     /// ones, one-ulp gaps and nested pairs included), at ordinary scale and scaled by
     /// 2^600 and 2^-600 (exact: powers of two): whatever the run ends on, its certificate
     /// exists and verifies, in particular where T_P meets a segment Q' (the orientation
-    /// table and the proper crossing resolved without a second contact test).
+    /// table and the proper crossing resolved without a second contact test), and where
+    /// that segment is Q's own edge (Q' was all of Q: no search in Q).
     #[test]
     fn meeting_exits_give_certificates() {
         use crate::generate::{self, Family, Relation, map_pair};
         use crate::intersect::verify;
         use rand::SeedableRng;
         let mut rng = rand::rngs::SmallRng::seed_from_u64(0x5e9);
-        let (mut segments, mut crossings) = (0, 0);
+        let (mut segments, mut crossings, mut q_edges) = (0, 0, 0);
         for &family in Family::ALL {
             for log2 in [3, 6, 9] {
                 for _ in 0..12 {
@@ -1406,11 +1407,15 @@ mod tests {
                         let k = Exact.within([p.bounding_box(), q.bounding_box()]);
                         let exit = run::<_, (), Record, Ours>(k, pv, qv, &mut ());
                         let segment = matches!(exit, Exit::Segment { .. });
+                        // The segment is Q's own edge Q[d] → Q[c] when Q' was all of Q.
+                        let q_edge = matches!(exit, Exit::Segment { qs, .. } if qs.range.len == qv.len());
                         let c = meet_certificate(k, pv, qv, exit)
                             .unwrap_or_else(|| panic!("{family:?} 2^{log2} ×{scale}: {exit:?} gave none"));
                         assert_eq!(verify(&p, &q, &c), Ok(()), "{family:?} 2^{log2} ×{scale}: {c:?}");
                         segments += usize::from(segment);
-                        crossings += usize::from(segment && matches!(c, Certificate::CrossingEdges { .. }));
+                        let crossed = segment && matches!(c, Certificate::CrossingEdges { .. });
+                        crossings += usize::from(crossed);
+                        q_edges += usize::from(q_edge && !matches!(c, Certificate::VertexInside { .. }));
                         let certified = Barba.certified(&p, &q);
                         assert_eq!(verify(&p, &q, &certified), Ok(()), "{family:?}: {certified:?}");
                     }
@@ -1418,8 +1423,8 @@ mod tests {
             }
         }
         assert!(
-            segments > 0 && crossings > 0,
-            "{segments} segment exits, {crossings} crossings"
+            segments > 0 && crossings > 0 && q_edges > 0,
+            "{segments} segment exits, {crossings} crossings, {q_edges} edge pairs on Q's edge"
         );
     }
 

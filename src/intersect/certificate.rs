@@ -741,7 +741,9 @@ pub(crate) enum Reduced {
 /// Y of some edge. On the line, the segment [X, Y] lies in the polygon. If the segment
 /// st does not reach Y, its endpoint on the chain's side lies strictly between X and Y.
 /// That endpoint is first tested against the triangle of the chord and the chain's
-/// middle vertex (two orientations): inside it, it is inside the polygon.
+/// middle vertex (two orientations): inside it, it is inside the polygon; outside, it lies
+/// beyond one of the triangle's two edges on the chain's side, and with `levels` ≥ 2 the
+/// test repeats on that part of the chain, up to `levels` triangles.
 ///
 /// The search ([`crossing_edge`]) ends at an edge whose ends are known on either side of
 /// the line, so its contact with the segment takes two orientations more.
@@ -754,6 +756,7 @@ pub(crate) fn reduce_chord<K: Kernel>(
     (i, j): (usize, usize),
     (s, t): (Point, Point),
     known: Option<(Point, Orientation)>,
+    levels: usize,
 ) -> Reduced {
     let n = av.len();
     let (a, b) = (av[i], av[j]);
@@ -779,9 +782,24 @@ pub(crate) fn reduce_chord<K: Kernel>(
     // The triangle of the chord and the chain's middle vertex lies in the polygon, and
     // `near` is strictly on its side of the chord: two orientations often show it
     // inside (a short segment crossing a long chord), without the search.
-    let m = at(len / 2);
-    if len >= 2 && k.orient(a, m, near) != Cw && k.orient(m, b, near) != Cw {
-        return Reduced::Inside(near);
+    // `near` in the triangle of a sub-chord of the chain and its middle vertex lies in
+    // the polygon; else it lies beyond one of the triangle's two chain-side edges, and
+    // the test repeats on that part of the chain (two orientations per level, at most
+    // `levels` levels).
+    let (mut lo, mut hi, mut x, mut y) = (0, len, a, b);
+    for _ in 0..levels {
+        if hi - lo < 2 {
+            break;
+        }
+        let h = lo + (hi - lo) / 2;
+        let z = at(h);
+        if k.orient(x, z, near) == Cw {
+            (hi, y) = (h, z);
+        } else if k.orient(z, y, near) == Cw {
+            (lo, x) = (h, z);
+        } else {
+            return Reduced::Inside(near);
+        }
     }
     // The search probes offsets 1 to len − 1 only: where they do not pass the array's
     // end, it reads them from a slice, with no wrap-around test per probe.
@@ -925,7 +943,7 @@ fn resolve_crossing<K: Kernel>(
     let q_edge = edge_between(qv.len(), c, d);
     let (e, contact, known_q) = match edge_between(pv.len(), i, j) {
         Some(e) => (e, SegmentContact::Crossing, None),
-        None => match reduce_chord(k, pv, (i, j), (s, t), known) {
+        None => match reduce_chord(k, pv, (i, j), (s, t), known, 1) {
             Reduced::Edge(e, contact, next) => (e, contact, next),
             Reduced::Inside(x) => {
                 return Some(Certificate::VertexInside {
@@ -943,7 +961,7 @@ fn resolve_crossing<K: Kernel>(
     if contact != SegmentContact::Crossing {
         return endpoint_on_other(k, (u, v), (s, t));
     }
-    match reduce_chord(k, qv, (c, d), (u, v), known_q) {
+    match reduce_chord(k, qv, (c, d), (u, v), known_q, 1) {
         Reduced::Edge(f, ..) => Some(crossing(pv, e, qv, f)),
         Reduced::Inside(x) => Some(Certificate::VertexInside {
             of: Which::P,
@@ -1718,6 +1736,72 @@ mod tests {
             verify_linked(&lp, &lr, &outside),
             Err(CertificateError::Outside { .. })
         ));
+    }
+
+    /// `reduce_chord`'s triangle tests on concrete points (a 10-gon with integer
+    /// coordinates, the chord from (8, 0) to (−8, 0) over the top, the segment's other end
+    /// at (0, −1)): an end in the second level's triangle (0, 2, 4) but not the first's
+    /// (0, 4, 8) is found inside by two levels; one on that triangle's edge (boundary
+    /// included) too; one an ulp outside that edge, still in the polygon, and one an ulp
+    /// outside the polygon go to the search, which finds the end inside or an edge that
+    /// meets the segment. One level gives the same kind of answer for each. At scales 1,
+    /// 2^600 and 2^-600 (exact).
+    #[test]
+    fn chord_reduction_tests_two_levels_of_triangles() {
+        let base = [
+            (8., 0.),
+            (8., 3.),
+            (7., 5.),
+            (5., 7.),
+            (0., 8.),
+            (-5., 7.),
+            (-7., 5.),
+            (-8., 3.),
+            (-8., 0.),
+            (0., -4.),
+        ];
+        let far = (0., -1.);
+        // Each end, and whether it lies in the polygon.
+        let ends = [
+            ((6., 5.), true),
+            ((7.5, 2.5), true),
+            ((f64::from_bits(7.5f64.to_bits() + 1), 2.5), true),
+            ((f64::from_bits(8f64.to_bits() + 1), 1.), false),
+        ];
+        for scale in [1.0, 2f64.powi(600), 2f64.powi(-600)] {
+            let pt = |(x, y): (f64, f64)| Point::new(x * scale, y * scale);
+            let pv: Vec<Point> = base.iter().map(|&v| pt(v)).collect();
+            let n = pv.len();
+            let inside = |x: Point| (0..n).all(|i| Exact.orient(pv[i], pv[(i + 1) % n], x) != Cw);
+            for (k, &(near, in_p)) in ends.iter().enumerate() {
+                let (s, t) = (pt(far), pt(near));
+                for levels in [1, 2] {
+                    match reduce_chord(Exact, &pv, (0, 8), (s, t), None, levels) {
+                        Reduced::Inside(x) => {
+                            assert!(in_p && x == t && inside(x), "×{scale} {near:?} {levels}");
+                        }
+                        Reduced::Edge(e, contact, _) => {
+                            assert!(!in_p && contact.meets(), "×{scale} {near:?} {levels}");
+                            assert!(
+                                segment_contact(Exact, pv[e], pv[(e + 1) % n], s, t).meets(),
+                                "×{scale} {near:?} {levels}: edge {e}"
+                            );
+                        }
+                        Reduced::Fail => panic!("×{scale} {near:?} {levels}: failed"),
+                    }
+                }
+                // Where the triangles put each end: the first level's misses all of
+                // them; the second level's, (0, 2, 4), holds the first two only.
+                let in_triangle = |a: usize, b: usize, c: usize| {
+                    [(a, b), (b, c), (c, a)]
+                        .iter()
+                        .all(|&(u, v)| Exact.orient(pv[u], pv[v], t) != Cw)
+                };
+                assert!(!in_triangle(0, 4, 8), "×{scale} {near:?}");
+                assert_eq!(in_triangle(0, 2, 4), k < 2, "×{scale} {near:?}");
+                assert_eq!(inside(t), in_p, "×{scale} {near:?}");
+            }
+        }
     }
 
     /// The chain search finds the crossing edge a scan finds, on every family's polygons
