@@ -1112,7 +1112,7 @@ fn segment_witness<K: Kernel>(
     let (e, contact, known_q) = if let Some(e) = edge {
         (e, SegmentContact::Crossing, None)
     } else {
-        match reduce_chord(k, pv, (i, j), (qp[0], qp[1]), Some((near, o[ca])), 2) {
+        match reduce_chord(k, pv, (i, j), (qp[0], qp[1]), Some((near, o[ca]))) {
             Reduced::Edge(e, contact, next) => (e, contact, next),
             Reduced::Inside(x) => {
                 return Some(Certificate::VertexInside {
@@ -1131,7 +1131,7 @@ fn segment_witness<K: Kernel>(
     if contact != SegmentContact::Crossing {
         return endpoint_on_other(k, (u, v), (qp[0], qp[1]));
     }
-    match reduce_chord(k, qv, (c, d), (u, v), known_q, 2) {
+    match reduce_chord(k, qv, (c, d), (u, v), known_q) {
         Reduced::Edge(f, ..) => Some(crossing(pv, e, qv, f)),
         Reduced::Inside(x) => Some(Certificate::VertexInside {
             of: Which::P,

@@ -741,9 +741,7 @@ pub(crate) enum Reduced {
 /// Y of some edge. On the line, the segment [X, Y] lies in the polygon. If the segment
 /// st does not reach Y, its endpoint on the chain's side lies strictly between X and Y.
 /// That endpoint is first tested against the triangle of the chord and the chain's
-/// middle vertex (two orientations): inside it, it is inside the polygon; outside, it lies
-/// beyond one of the triangle's two edges on the chain's side, and with `levels` ≥ 2 the
-/// test repeats on that part of the chain, up to `levels` triangles.
+/// middle vertex (two orientations): inside it, it is inside the polygon.
 ///
 /// The search ([`crossing_edge`]) ends at an edge whose ends are known on either side of
 /// the line, so its contact with the segment takes two orientations more.
@@ -756,7 +754,6 @@ pub(crate) fn reduce_chord<K: Kernel>(
     (i, j): (usize, usize),
     (s, t): (Point, Point),
     known: Option<(Point, Orientation)>,
-    levels: usize,
 ) -> Reduced {
     let n = av.len();
     let (a, b) = (av[i], av[j]);
@@ -782,24 +779,9 @@ pub(crate) fn reduce_chord<K: Kernel>(
     // The triangle of the chord and the chain's middle vertex lies in the polygon, and
     // `near` is strictly on its side of the chord: two orientations often show it
     // inside (a short segment crossing a long chord), without the search.
-    // `near` in the triangle of a sub-chord of the chain and its middle vertex lies in
-    // the polygon; else it lies beyond one of the triangle's two chain-side edges, and
-    // the test repeats on that part of the chain (two orientations per level, at most
-    // `levels` levels).
-    let (mut lo, mut hi, mut x, mut y) = (0, len, a, b);
-    for _ in 0..levels {
-        if hi - lo < 2 {
-            break;
-        }
-        let h = lo + (hi - lo) / 2;
-        let z = at(h);
-        if k.orient(x, z, near) == Cw {
-            (hi, y) = (h, z);
-        } else if k.orient(z, y, near) == Cw {
-            (lo, x) = (h, z);
-        } else {
-            return Reduced::Inside(near);
-        }
+    let m = at(len / 2);
+    if len >= 2 && k.orient(a, m, near) != Cw && k.orient(m, b, near) != Cw {
+        return Reduced::Inside(near);
     }
     // The search probes offsets 1 to len − 1 only: where they do not pass the array's
     // end, it reads them from a slice, with no wrap-around test per probe.
@@ -943,7 +925,7 @@ fn resolve_crossing<K: Kernel>(
     let q_edge = edge_between(qv.len(), c, d);
     let (e, contact, known_q) = match edge_between(pv.len(), i, j) {
         Some(e) => (e, SegmentContact::Crossing, None),
-        None => match reduce_chord(k, pv, (i, j), (s, t), known, 1) {
+        None => match reduce_chord(k, pv, (i, j), (s, t), known) {
             Reduced::Edge(e, contact, next) => (e, contact, next),
             Reduced::Inside(x) => {
                 return Some(Certificate::VertexInside {
@@ -961,7 +943,7 @@ fn resolve_crossing<K: Kernel>(
     if contact != SegmentContact::Crossing {
         return endpoint_on_other(k, (u, v), (s, t));
     }
-    match reduce_chord(k, qv, (c, d), (u, v), known_q, 1) {
+    match reduce_chord(k, qv, (c, d), (u, v), known_q) {
         Reduced::Edge(f, ..) => Some(crossing(pv, e, qv, f)),
         Reduced::Inside(x) => Some(Certificate::VertexInside {
             of: Which::P,
@@ -1738,16 +1720,14 @@ mod tests {
         ));
     }
 
-    /// `reduce_chord`'s triangle tests on concrete points (a 10-gon with integer
-    /// coordinates, the chord from (8, 0) to (−8, 0) over the top, the segment's other end
-    /// at (0, −1)): an end in the second level's triangle (0, 2, 4) but not the first's
-    /// (0, 4, 8) is found inside by two levels; one on that triangle's edge (boundary
-    /// included) too; one an ulp outside that edge, still in the polygon, and one an ulp
-    /// outside the polygon go to the search, which finds the end inside or an edge that
-    /// meets the segment. One level gives the same kind of answer for each. At scales 1,
-    /// 2^600 and 2^-600 (exact).
+    /// `reduce_chord` where its triangle test misses, on concrete points (a 10-gon with
+    /// integer coordinates, the chord from (8, 0) to (−8, 0) over the top, the segment's
+    /// other end at (0, −1)): ends outside the triangle (0, 4, 8) but in the polygon, one
+    /// of them on the chord from vertex 0 to vertex 2 and one an ulp beyond that chord,
+    /// are found inside by the search; an end an ulp outside the polygon gives an edge
+    /// that meets the segment. At scales 1, 2^600 and 2^-600 (exact).
     #[test]
-    fn chord_reduction_tests_two_levels_of_triangles() {
+    fn chord_reduction_past_the_triangle_test() {
         let base = [
             (8., 0.),
             (8., 3.),
@@ -1775,23 +1755,21 @@ mod tests {
             let inside = |x: Point| (0..n).all(|i| Exact.orient(pv[i], pv[(i + 1) % n], x) != Cw);
             for (k, &(near, in_p)) in ends.iter().enumerate() {
                 let (s, t) = (pt(far), pt(near));
-                for levels in [1, 2] {
-                    match reduce_chord(Exact, &pv, (0, 8), (s, t), None, levels) {
-                        Reduced::Inside(x) => {
-                            assert!(in_p && x == t && inside(x), "×{scale} {near:?} {levels}");
-                        }
-                        Reduced::Edge(e, contact, _) => {
-                            assert!(!in_p && contact.meets(), "×{scale} {near:?} {levels}");
-                            assert!(
-                                segment_contact(Exact, pv[e], pv[(e + 1) % n], s, t).meets(),
-                                "×{scale} {near:?} {levels}: edge {e}"
-                            );
-                        }
-                        Reduced::Fail => panic!("×{scale} {near:?} {levels}: failed"),
+                match reduce_chord(Exact, &pv, (0, 8), (s, t), None) {
+                    Reduced::Inside(x) => {
+                        assert!(in_p && x == t && inside(x), "×{scale} {near:?}");
                     }
+                    Reduced::Edge(e, contact, _) => {
+                        assert!(!in_p && contact.meets(), "×{scale} {near:?}");
+                        assert!(
+                            segment_contact(Exact, pv[e], pv[(e + 1) % n], s, t).meets(),
+                            "×{scale} {near:?}: edge {e}"
+                        );
+                    }
+                    Reduced::Fail => panic!("×{scale} {near:?}: failed"),
                 }
-                // Where the triangles put each end: the first level's misses all of
-                // them; the second level's, (0, 2, 4), holds the first two only.
+                // The triangle test misses every end; the triangle (0, 2, 4) holds the
+                // first two only (the second on its edge), the third is an ulp beyond it.
                 let in_triangle = |a: usize, b: usize, c: usize| {
                     [(a, b), (b, c), (c, a)]
                         .iter()
