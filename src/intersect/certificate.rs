@@ -1142,7 +1142,13 @@ pub(crate) fn straddle_certificate<K: Kernel>(
 ) -> Radon {
     debug_assert!(x0.of == x.of && tri.iter().all(|w| w.of != x.of));
     let [b, c, y0] = tri.map(|w| w.point);
-    let turn = k.orient(b, c, y0);
+    // y₀ is often b or c: collinear without the kernel (whose exact path a zero
+    // determinant takes).
+    let turn = if y0 == b || y0 == c {
+        Collinear
+    } else {
+        k.orient(b, c, y0)
+    };
     if turn == Collinear {
         // y₀ is b or c (it bounded the step): the segments x x₀ and b c meet.
         if y0 != b && y0 != c {
@@ -1232,6 +1238,11 @@ pub(crate) fn in_triangles<K: Kernel>(
             return None;
         }
         let [a, b, c] = t.map(|w| w.point);
+        // A repeated vertex (often: the LP's bound is its previous tangent point) makes
+        // the triangle degenerate, seen without the kernel's exact path for a zero.
+        if a == b || b == c || c == a {
+            return None;
+        }
         let outside = match k.orient(a, b, c) {
             Collinear => return None,
             turn => turn.reverse(),
@@ -1322,7 +1333,8 @@ pub(crate) fn cone_witness<K: Kernel, I: Iterator<Item = WitnessPoint>>(
         return Cone::Nothing;
     };
     let (l, h) = (lo.point, hi.point);
-    if k.orient(x.point, l, h) == Ccw
+    if l != h
+        && k.orient(x.point, l, h) == Ccw
         && let Some(w) = examined().find(|w| {
             w.in_b != own
                 && k.orient(x.point, l, w.point) != Cw
@@ -1563,10 +1575,11 @@ pub(crate) fn resolve_linked_chords<K: Kernel>(
     if contact != SegmentContact::Crossing {
         return endpoint_on_other(k, (a, b), (s, t));
     }
-    let e = match p_edge {
-        Some(e) => e,
+    // P's edge meeting Q's chord, and how they meet (the walk has classified it).
+    let (e, edge_contact) = match p_edge {
+        Some(e) => (e, contact),
         None => match reduce_linked(k, p, a1, p_starts, (s, t)) {
-            Reduced::Edge(e, ..) => e,
+            Reduced::Edge(e, contact, _) => (e, contact),
             Reduced::Inside(x) => {
                 return Some(Certificate::VertexInside {
                     of: Which::Q,
@@ -1578,14 +1591,12 @@ pub(crate) fn resolve_linked_chords<K: Kernel>(
     };
     let [u, v] = edge_points(p, e);
     if let Some(f) = q_edge {
-        return segment_contact(k, u, v, s, t)
-            .meets()
-            .then(|| Certificate::CrossingEdges {
-                p: [u, v],
-                q: edge_points(q, f),
-            });
+        return edge_contact.meets().then(|| Certificate::CrossingEdges {
+            p: [u, v],
+            q: edge_points(q, f),
+        });
     }
-    match segment_contact(k, u, v, s, t) {
+    match edge_contact {
         SegmentContact::Crossing => {}
         SegmentContact::Disjoint => return None,
         _ => return endpoint_on_other(k, (u, v), (s, t)),
@@ -1997,6 +2008,22 @@ mod tests {
             in_triangles(Exact, w(3. * tiny, 2. * tiny, q, 9), &[line, tri]),
             None
         );
+        // A repeated vertex (the LP's bound equal to its previous tangent point) is
+        // skipped by comparing points, even for y at that vertex; the next triangle
+        // still counts, here with y one ulp inside its hypotenuse's end.
+        let repeated = [w(0., 0., p, 0), w(4. * tiny, 0., p, 1), w(4. * tiny, 0., p, 1)];
+        assert_eq!(in_triangles(Exact, w(4. * tiny, 0., q, 9), &[repeated]), None);
+        assert_eq!(
+            in_triangles(Exact, w(3. * tiny, tiny, q, 9), &[repeated, tri]),
+            Some(Certificate::VertexInside {
+                of: Which::Q,
+                point: Point::new(3. * tiny, tiny)
+            })
+        );
+        assert_eq!(
+            in_triangles(Exact, w(3. * tiny, 2. * tiny, q, 9), &[repeated, tri]),
+            None
+        );
     }
 
     #[test]
@@ -2067,6 +2094,18 @@ mod tests {
             }
             _ => panic!("no crossing segments"),
         }
+        // x's own set seen as one point (repeated): no cone, and B's point on the segment
+        // from x to it is not taken for inside; x itself in B's triangle still is.
+        let single = [a(2.0, 0.0, 0), a(2.0, 0.0, 1)];
+        let run1 = |others: &[WitnessPoint]| {
+            let pts: Vec<WitnessPoint> = single.iter().chain(others).chain([&x]).copied().collect();
+            cone_witness(Exact, x, || pts.clone().into_iter(), of, false)
+        };
+        assert!(matches!(run1(&[b(1.0, 1.0, 0), b(5.0, 5.0, 1)]), Cone::Nothing));
+        assert_eq!(
+            inside(run1(&[b(-1.0, 1.9, 0), b(1.0, 1.9, 1), b(0.0, 3.0, 2)])),
+            Some((Which::P, Point::new(0.0, 2.0)))
+        );
     }
 
     /// An end of an edge crossing a chord in the triangle of the chord and the farthest

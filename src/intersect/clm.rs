@@ -480,7 +480,7 @@ fn certify<K: Kernel>(
         }
         // The points the LP examined (which hold most of its witness): those of the
         // other set than the violating point in the cone it sees its own set in.
-        if let Some(&x) = ws.lp.witness_points().first() {
+        if let Some(x) = ws.lp.witness_points().next() {
             match cone_witness(
                 k,
                 x,
@@ -504,7 +504,7 @@ fn certify<K: Kernel>(
         // whole witness.
         let (pc, qc) = match chords {
             Some(c) => c,
-            None => match witness_certificate(k, ws.lp.witness_points().iter().map(|&w| vertex(w))) {
+            None => match witness_certificate(k, ws.lp.witness_points().map(vertex)) {
                 Radon::Inside(c) => return Some(c),
                 Radon::Chords(pc, qc) => (pc, qc),
                 Radon::Nothing => return None,

@@ -206,17 +206,21 @@ impl LpWorkspace {
     /// other direction; or a point shared by both sets; or the points of both sets on a
     /// final line whose intervals overlap.
     pub fn witness(&self) -> impl Iterator<Item = WitnessPoint> + '_ {
-        let w = &self.witness.points[..self.witness.len];
+        let w = &self.witness.items[..self.witness.len];
         w.iter()
             .enumerate()
-            .filter(|&(i, x)| !w[..i].iter().any(|y| y.in_b == x.in_b && y.point == x.point))
-            .map(|(_, &x)| x)
+            .filter(|&(i, x)| {
+                !w[..i]
+                    .iter()
+                    .any(|y| y.enc & B_BIT == x.enc & B_BIT && y.p == x.p)
+            })
+            .map(|(i, _)| self.witness.point(i))
     }
 
     /// The points of [`witness`](Self::witness) as recorded, repeats included (at most
     /// nine, in the same order): for callers that drop repeats themselves.
-    pub fn witness_points(&self) -> &[WitnessPoint] {
-        &self.witness.points[..self.witness.len]
+    pub fn witness_points(&self) -> impl ExactSizeIterator<Item = WitnessPoint> + '_ {
+        (0..self.witness.len).map(|i| self.witness.point(i))
     }
 
     /// After an answer [`Separation::Intersecting`] (recorded) found where the point p
@@ -233,10 +237,10 @@ impl LpWorkspace {
     /// bounds needs the previous optimum's points: [`witness`](Self::witness)).
     pub fn straddle(&self) -> Option<[WitnessPoint; 5]> {
         let w = &self.witness;
-        if w.len != WITNESS || w.points[0].index.is_none() {
+        if w.len != WITNESS || !w.indexed {
             return None;
         }
-        let [p, b, c, _, _, a0, b0, _, _] = w.points;
+        let [p, b, c, _, _, a0, b0, _, _] = w.items.map(WitnessPoint::of);
         // The same point twice is a point of both sets or a blocked one: not this case.
         let straddles = b.in_b == c.in_b && b.in_b != p.in_b && b.index != c.index;
         straddles.then_some(if p.in_b {
@@ -256,10 +260,10 @@ impl LpWorkspace {
     /// to [`witness`](Self::witness)). `None` for every other witness.
     pub fn mixed(&self) -> Option<[WitnessPoint; 5]> {
         let w = &self.witness;
-        if w.len != WITNESS || w.points[0].index.is_none() {
+        if w.len != WITNESS || !w.indexed {
             return None;
         }
-        let [p, b, c, ta, tb, a0, b0, _, _] = w.points;
+        let [p, b, c, ta, tb, a0, b0, _, _] = w.items.map(WitnessPoint::of);
         if b.in_b == c.in_b {
             return None;
         }
@@ -286,8 +290,11 @@ impl LpWorkspace {
 /// [`LpWorkspace::examined`] report it.
 #[derive(Clone, Debug)]
 struct Witness {
-    points: [WitnessPoint; WITNESS],
+    /// The points as the LP holds them (decoded only when read: recording is a copy).
+    items: [Item; WITNESS],
     len: usize,
+    /// Whether the items' indices are known (not for points collected on a final line).
+    indexed: bool,
     /// How many leading items the incremental loop had examined (0 if another step
     /// found the intersection).
     examined: usize,
@@ -295,24 +302,32 @@ struct Witness {
 
 impl Default for Witness {
     fn default() -> Self {
-        let none = WitnessPoint {
-            point: Point::default(),
-            in_b: false,
-            index: None,
-        };
         Witness {
-            points: [none; WITNESS],
+            items: [Item::default(); WITNESS],
             len: 0,
+            indexed: false,
             examined: 0,
         }
     }
 }
 
 impl Witness {
-    fn set(&mut self, points: &[WitnessPoint], examined: usize) {
-        self.len = points.len().min(WITNESS);
-        self.points[..self.len].copy_from_slice(&points[..self.len]);
+    fn set(&mut self, items: &[Item], indexed: bool, examined: usize) {
+        self.len = items.len().min(WITNESS);
+        self.items[..self.len].copy_from_slice(&items[..self.len]);
+        self.indexed = indexed;
         self.examined = examined;
+    }
+
+    /// The `i`-th recorded point.
+    #[inline]
+    fn point(&self, i: usize) -> WitnessPoint {
+        let w = WitnessPoint::of(self.items[i]);
+        if self.indexed {
+            w
+        } else {
+            WitnessPoint { index: None, ..w }
+        }
     }
 }
 
@@ -642,7 +657,7 @@ fn solve<K: Kernel, R: Rng + ?Sized, S: Load, const RECORD: bool>(
     let (a0, b0) = (src.load(&mut items[s_a0]), src.load(&mut items[s_b0]));
     if a0 == b0 {
         if RECORD {
-            witness.set(&[WitnessPoint::of(items[s_a0]), WitnessPoint::of(items[s_b0])], 0);
+            witness.set(&[items[s_a0], items[s_b0]], true, 0);
         }
         return Some(Separation::Intersecting);
     }
@@ -886,7 +901,7 @@ fn incremental<K: Kernel, S: Load, const RECORD: bool>(
                     let (a, b) = (item(ta), item(tb));
                     let frame = [item((0, a0)), item((B_BIT, b0)), al, br];
                     let points = [items[t], q, q2, a, b, frame[0], frame[1], frame[2], frame[3]];
-                    witness.set(&points.map(WitnessPoint::of), t + 1);
+                    witness.set(&points, true, t + 1);
                 }
                 return StepOut::Infeasible;
             }
@@ -1142,18 +1157,10 @@ fn certify<K: Kernel, const RECORD: bool>(
     let overlap = k.dot(s, e, a_min, b_max) != Sign::Negative && k.dot(s, e, b_min, a_max) != Sign::Negative;
     Some(if overlap {
         if RECORD {
-            let on = |point, in_b| WitnessPoint {
-                point,
-                in_b,
-                index: None,
-            };
+            let on = |p, enc| Item { p, enc, loaded: true };
             witness.set(
-                &[
-                    on(a_min, false),
-                    on(a_max, false),
-                    on(b_min, true),
-                    on(b_max, true),
-                ],
+                &[on(a_min, 0), on(a_max, 0), on(b_min, B_BIT), on(b_max, B_BIT)],
+                false,
                 0,
             );
         }
