@@ -453,14 +453,14 @@ fn certify<K: Kernel>(
         // The LP's witness; else a vertex inside among the points it examined; else its
         // two crossing chords, resolved by walks from the nearest sample or chain vertex.
         let (a, b) = ws.trace.meet?;
-        let (a_pos, b_pos) = (set(a).0, set(b).0);
-        let vertex = |w: WitnessPoint| {
-            let (s, positions) = if w.in_b { (b, b_pos) } else { (a, a_pos) };
-            WitnessVertex {
-                point: w.point,
-                of: s.of(),
-                pos: w.index.map(|i| positions[i] as usize),
-            }
+        // The sets are one of each polygon. Witness points keep their index in their
+        // set until a pair of chords needs the arena positions (most queries end
+        // before, with a vertex inside).
+        let (a_of, b_of) = (a.of(), b.of());
+        let vertex = |w: WitnessPoint| WitnessVertex {
+            point: w.point,
+            of: if w.in_b { b_of } else { a_of },
+            pos: w.index,
         };
         // The LP's last step: its violating point beyond a chord of the other set (five
         // points, no hull to build: a vertex inside or two chords), or a mixed pair of
@@ -485,12 +485,12 @@ fn certify<K: Kernel>(
                 k,
                 x,
                 || ws.lp.examined(),
-                |in_b| if in_b { b.of() } else { a.of() },
+                |in_b| if in_b { b_of } else { a_of },
                 chords.is_none(),
             ) {
                 Cone::Inside(c) => return Some(c),
                 Cone::Chords(own, other) => {
-                    let (own, other) = (own.map(|w| vertex(w).pos), other.map(|w| vertex(w).pos));
+                    let (own, other) = (own.map(|w| w.index), other.map(|w| w.index));
                     chords = Some(if vertex(x).of == Which::P {
                         (own, other)
                     } else {
@@ -510,13 +510,22 @@ fn certify<K: Kernel>(
                 Radon::Nothing => return None,
             },
         };
+        let (p_set, q_set) = if a_of == Which::P { (a, b) } else { (b, a) };
         let starts = |s: Set| (set(s).0, points(s));
-        let (p_starts, q_starts) = if a.of() == Which::P {
-            (starts(a), starts(b))
-        } else {
-            (starts(b), starts(a))
+        // A chord's ends from indices in its set to arena positions.
+        let ends = |s: Set, [i, j]: [Option<usize>; 2]| {
+            let positions = set(s).0;
+            Some((positions[i?] as usize, positions[j?] as usize))
         };
-        return resolve_linked_chords(k, p, (pc[0]?, pc[1]?), p_starts, q, (qc[0]?, qc[1]?), q_starts);
+        return resolve_linked_chords(
+            k,
+            p,
+            ends(p_set, pc)?,
+            starts(p_set),
+            q,
+            ends(q_set, qc)?,
+            starts(q_set),
+        );
     }
     // The lines whose tangent vertices are extreme in the whole polygons separate them.
     ws.trace.lines.iter().rev().find_map(|&(t, a, b)| {

@@ -240,14 +240,12 @@ impl LpWorkspace {
         if w.len != WITNESS || !w.indexed {
             return None;
         }
-        let [p, b, c, _, _, a0, b0, _, _] = w.items.map(WitnessPoint::of);
+        let [p, b, c] = [w.items[0], w.items[1], w.items[2]];
+        let in_b = |it: Item| it.enc & B_BIT != 0;
         // The same point twice is a point of both sets or a blocked one: not this case.
-        let straddles = b.in_b == c.in_b && b.in_b != p.in_b && b.index != c.index;
-        straddles.then_some(if p.in_b {
-            [p, b0, b, c, a0]
-        } else {
-            [p, a0, b, c, b0]
-        })
+        let straddles = in_b(b) == in_b(c) && in_b(b) != in_b(p) && b.enc != c.enc;
+        let (p0, q0) = if in_b(p) { (6, 5) } else { (5, 6) };
+        straddles.then(|| [p, w.items[p0], b, c, w.items[q0]].map(WitnessPoint::of))
     }
 
     /// After an answer [`Separation::Intersecting`] (recorded) found where the point p
@@ -263,16 +261,15 @@ impl LpWorkspace {
         if w.len != WITNESS || !w.indexed {
             return None;
         }
-        let [p, b, c, ta, tb, a0, b0, _, _] = w.items.map(WitnessPoint::of);
-        if b.in_b == c.in_b {
+        let [p, b, c] = [w.items[0], w.items[1], w.items[2]];
+        let in_b = |it: Item| it.enc & B_BIT != 0;
+        if in_b(b) == in_b(c) {
             return None;
         }
-        let (y, x) = if b.in_b == p.in_b { (c, b) } else { (b, c) };
-        Some(if p.in_b {
-            [y, p, x, tb, b0]
-        } else {
-            [y, p, x, ta, a0]
-        })
+        let (y, x) = if in_b(b) == in_b(p) { (c, b) } else { (b, c) };
+        // The previous optimum's tangent point and the frame point of p's set.
+        let (t, p0) = if in_b(p) { (4, 6) } else { (3, 5) };
+        Some([y, p, x, w.items[t], w.items[p0]].map(WitnessPoint::of))
     }
 
     /// After an answer [`Separation::Intersecting`] found by the incremental loop: every
