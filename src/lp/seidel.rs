@@ -217,6 +217,15 @@ impl LpWorkspace {
             .map(|(i, _)| self.witness.point(i))
     }
 
+    /// Drops the recorded witness: [`witness_points`](Self::witness_points) and
+    /// [`examined`](Self::examined) are empty until the next recorded answer
+    /// [`Separation::Intersecting`]. For a caller that learned of intersecting hulls
+    /// elsewhere (a walk along convex chains) and must not read an older LP's witness.
+    pub fn forget_witness(&mut self) {
+        self.witness.len = 0;
+        self.witness.examined = 0;
+    }
+
     /// The points of [`witness`](Self::witness) as recorded, repeats included (at most
     /// nine, in the same order): for callers that drop repeats themselves.
     pub fn witness_points(&self) -> impl ExactSizeIterator<Item = WitnessPoint> + '_ {
