@@ -905,9 +905,13 @@ fn incremental<K: Kernel, S: Load, const RECORD: bool>(
                 if RECORD {
                     let item = |(enc, p)| Item { p, enc, loaded: true };
                     let (a, b) = (item(ta), item(tb));
-                    let frame = [item((0, a0)), item((B_BIT, b0)), al, br];
-                    let points = [items[t], q, q2, a, b, frame[0], frame[1], frame[2], frame[3]];
-                    witness.set(&points, true, t + 1);
+                    // Written in place: the whole witness.
+                    *witness = Witness {
+                        items: [items[t], q, q2, a, b, item((0, a0)), item((B_BIT, b0)), al, br],
+                        len: WITNESS,
+                        indexed: true,
+                        examined: t + 1,
+                    };
                 }
                 return StepOut::Infeasible;
             }
