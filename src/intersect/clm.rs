@@ -90,6 +90,14 @@
 //!   after a few dozen points); an end of the edge it finds usually lies in the
 //!   triangle of Q's chord and Q's sample vertex farthest from it on that side (a
 //!   vertex inside, no second walk), else Q's chord is resolved by a walk too.
+//!   Where a walk along two ordered sets ([`separate_chains`]) found their hulls
+//!   meeting, no LP ran and there is no LP witness: both sets list the vertices of
+//!   strictly convex polygons (a sample in boundary order, a chain in walk order), so
+//!   Barba's certified search on the two (O(log r)) gives a vertex of one inside the
+//!   other or two crossing edges, which are chords, resolved as above (the LP is
+//!   rerun only for sets of fewer than three points). So the certified query draws
+//!   the plain one's samples, except after an LP rerun for a witness (such small sets,
+//!   or a meet found by the chain-against-chain walk).
 //! * Otherwise (an inconsistent kernel) only the answer, completed on the walked arrays.
 //!
 //! # Complexity
@@ -454,7 +462,7 @@ fn certify<K: Kernel>(
         // The LP's witness; else a vertex inside among the points it examined; else its
         // two crossing chords, resolved by walks from the nearest sample or chain vertex.
         let (a, b) = ws.trace.meet?;
-        if ws.lp.witness_points().len() == 0 {
+        if ws.lp.witness_points().is_empty() {
             // The chain walk found the sets' hulls intersecting (`walk_or_lp`): both are
             // in boundary order, so they are convex polygons.
             return convex_sets_certificate(k, (p, q), (a, b), set, points);
@@ -486,7 +494,7 @@ fn certify<K: Kernel>(
         }
         // The points the LP examined (which hold most of its witness): those of the
         // other set than the violating point in the cone it sees its own set in.
-        if let Some(x) = ws.lp.witness_points().next() {
+        if let Some(&x) = ws.lp.witness_points().first() {
             match cone_witness(
                 k,
                 x,
@@ -510,7 +518,7 @@ fn certify<K: Kernel>(
         // whole witness.
         let (pc, qc) = match chords {
             Some(c) => c,
-            None => match witness_certificate(k, ws.lp.witness_points().map(vertex)) {
+            None => match witness_certificate(k, ws.lp.witness_points().iter().map(|&w| vertex(w))) {
                 Radon::Inside(c) => return Some(c),
                 Radon::Chords(pc, qc) => (pc, qc),
                 Radon::Nothing => return None,
@@ -1737,7 +1745,7 @@ mod tests {
                 };
                 assert!(c.intersects(), "{family} #{i}: {c:?}");
                 assert_eq!(verify_linked(&lp, &lq, &c), Ok(()), "{family} #{i}");
-                walked += usize::from(ws.lp.witness_points().len() == 0);
+                walked += usize::from(ws.lp.witness_points().is_empty());
                 checked += 1;
             }
         }

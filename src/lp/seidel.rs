@@ -206,15 +206,11 @@ impl LpWorkspace {
     /// other direction; or a point shared by both sets; or the points of both sets on a
     /// final line whose intervals overlap.
     pub fn witness(&self) -> impl Iterator<Item = WitnessPoint> + '_ {
-        let w = &self.witness.items[..self.witness.len];
+        let w = &self.witness.points[..self.witness.len];
         w.iter()
             .enumerate()
-            .filter(|&(i, x)| {
-                !w[..i]
-                    .iter()
-                    .any(|y| y.enc & B_BIT == x.enc & B_BIT && y.p == x.p)
-            })
-            .map(|(i, _)| self.witness.point(i))
+            .filter(|&(i, x)| !w[..i].iter().any(|y| y.in_b == x.in_b && y.point == x.point))
+            .map(|(_, &x)| x)
     }
 
     /// Drops the recorded witness: [`witness_points`](Self::witness_points) and
@@ -228,8 +224,8 @@ impl LpWorkspace {
 
     /// The points of [`witness`](Self::witness) as recorded, repeats included (at most
     /// nine, in the same order): for callers that drop repeats themselves.
-    pub fn witness_points(&self) -> impl ExactSizeIterator<Item = WitnessPoint> + '_ {
-        (0..self.witness.len).map(|i| self.witness.point(i))
+    pub fn witness_points(&self) -> &[WitnessPoint] {
+        &self.witness.points[..self.witness.len]
     }
 
     /// After an answer [`Separation::Intersecting`] (recorded) found where the point p
@@ -246,15 +242,17 @@ impl LpWorkspace {
     /// bounds needs the previous optimum's points: [`witness`](Self::witness)).
     pub fn straddle(&self) -> Option<[WitnessPoint; 5]> {
         let w = &self.witness;
-        if w.len != WITNESS || !w.indexed {
+        if w.len != WITNESS || w.points[0].index.is_none() {
             return None;
         }
-        let [p, b, c] = [w.items[0], w.items[1], w.items[2]];
-        let in_b = |it: Item| it.enc & B_BIT != 0;
+        let [p, b, c, _, _, a0, b0, _, _] = w.points;
         // The same point twice is a point of both sets or a blocked one: not this case.
-        let straddles = in_b(b) == in_b(c) && in_b(b) != in_b(p) && b.enc != c.enc;
-        let (p0, q0) = if in_b(p) { (6, 5) } else { (5, 6) };
-        straddles.then(|| [p, w.items[p0], b, c, w.items[q0]].map(WitnessPoint::of))
+        let straddles = b.in_b == c.in_b && b.in_b != p.in_b && b.index != c.index;
+        straddles.then_some(if p.in_b {
+            [p, b0, b, c, a0]
+        } else {
+            [p, a0, b, c, b0]
+        })
     }
 
     /// After an answer [`Separation::Intersecting`] (recorded) found where the point p
@@ -267,18 +265,19 @@ impl LpWorkspace {
     /// to [`witness`](Self::witness)). `None` for every other witness.
     pub fn mixed(&self) -> Option<[WitnessPoint; 5]> {
         let w = &self.witness;
-        if w.len != WITNESS || !w.indexed {
+        if w.len != WITNESS || w.points[0].index.is_none() {
             return None;
         }
-        let [p, b, c] = [w.items[0], w.items[1], w.items[2]];
-        let in_b = |it: Item| it.enc & B_BIT != 0;
-        if in_b(b) == in_b(c) {
+        let [p, b, c, ta, tb, a0, b0, _, _] = w.points;
+        if b.in_b == c.in_b {
             return None;
         }
-        let (y, x) = if in_b(b) == in_b(p) { (c, b) } else { (b, c) };
-        // The previous optimum's tangent point and the frame point of p's set.
-        let (t, p0) = if in_b(p) { (4, 6) } else { (3, 5) };
-        Some([y, p, x, w.items[t], w.items[p0]].map(WitnessPoint::of))
+        let (y, x) = if b.in_b == p.in_b { (c, b) } else { (b, c) };
+        Some(if p.in_b {
+            [y, p, x, tb, b0]
+        } else {
+            [y, p, x, ta, a0]
+        })
     }
 
     /// After an answer [`Separation::Intersecting`] found by the incremental loop: every
@@ -296,11 +295,8 @@ impl LpWorkspace {
 /// [`LpWorkspace::examined`] report it.
 #[derive(Clone, Debug)]
 struct Witness {
-    /// The points as the LP holds them (decoded only when read: recording is a copy).
-    items: [Item; WITNESS],
+    points: [WitnessPoint; WITNESS],
     len: usize,
-    /// Whether the items' indices are known (not for points collected on a final line).
-    indexed: bool,
     /// How many leading items the incremental loop had examined (0 if another step
     /// found the intersection).
     examined: usize,
@@ -308,32 +304,24 @@ struct Witness {
 
 impl Default for Witness {
     fn default() -> Self {
+        let none = WitnessPoint {
+            point: Point::default(),
+            in_b: false,
+            index: None,
+        };
         Witness {
-            items: [Item::default(); WITNESS],
+            points: [none; WITNESS],
             len: 0,
-            indexed: false,
             examined: 0,
         }
     }
 }
 
 impl Witness {
-    fn set(&mut self, items: &[Item], indexed: bool, examined: usize) {
-        self.len = items.len().min(WITNESS);
-        self.items[..self.len].copy_from_slice(&items[..self.len]);
-        self.indexed = indexed;
+    fn set(&mut self, points: &[WitnessPoint], examined: usize) {
+        self.len = points.len().min(WITNESS);
+        self.points[..self.len].copy_from_slice(&points[..self.len]);
         self.examined = examined;
-    }
-
-    /// The `i`-th recorded point.
-    #[inline]
-    fn point(&self, i: usize) -> WitnessPoint {
-        let w = WitnessPoint::of(self.items[i]);
-        if self.indexed {
-            w
-        } else {
-            WitnessPoint { index: None, ..w }
-        }
     }
 }
 
@@ -663,7 +651,7 @@ fn solve<K: Kernel, R: Rng + ?Sized, S: Load, const RECORD: bool>(
     let (a0, b0) = (src.load(&mut items[s_a0]), src.load(&mut items[s_b0]));
     if a0 == b0 {
         if RECORD {
-            witness.set(&[items[s_a0], items[s_b0]], true, 0);
+            witness.set(&[WitnessPoint::of(items[s_a0]), WitnessPoint::of(items[s_b0])], 0);
         }
         return Some(Separation::Intersecting);
     }
@@ -905,11 +893,12 @@ fn incremental<K: Kernel, S: Load, const RECORD: bool>(
                 if RECORD {
                     let item = |(enc, p)| Item { p, enc, loaded: true };
                     let (a, b) = (item(ta), item(tb));
+                    let frame = [item((0, a0)), item((B_BIT, b0)), al, br];
+                    let points = [items[t], q, q2, a, b, frame[0], frame[1], frame[2], frame[3]];
                     // Written in place: the whole witness.
                     *witness = Witness {
-                        items: [items[t], q, q2, a, b, item((0, a0)), item((B_BIT, b0)), al, br],
+                        points: points.map(WitnessPoint::of),
                         len: WITNESS,
-                        indexed: true,
                         examined: t + 1,
                     };
                 }
@@ -1167,10 +1156,18 @@ fn certify<K: Kernel, const RECORD: bool>(
     let overlap = k.dot(s, e, a_min, b_max) != Sign::Negative && k.dot(s, e, b_min, a_max) != Sign::Negative;
     Some(if overlap {
         if RECORD {
-            let on = |p, enc| Item { p, enc, loaded: true };
+            let on = |point, in_b| WitnessPoint {
+                point,
+                in_b,
+                index: None,
+            };
             witness.set(
-                &[on(a_min, 0), on(a_max, 0), on(b_min, B_BIT), on(b_max, B_BIT)],
-                false,
+                &[
+                    on(a_min, false),
+                    on(a_max, false),
+                    on(b_min, true),
+                    on(b_max, true),
+                ],
                 0,
             );
         }
