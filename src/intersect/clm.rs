@@ -562,6 +562,7 @@ fn certify<K: Kernel>(
 /// polygons, resolved along them as the LP's chords are. `None` for sets of fewer than
 /// three points (the caller reran the LP for those) or if the search gives no witness
 /// (only an inconsistent kernel).
+#[inline(never)]
 fn convex_sets_certificate<'a, K: Kernel>(
     k: K,
     (p, q): (&LinkedPolygon, &LinkedPolygon),
@@ -995,11 +996,15 @@ fn walk_or_lp<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         // A certified query reruns the LP for its witness only where the sets are too
         // small to be convex polygons; otherwise the certificate is searched on the two
         // convex polygons the sets are (`certify`), and no LP witness is left to read.
-        Some(Separation::Intersecting) if CERT && (a_points.len() < 3 || b_points.len() < 3) => {}
-        Some(result) => {
-            if CERT && result == Separation::Intersecting {
+        Some(Separation::Intersecting) if CERT => {
+            if a_points.len() >= 3 && b_points.len() >= 3 {
                 lp.forget_witness();
+                let result = Separation::Intersecting;
+                probe.lp_call(a, b, lp.work - before, &Ok(result));
+                return Ok(result);
             }
+        }
+        Some(result) => {
             probe.lp_call(a, b, lp.work - before, &Ok(result));
             return Ok(result);
         }
