@@ -996,14 +996,13 @@ fn walk_or_lp<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         // A certified query reruns the LP for its witness only where the sets are too
         // small to be convex polygons; otherwise the certificate is searched on the two
         // convex polygons the sets are (`certify`), and no LP witness is left to read.
-        Some(Separation::Intersecting) if CERT => {
-            if a_points.len() >= 3 && b_points.len() >= 3 {
-                lp.forget_witness();
-                let result = Separation::Intersecting;
-                probe.lp_call(a, b, lp.work - before, &Ok(result));
-                return Ok(result);
-            }
+        Some(Separation::Intersecting) if CERT && a_points.len() >= 3 && b_points.len() >= 3 => {
+            lp.forget_witness();
+            let result = Separation::Intersecting;
+            probe.lp_call(a, b, lp.work - before, &Ok(result));
+            return Ok(result);
         }
+        Some(Separation::Intersecting) if CERT => {}
         Some(result) => {
             probe.lp_call(a, b, lp.work - before, &Ok(result));
             return Ok(result);
