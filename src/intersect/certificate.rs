@@ -1137,7 +1137,13 @@ pub(crate) fn straddle_certificate<K: Kernel>(
 ) -> Radon {
     debug_assert!(x0.of == x.of && tri.iter().all(|w| w.of != x.of));
     let [b, c, y0] = tri.map(|w| w.point);
-    let turn = k.orient(b, c, y0);
+    // y₀ is often b or c: collinear without the kernel (whose exact path a zero
+    // determinant takes).
+    let turn = if y0 == b || y0 == c {
+        Collinear
+    } else {
+        k.orient(b, c, y0)
+    };
     if turn == Collinear {
         // y₀ is b or c (it bounded the step): the segments x x₀ and b c meet.
         if y0 != b && y0 != c {
@@ -1227,6 +1233,11 @@ pub(crate) fn in_triangles<K: Kernel>(
             return None;
         }
         let [a, b, c] = t.map(|w| w.point);
+        // A repeated vertex (often: the LP's bound is its previous tangent point) makes
+        // the triangle degenerate, seen without the kernel's exact path for a zero.
+        if a == b || b == c || c == a {
+            return None;
+        }
         let outside = match k.orient(a, b, c) {
             Collinear => return None,
             turn => turn.reverse(),
@@ -1317,7 +1328,8 @@ pub(crate) fn cone_witness<K: Kernel, I: Iterator<Item = WitnessPoint>>(
         return Cone::Nothing;
     };
     let (l, h) = (lo.point, hi.point);
-    if k.orient(x.point, l, h) == Ccw
+    if l != h
+        && k.orient(x.point, l, h) == Ccw
         && let Some(w) = examined().find(|w| {
             w.in_b != own
                 && k.orient(x.point, l, w.point) != Cw
@@ -1490,22 +1502,36 @@ fn reduce_linked<K: Kernel>(
 }
 
 /// An end of the edge `u`–`v` (which crosses the chord `s`–`t` of the other polygon)
-/// in the triangle of s, t and the vertex of `points` (the other polygon's) farthest
-/// from the chord's line on that end's side: then that end is a vertex inside. The
-/// farthest vertex is chosen by distances computed in `f64` (a guide), the triangle
-/// tested exactly (three orientations per end). `None` when neither end is found
-/// inside that way.
+/// in the triangle of s, t and a vertex of `points` (the other polygon's) far from the
+/// chord's line on that end's side: then that end is a vertex inside. The edge's ends
+/// lie within an edge's length of the chord, so the farthest of about 16 of the points
+/// (every ⌈len/16⌉-th: spread over a sample in any order) nearly always serves; else
+/// the farthest of all. `None` when neither end is found inside that way.
 fn end_in_triangle<K: Kernel>(
+    k: K,
+    edge: (Point, Point),
+    chord: (Point, Point),
+    points: &[Point],
+) -> Option<Point> {
+    let stride = (points.len() / 16).max(1);
+    end_in_triangle_of(k, edge, chord, points.iter().step_by(stride).copied())
+        .or_else(|| (stride > 1).then(|| end_in_triangle_of(k, edge, chord, points.iter().copied()))?)
+}
+
+/// [`end_in_triangle`] with the farthest of `points` on each side: chosen by
+/// distances computed in `f64` (a guide), the triangle tested exactly (three
+/// orientations per end).
+fn end_in_triangle_of<K: Kernel>(
     k: K,
     (u, v): (Point, Point),
     (s, t): (Point, Point),
-    points: &[Point],
+    points: impl Iterator<Item = Point>,
 ) -> Option<Point> {
     let (dx, dy) = (t.x - s.x, t.y - s.y);
     let height = |x: Point| dx * (x.y - s.y) - dy * (x.x - s.x);
     // The farthest on the left (positive heights) and on the right.
     let (mut left, mut right) = ((0.0, None), (0.0, None));
-    for &x in points {
+    for x in points {
         let h = height(x);
         if h > left.0 {
             left = (h, Some(x));
@@ -1558,10 +1584,11 @@ pub(crate) fn resolve_linked_chords<K: Kernel>(
     if contact != SegmentContact::Crossing {
         return endpoint_on_other(k, (a, b), (s, t));
     }
-    let e = match p_edge {
-        Some(e) => e,
+    // P's edge meeting Q's chord, and how they meet (the walk has classified it).
+    let (e, edge_contact) = match p_edge {
+        Some(e) => (e, contact),
         None => match reduce_linked(k, p, a1, p_starts, (s, t)) {
-            Reduced::Edge(e, ..) => e,
+            Reduced::Edge(e, contact, _) => (e, contact),
             Reduced::Inside(x) => {
                 return Some(Certificate::VertexInside {
                     of: Which::Q,
@@ -1573,14 +1600,12 @@ pub(crate) fn resolve_linked_chords<K: Kernel>(
     };
     let [u, v] = edge_points(p, e);
     if let Some(f) = q_edge {
-        return segment_contact(k, u, v, s, t)
-            .meets()
-            .then(|| Certificate::CrossingEdges {
-                p: [u, v],
-                q: edge_points(q, f),
-            });
+        return edge_contact.meets().then(|| Certificate::CrossingEdges {
+            p: [u, v],
+            q: edge_points(q, f),
+        });
     }
-    match segment_contact(k, u, v, s, t) {
+    match edge_contact {
         SegmentContact::Crossing => {}
         SegmentContact::Disjoint => return None,
         _ => return endpoint_on_other(k, (u, v), (s, t)),
@@ -2054,6 +2079,22 @@ mod tests {
             in_triangles(Exact, w(3. * tiny, 2. * tiny, q, 9), &[line, tri]),
             None
         );
+        // A repeated vertex (the LP's bound equal to its previous tangent point) is
+        // skipped by comparing points, even for y at that vertex; the next triangle
+        // still counts, here with y one ulp inside its hypotenuse's end.
+        let repeated = [w(0., 0., p, 0), w(4. * tiny, 0., p, 1), w(4. * tiny, 0., p, 1)];
+        assert_eq!(in_triangles(Exact, w(4. * tiny, 0., q, 9), &[repeated]), None);
+        assert_eq!(
+            in_triangles(Exact, w(3. * tiny, tiny, q, 9), &[repeated, tri]),
+            Some(Certificate::VertexInside {
+                of: Which::Q,
+                point: Point::new(3. * tiny, tiny)
+            })
+        );
+        assert_eq!(
+            in_triangles(Exact, w(3. * tiny, 2. * tiny, q, 9), &[repeated, tri]),
+            None
+        );
     }
 
     #[test]
@@ -2124,6 +2165,18 @@ mod tests {
             }
             _ => panic!("no crossing segments"),
         }
+        // x's own set seen as one point (repeated): no cone, and B's point on the segment
+        // from x to it is not taken for inside; x itself in B's triangle still is.
+        let single = [a(2.0, 0.0, 0), a(2.0, 0.0, 1)];
+        let run1 = |others: &[WitnessPoint]| {
+            let pts: Vec<WitnessPoint> = single.iter().chain(others).chain([&x]).copied().collect();
+            cone_witness(Exact, x, || pts.clone().into_iter(), of, false)
+        };
+        assert!(matches!(run1(&[b(1.0, 1.0, 0), b(5.0, 5.0, 1)]), Cone::Nothing));
+        assert_eq!(
+            inside(run1(&[b(-1.0, 1.9, 0), b(1.0, 1.9, 1), b(0.0, 3.0, 2)])),
+            Some((Which::P, Point::new(0.0, 2.0)))
+        );
     }
 
     /// An end of an edge crossing a chord in the triangle of the chord and the farthest
@@ -2153,5 +2206,19 @@ mod tests {
             None
         );
         assert_eq!(end_in_triangle(Exact, edge, (s, t), &[]), None);
+        // 32 points: every other one is tried first. Near the chord's line (heights
+        // 2^-40 above it), none of those makes a triangle holding the end (2.5, 0.5),
+        // but the one between them (index 1) does: found by the pass over all.
+        let low = 2f64.powi(-40);
+        let mut many: Vec<Point> = (0..32).map(|i| pt(f64::from(i) * 0.1, low)).collect();
+        many[1] = pt(2.5, 3.0);
+        assert_eq!(end_in_triangle(Exact, edge, (s, t), &many), Some(pt(2.5, 0.5)));
+        // The same point at index 2 is among the first tried; one ulp outside the
+        // triangle s, t, (5, 1) the end is outside with every point tried.
+        many.swap(1, 2);
+        assert_eq!(end_in_triangle(Exact, edge, (s, t), &many), Some(pt(2.5, 0.5)));
+        many[2] = pt(5.0, 1.0);
+        assert_eq!(end_in_triangle(Exact, edge, (s, t), &many), Some(pt(2.5, 0.5)));
+        assert_eq!(end_in_triangle(Exact, (edge.0, above), (s, t), &many), None);
     }
 }

@@ -90,6 +90,14 @@
 //!   after a few dozen points); an end of the edge it finds usually lies in the
 //!   triangle of Q's chord and Q's sample vertex farthest from it on that side (a
 //!   vertex inside, no second walk), else Q's chord is resolved by a walk too.
+//!   Where a walk along two ordered sets ([`separate_chains`]) found their hulls
+//!   meeting, no LP ran and there is no LP witness: both sets list the vertices of
+//!   strictly convex polygons (a sample in boundary order, a chain in walk order), so
+//!   Barba's certified search on the two (O(log r)) gives a vertex of one inside the
+//!   other or two crossing edges, which are chords, resolved as above (the LP is
+//!   rerun only for sets of fewer than three points). So the certified query draws
+//!   the plain one's samples, except after an LP rerun for a witness (such small sets,
+//!   or a meet found by the chain-against-chain walk).
 //! * Otherwise (an inconsistent kernel) only the answer, completed on the walked arrays.
 //!
 //! # Complexity
@@ -120,12 +128,13 @@ use super::certificate::{
     straddle_certificate, supports_left, supports_right, witness_certificate,
 };
 use super::linked::LinkedIntersection;
+use super::{ArrayIntersection, Barba};
 use super::{Certificate, Derivation, Probe, Which};
 use crate::kernel::{DirectedLine, Kernel, Orientation, Point};
 use crate::lp::{
     ArenaPoints, Bitangent, LpError, LpWorkspace, Separation, WitnessPoint, separate_chains, separating_line,
 };
-use crate::polygon::{LinkedPolygon, SampleWorkspace, box_of};
+use crate::polygon::{ConvexPolygon, LinkedPolygon, SampleWorkspace, box_of};
 use rand::Rng;
 
 /// The Chazelle–Liu–Magen sublinear test with the default sample factor
@@ -453,14 +462,19 @@ fn certify<K: Kernel>(
         // The LP's witness; else a vertex inside among the points it examined; else its
         // two crossing chords, resolved by walks from the nearest sample or chain vertex.
         let (a, b) = ws.trace.meet?;
-        let (a_pos, b_pos) = (set(a).0, set(b).0);
-        let vertex = |w: WitnessPoint| {
-            let (s, positions) = if w.in_b { (b, b_pos) } else { (a, a_pos) };
-            WitnessVertex {
-                point: w.point,
-                of: s.of(),
-                pos: w.index.map(|i| positions[i] as usize),
-            }
+        if ws.lp.witness_points().is_empty() {
+            // The chain walk found the sets' hulls intersecting (`walk_or_lp`): both are
+            // in boundary order, so they are convex polygons.
+            return convex_sets_certificate(k, (p, q), (a, b), set, points);
+        }
+        // The sets are one of each polygon. Witness points keep their index in their
+        // set until a pair of chords needs the arena positions (most queries end
+        // before, with a vertex inside).
+        let (a_of, b_of) = (a.of(), b.of());
+        let vertex = |w: WitnessPoint| WitnessVertex {
+            point: w.point,
+            of: if w.in_b { b_of } else { a_of },
+            pos: w.index,
         };
         // The LP's last step: its violating point beyond a chord of the other set (five
         // points, no hull to build: a vertex inside or two chords), or a mixed pair of
@@ -485,12 +499,12 @@ fn certify<K: Kernel>(
                 k,
                 x,
                 || ws.lp.examined(),
-                |in_b| if in_b { b.of() } else { a.of() },
+                |in_b| if in_b { b_of } else { a_of },
                 chords.is_none(),
             ) {
                 Cone::Inside(c) => return Some(c),
                 Cone::Chords(own, other) => {
-                    let (own, other) = (own.map(|w| vertex(w).pos), other.map(|w| vertex(w).pos));
+                    let (own, other) = (own.map(|w| w.index), other.map(|w| w.index));
                     chords = Some(if vertex(x).of == Which::P {
                         (own, other)
                     } else {
@@ -510,13 +524,22 @@ fn certify<K: Kernel>(
                 Radon::Nothing => return None,
             },
         };
+        let (p_set, q_set) = if a_of == Which::P { (a, b) } else { (b, a) };
         let starts = |s: Set| (set(s).0, points(s));
-        let (p_starts, q_starts) = if a.of() == Which::P {
-            (starts(a), starts(b))
-        } else {
-            (starts(b), starts(a))
+        // A chord's ends from indices in its set to arena positions.
+        let ends = |s: Set, [i, j]: [Option<usize>; 2]| {
+            let positions = set(s).0;
+            Some((positions[i?] as usize, positions[j?] as usize))
         };
-        return resolve_linked_chords(k, p, (pc[0]?, pc[1]?), p_starts, q, (qc[0]?, qc[1]?), q_starts);
+        return resolve_linked_chords(
+            k,
+            p,
+            ends(p_set, pc)?,
+            starts(p_set),
+            q,
+            ends(q_set, qc)?,
+            starts(q_set),
+        );
     }
     // The lines whose tangent vertices are extreme in the whole polygons separate them.
     ws.trace.lines.iter().rev().find_map(|&(t, a, b)| {
@@ -528,6 +551,66 @@ fn certify<K: Kernel>(
         }
         from_support(k, line, a_poly, ta, b_poly, tb).map(|c| c.relative_to(a.of()))
     })
+}
+
+/// The certificate of intersecting sets `a` and `b` (one of each polygon, given by
+/// `set` and `points`) that the chain walk found meeting: each is in boundary order
+/// (a sample put in order, or a chain in walk order, either way round), so it lists the
+/// vertices of a strictly convex polygon, inside its own polygon. Barba's certified
+/// search on the two, O(log r), gives a vertex of one inside the other (a vertex of its
+/// polygon inside the other polygon) or two crossing edges, which are chords of the
+/// polygons, resolved along them as the LP's chords are. `None` for sets of fewer than
+/// three points (the caller reran the LP for those) or if the search gives no witness
+/// (only an inconsistent kernel).
+#[inline(never)]
+fn convex_sets_certificate<'a, K: Kernel>(
+    k: K,
+    (p, q): (&LinkedPolygon, &LinkedPolygon),
+    (a, b): (Set, Set),
+    set: impl Fn(Set) -> (&'a [u32], &'a LinkedPolygon),
+    points: impl Fn(Set) -> &'a [Point],
+) -> Option<Certificate> {
+    let polygon = |s: Set| -> Option<ConvexPolygon> {
+        let v = points(s);
+        if v.len() < 3 {
+            return None;
+        }
+        // Strictly convex: the first three points give the orientation.
+        let turn = k.orient(v[0], v[1], v[2]);
+        if turn == Orientation::Collinear {
+            return None;
+        }
+        let mut v = v.to_vec();
+        if turn == Orientation::Cw {
+            v.reverse();
+        }
+        Some(ConvexPolygon::from_ccw_unchecked(v))
+    };
+    let Derivation::Certified(c) = Barba.derive_probed(k, &polygon(a)?, &polygon(b)?, &mut ()) else {
+        return None;
+    };
+    let (p_set, q_set) = if a.of() == Which::P { (a, b) } else { (b, a) };
+    match c.relative_to(a.of()) {
+        c @ Certificate::VertexInside { .. } => Some(c),
+        Certificate::CrossingEdges { p: [u, v], q: [s, t] } => {
+            // The chords' ends at their arena positions.
+            let at = |set_of: Set, x: Point| {
+                let i = points(set_of).iter().position(|&y| y == x)?;
+                Some(set(set_of).0[i] as usize)
+            };
+            let starts = |s: Set| (set(s).0, points(s));
+            resolve_linked_chords(
+                k,
+                p,
+                (at(p_set, u)?, at(p_set, v)?),
+                starts(p_set),
+                q,
+                (at(q_set, s)?, at(q_set, t)?),
+                starts(q_set),
+            )
+        }
+        Certificate::Separated { .. } => None,
+    }
 }
 
 /// Appends `r` random vertex positions of `poly` to `out`: all of them when r ≥ n; r
@@ -894,8 +977,9 @@ fn counted_lp_after<K: Kernel, R: Rng + ?Sized, P: Probe>(
 /// order by [`boundary_order`], chains in walk order) by [`separate_chains`] from the
 /// indices `start`, reported to `probe` as an LP call on the two sets; the LP (which
 /// then shuffles the points itself) when the walk gives no answer, and for a certified
-/// query whose sets intersect (the LP records the witness). `spent` is work done on
-/// the same decision before, reported with it.
+/// query whose intersecting sets have fewer than three points (the LP records the
+/// witness; larger sets are convex polygons, which `certify` searches instead). `spent`
+/// is work done on the same decision before, reported with it.
 #[allow(clippy::too_many_arguments)]
 fn walk_or_lp<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     k: K,
@@ -909,6 +993,15 @@ fn walk_or_lp<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
 ) -> Result<Separation, LpError> {
     let before = lp.work - spent;
     match separate_chains(k, a_points, b_points, start, &mut lp.work) {
+        // A certified query reruns the LP for its witness only where the sets are too
+        // small to be convex polygons; otherwise the certificate is searched on the two
+        // convex polygons the sets are (`certify`), and no LP witness is left to read.
+        Some(Separation::Intersecting) if CERT && a_points.len() >= 3 && b_points.len() >= 3 => {
+            lp.forget_witness();
+            let result = Separation::Intersecting;
+            probe.lp_call(a, b, lp.work - before, &Ok(result));
+            return Ok(result);
+        }
         Some(Separation::Intersecting) if CERT => {}
         Some(result) => {
             probe.lp_call(a, b, lp.work - before, &Ok(result));
@@ -1627,6 +1720,40 @@ mod tests {
         }
         assert!(checked > 2000, "{checked}");
         assert!(straddles > 20 && mixed > 20, "{straddles} {mixed} of {checked}");
+    }
+
+    /// Intersecting Rotated pairs (the cost measurement's family) and the lattice
+    /// families at sizes where the samples outgrow the LP's prefix: every certificate
+    /// verifies, including those of queries whose samples the chain walk found meeting
+    /// (no LP witness: the sets are searched as convex polygons), which occur.
+    #[test]
+    fn walk_meets_are_certified_on_the_convex_sets() {
+        let mut rng = SmallRng::seed_from_u64(0xc0a5);
+        let mut ws = ClmWorkspace::default();
+        let families = [
+            Family::Rotated,
+            Family::SharedEdge,
+            Family::VertexOnEdge,
+            Family::Nested,
+        ];
+        let (mut walked, mut checked) = (0, 0);
+        for i in 0..160 {
+            let family = families[i % families.len()];
+            let (p, q) = generate::pair(family, 400 + 13 * i, Relation::Intersecting, &mut rng);
+            let lp = LinkedPolygon::from_convex_shuffled(&p, &mut rng);
+            let lq = LinkedPolygon::from_convex_shuffled(&q, &mut rng);
+            for _ in 0..20 {
+                let d = Clm.derive_in(Exact, &lp, &lq, &mut rng, &mut ws, &mut ());
+                let Derivation::Certified(c) = d else {
+                    panic!("{family} #{i}: no certificate under the exact kernel");
+                };
+                assert!(c.intersects(), "{family} #{i}: {c:?}");
+                assert_eq!(verify_linked(&lp, &lq, &c), Ok(()), "{family} #{i}");
+                walked += usize::from(ws.lp.witness_points().is_empty());
+                checked += 1;
+            }
+        }
+        assert!(walked > 10, "{walked} of {checked}");
     }
 
     #[test]

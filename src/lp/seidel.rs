@@ -213,6 +213,15 @@ impl LpWorkspace {
             .map(|(_, &x)| x)
     }
 
+    /// Drops the recorded witness: [`witness_points`](Self::witness_points) and
+    /// [`examined`](Self::examined) are empty until the next recorded answer
+    /// [`Separation::Intersecting`]. For a caller that learned of intersecting hulls
+    /// elsewhere (a walk along convex chains) and must not read an older LP's witness.
+    pub fn forget_witness(&mut self) {
+        self.witness.len = 0;
+        self.witness.examined = 0;
+    }
+
     /// The points of [`witness`](Self::witness) as recorded, repeats included (at most
     /// nine, in the same order): for callers that drop repeats themselves.
     pub fn witness_points(&self) -> &[WitnessPoint] {
@@ -886,7 +895,12 @@ fn incremental<K: Kernel, S: Load, const RECORD: bool>(
                     let (a, b) = (item(ta), item(tb));
                     let frame = [item((0, a0)), item((B_BIT, b0)), al, br];
                     let points = [items[t], q, q2, a, b, frame[0], frame[1], frame[2], frame[3]];
-                    witness.set(&points.map(WitnessPoint::of), t + 1);
+                    // Written in place: the whole witness.
+                    *witness = Witness {
+                        points: points.map(WitnessPoint::of),
+                        len: WITNESS,
+                        examined: t + 1,
+                    };
                 }
                 return StepOut::Infeasible;
             }
