@@ -118,7 +118,7 @@
 //! remaining pieces.
 
 use super::certificate::{
-    Reduced, crossing, endpoint_on_other, extreme_left, reduce_chord, resolve_chords,
+    Reduced, crossing, edge_between, endpoint_on_other, extreme_left, reduce_chord, resolve_chords,
     resolve_crossing_chords, same_direction, separates, turn_gt,
 };
 use super::{ArrayIntersection, Certificate, Derivation, Linear, Probe, Which};
@@ -1102,14 +1102,7 @@ fn segment_witness<K: Kernel>(
     // it from the orientations P's search found.
     let (i, j) = (t[ca], t[cb]);
     let next = |x: usize| if x + 1 == n { 0 } else { x + 1 };
-    let edge = if next(i) == j {
-        Some(i)
-    } else if next(j) == i {
-        Some(j)
-    } else {
-        None
-    };
-    let (e, contact, known_q) = if let Some(e) = edge {
+    let (e, contact, known_q) = if let Some(e) = edge_between(n, i, j) {
         (e, SegmentContact::Crossing, None)
     } else {
         match reduce_chord(k, pv, (i, j), (qp[0], qp[1]), Some((near, o[ca]))) {

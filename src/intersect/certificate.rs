@@ -708,7 +708,7 @@ pub(crate) fn extreme_left<K: Kernel>(k: K, v: &[Point], (s, e): (Point, Point))
 /// The start of the edge between positions `i` and `j` of a polygon of `n` vertices, if
 /// they are consecutive (in either order).
 #[inline]
-fn edge_between(n: usize, i: usize, j: usize) -> Option<usize> {
+pub(crate) fn edge_between(n: usize, i: usize, j: usize) -> Option<usize> {
     if j == if i + 1 == n { 0 } else { i + 1 } {
         Some(i)
     } else if i == if j + 1 == n { 0 } else { j + 1 } {
