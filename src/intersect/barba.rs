@@ -1100,6 +1100,9 @@ fn segment_witness<K: Kernel>(
     // none when the chord is an edge of P), then, if that edge crosses the segment and
     // the segment is a chord of Q (not its edge Q[d] → Q[c]), Q's chord reduced against
     // it from the orientations P's search found.
+    // This is `certificate::resolve_crossing` written out with Q's edge known from Q'
+    // (`r.len == m`): calling it costs 12 more instructions per certified intersecting
+    // query at 2^10 (1,549.5 -> 1,561.9) and 8 at 2^14.
     let (i, j) = (t[ca], t[cb]);
     let next = |x: usize| if x + 1 == n { 0 } else { x + 1 };
     let (e, contact, known_q) = if let Some(e) = edge_between(n, i, j) {
