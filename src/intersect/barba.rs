@@ -381,13 +381,9 @@ enum Exit {
     Chord { a: usize, b: usize, e: usize },
     /// T_P of `pr` meets the explicit Q' `qs` (constant-size finish).
     Small { pr: Range, qs: SmallQ },
-    /// T_P of `pr` meets the segment Q' `qs` (a chord of Q), with the orientations the
-    /// certified finish decided it by ([`SegmentTable`]).
-    Segment {
-        pr: Range,
-        qs: SmallQ,
-        table: SegmentTable,
-    },
+    /// T_P meets the segment Q' (a chord of Q), with the orientations the certified
+    /// finish decided it by ([`SegmentExit`]).
+    Segment(SegmentExit),
     /// P' = CH(`pr`) and Q' (`q`) are disjoint, by `line`.
     Apart { pr: Range, q: SmallQ, line: Sep },
     /// An inconsistent kernel: the reference's answer on the remaining pieces.
@@ -476,7 +472,7 @@ impl Mode for Derive {
                 of: Which::Q,
                 point: qv[j],
             }),
-            Exit::Segment { pr, qs, table } => segment_derivation(k, pv, pr, qv, qs, table),
+            Exit::Segment(exit) => segment_derivation(k, pv, qv, exit),
             other => derivation::<K, V>(k, pv, qv, other),
         }
     }
@@ -854,7 +850,9 @@ fn against_small<K: Kernel, P: Probe, M: Mode, V: Variant>(
             match SegmentTable::axis(k, &t, [qs[0], qs[1]]) {
                 Ok(axis) => Some(axis),
                 Err(table) => {
-                    return M::done::<K, V>(k, pv, qv, true, || Exit::Segment { pr, qs: small, table });
+                    return M::done::<K, V>(k, pv, qv, true, || {
+                        Exit::Segment(SegmentExit::new(pv.len(), qv.len(), pr, small, table))
+                    });
                 }
             }
         } else {
@@ -953,6 +951,52 @@ impl SegmentTable {
     }
 }
 
+/// Where the certified finish found T_P meeting the segment Q' = Q[c]–Q[d] (a chord of
+/// Q): what the witness ([`segment_witness`]) reads, in array indices, so that it
+/// computes none of them again.
+#[derive(Clone, Copy, Debug)]
+struct SegmentExit {
+    /// T_P's vertices.
+    t: [usize; 3],
+    /// Whether T_P's edge 2 → 0 is P''s closing chord (an ordinary range, not the
+    /// thirds triangle), reduced as 0 → 2 so that its chain lies in P'.
+    closing_reversed: bool,
+    /// The segment's ends: Q''s first and last vertex.
+    c: usize,
+    d: usize,
+    /// The middle vertex of Q''s chain from `c` to `d`.
+    q_mid: usize,
+    /// Whether Q' was all of Q, so that the segment is Q's edge Q[d] → Q[c].
+    q_edge: bool,
+    table: SegmentTable,
+}
+
+impl SegmentExit {
+    #[inline]
+    fn new(n: usize, m: usize, pr: Range, small: SmallQ, table: SegmentTable) -> SegmentExit {
+        let r = small.range;
+        SegmentExit {
+            t: pr.triangle(n),
+            closing_reversed: !pr.thirds,
+            c: r.idx(m, 0),
+            d: r.idx(m, r.len - 1),
+            q_mid: r.idx(m, (r.len - 1) / 2),
+            q_edge: r.len == m,
+            table,
+        }
+    }
+}
+
+impl Derivation {
+    /// The certificate, if derived.
+    fn certificate(self) -> Option<Certificate> {
+        match self {
+            Derivation::Certified(c) => Some(c),
+            Derivation::Answer(_) => None,
+        }
+    }
+}
+
 /// Only for kernels that contradict themselves: the O(n + m) reference on the
 /// remaining pieces.
 fn fallback<K: Kernel>(k: K, pv: &[Point], pr: Range, qv: &[Point], qr: Range) -> bool {
@@ -981,7 +1025,7 @@ fn meet_certificate<K: Kernel>(k: K, pv: &[Point], qv: &[Point], exit: Exit) -> 
         }),
         Exit::Chord { a, b, e } => resolve_chords(k, pv, (a, b), qv, (e, (e + 1) % qv.len())),
         Exit::Small { pr, qs } => small_witness(k, pv, pr, qv, qs),
-        Exit::Segment { pr, qs, table } => segment_witness(k, pv, pr, qv, qs, table),
+        Exit::Segment(exit) => segment_witness(k, pv, qv, exit).certificate(),
         Exit::Apart { .. } | Exit::Stuck(_) => None,
     }
 }
@@ -1007,7 +1051,8 @@ fn small_witness<K: Kernel>(
         // Q' is a segment (certified runs end there with `Exit::Segment` instead).
         return match SegmentTable::axis(k, &tp, [qv[qi[0]], qv[qi[1]]]) {
             Ok(_) => None,
-            Err(table) => segment_witness(k, pv, pr, qv, small, table),
+            Err(table) => segment_witness(k, pv, qv, SegmentExit::new(pv.len(), qv.len(), pr, small, table))
+                .certificate(),
         };
     }
     let qp: [Point; SMALL_Q] = std::array::from_fn(|j| if j < len { qv[qi[j]] } else { Point::default() });
@@ -1060,94 +1105,88 @@ fn small_witness<K: Kernel>(
 /// from the table's orientations: which end of the segment lies beyond the chord, and
 /// the chord's start against the segment's line. The steps of
 /// [`resolve_chords`] that the table already decides are not taken.
-fn segment_witness<K: Kernel>(
-    k: K,
-    pv: &[Point],
-    pr: Range,
-    qv: &[Point],
-    small: SmallQ,
-    SegmentTable { o, w }: SegmentTable,
-) -> Option<Certificate> {
-    let (n, m) = (pv.len(), qv.len());
-    let t = pr.triangle(n);
-    let r = small.range;
-    let (c, d) = (r.idx(m, 0), r.idx(m, r.len - 1));
+#[inline(always)]
+fn segment_witness<K: Kernel>(k: K, pv: &[Point], qv: &[Point], exit: SegmentExit) -> Derivation {
+    let SegmentExit {
+        t,
+        closing_reversed,
+        c,
+        d,
+        q_mid,
+        q_edge,
+        table: SegmentTable { o, w },
+    } = exit;
+    let n = pv.len();
+    let certified = Derivation::Certified;
+    let inside = |of: Which, point: Point| Derivation::Certified(Certificate::VertexInside { of, point });
     let qp = [qv[c], qv[d]];
     if o.contains(&Collinear)
         && let Some(a) = (0..3).find(|&a| o[a] == Collinear && point_on_segment(k, qp[0], qp[1], pv[t[a]]))
     {
-        return Some(Certificate::VertexInside {
-            of: Which::P,
-            point: pv[t[a]],
-        });
+        return inside(Which::P, pv[t[a]]);
     }
     if let Some(j) = (0..2).find(|&j| w[j].iter().all(|&x| x != Cw)) {
-        return Some(Certificate::VertexInside {
-            of: Which::Q,
-            point: qp[j],
-        });
+        return inside(Which::Q, qp[j]);
     }
     // Neither end inside T_P and no vertex of T_P on the segment, yet they meet: an
     // edge of T_P crosses the segment properly (both pairs strictly apart).
     let straddle = |x: Orientation, y: Orientation| x != Collinear && y == x.reverse();
-    let a = (0..3).find(|&a| straddle(o[a], o[(a + 1) % 3]) && straddle(w[0][a], w[1][a]))?;
-    let (ca, cb) = pr.chord(a);
+    let Some(a) = (0..3).find(|&a| straddle(o[a], o[(a + 1) % 3]) && straddle(w[0][a], w[1][a])) else {
+        return Derivation::Answer(true);
+    };
+    // The chord between T_P's vertices ca and cb: T_P's edge a → a + 1, or P''s closing
+    // chord given reversed (0 → 2), so that the chain behind it lies in P'.
+    let reversed = a == 2 && closing_reversed;
+    let (ca, cb) = if reversed { (0, 2) } else { (a, (a + 1) % 3) };
     // The end strictly right of the chord t[ca] → t[cb]: right of T_P's edge a → a + 1,
-    // or left of it for P''s closing chord, given reversed (0 → 2).
-    let beyond = if (ca, cb) == (a, (a + 1) % 3) { Cw } else { Ccw };
+    // or left of it for P''s closing chord.
+    let beyond = if reversed { Ccw } else { Cw };
     let near = if w[0][a] == beyond { qp[0] } else { qp[1] };
     // P's chord reduced to an edge (one search within P', from the table's orientations;
     // none when the chord is an edge of P), then, if that edge crosses the segment and
     // the segment is a chord of Q (not its edge Q[d] → Q[c]), Q's chord reduced against
     // it from the orientations P's search found.
     // This is `certificate::resolve_crossing` written out with Q's edge known from Q'
-    // (`r.len == m`): calling it costs 12 more instructions per certified intersecting
+    // (`q_edge`): calling it costs 12 more instructions per certified intersecting
     // query at 2^10 (1,549.5 -> 1,561.9) and 8 at 2^14.
     let (i, j) = (t[ca], t[cb]);
+    // The chord's end on the side of Q''s chain (strictly right of Q[c] → Q[d]) is a
+    // vertex of P; inside the triangle of Q[c], the chain's middle vertex and Q[d] it is
+    // inside Q (two orientations, no search).
+    let x = if o[ca] == Cw { i } else { j };
+    let qm = qv[q_mid];
+    if k.orient(qp[0], qm, pv[x]) != Cw && k.orient(qm, qp[1], pv[x]) != Cw {
+        return inside(Which::P, pv[x]);
+    }
     let next = |x: usize| if x + 1 == n { 0 } else { x + 1 };
     let (e, contact, known_q) = if let Some(e) = edge_between(n, i, j) {
         (e, SegmentContact::Crossing, None)
     } else {
         match reduce_chord(k, pv, (i, j), (qp[0], qp[1]), Some((near, o[ca]))) {
             Reduced::Edge(e, contact, next) => (e, contact, next),
-            Reduced::Inside(x) => {
-                return Some(Certificate::VertexInside {
-                    of: Which::Q,
-                    point: x,
-                });
-            }
-            Reduced::Fail => return None,
+            Reduced::Inside(x) => return inside(Which::Q, x),
+            Reduced::Fail => return Derivation::Answer(true),
         }
     };
-    if r.len == m {
+    if q_edge {
         // Q' was all of Q: the segment is Q's edge from Q[d] to Q[c].
-        return Some(crossing(pv, e, qv, d));
+        return certified(crossing(pv, e, qv, d));
     }
     let (u, v) = (pv[e], pv[next(e)]);
     if contact != SegmentContact::Crossing {
-        return endpoint_on_other(k, (u, v), (qp[0], qp[1]));
+        return endpoint_on_other(k, (u, v), (qp[0], qp[1])).map_or(Derivation::Answer(true), certified);
     }
     match reduce_chord(k, qv, (c, d), (u, v), known_q) {
-        Reduced::Edge(f, ..) => Some(crossing(pv, e, qv, f)),
-        Reduced::Inside(x) => Some(Certificate::VertexInside {
-            of: Which::P,
-            point: x,
-        }),
-        Reduced::Fail => None,
+        Reduced::Edge(f, ..) => certified(crossing(pv, e, qv, f)),
+        Reduced::Inside(x) => inside(Which::P, x),
+        Reduced::Fail => Derivation::Answer(true),
     }
 }
 
 /// The certified call's result for a segment exit ([`segment_witness`]), out of line.
 #[inline(never)]
-fn segment_derivation<K: Kernel>(
-    k: K,
-    pv: &[Point],
-    pr: Range,
-    qv: &[Point],
-    small: SmallQ,
-    table: SegmentTable,
-) -> Derivation {
-    segment_witness(k, pv, pr, qv, small, table).map_or(Derivation::Answer(true), Derivation::Certified)
+fn segment_derivation<K: Kernel>(k: K, pv: &[Point], qv: &[Point], exit: SegmentExit) -> Derivation {
+    segment_witness(k, pv, qv, exit)
 }
 
 /// A separating edge for the whole polygons from a run's final separation of the
@@ -1402,9 +1441,9 @@ mod tests {
                         let (pv, qv) = (p.vertices(), q.vertices());
                         let k = Exact.within([p.bounding_box(), q.bounding_box()]);
                         let exit = run::<_, (), Record, Ours>(k, pv, qv, &mut ());
-                        let segment = matches!(exit, Exit::Segment { .. });
+                        let segment = matches!(exit, Exit::Segment(_));
                         // The segment is Q's own edge Q[d] → Q[c] when Q' was all of Q.
-                        let q_edge = matches!(exit, Exit::Segment { qs, .. } if qs.range.len == qv.len());
+                        let q_edge = matches!(exit, Exit::Segment(s) if s.q_edge);
                         let c = meet_certificate(k, pv, qv, exit)
                             .unwrap_or_else(|| panic!("{family:?} 2^{log2} ×{scale}: {exit:?} gave none"));
                         assert_eq!(verify(&p, &q, &c), Ok(()), "{family:?} 2^{log2} ×{scale}: {c:?}");

@@ -817,7 +817,10 @@ pub(crate) fn reduce_chord<K: Kernel>(
 /// strictly on the other side, and crosses the line once: the offset `lo` of the edge
 /// `at(lo)` → `at(lo + 1)` where it does (`at(lo)` on side `sigma`, `at(lo + 1)` not),
 /// with the side of `at(lo + 1)`. A binary search, one exact orientation per probe
-/// against the line's precomputed direction.
+/// against the line's precomputed direction, turned so that `sigma`'s side is its left
+/// (each probe then asks only whether the point is strictly left); the side of
+/// `at(lo + 1)` is computed once at the end (one orientation more, unless it is
+/// `at(len)`), not carried through the probes.
 #[inline]
 fn crossing_edge<K: Kernel>(
     k: K,
@@ -826,18 +829,25 @@ fn crossing_edge<K: Kernel>(
     len: usize,
     sigma: Orientation,
 ) -> (usize, Orientation) {
+    let left = if sigma == Orientation::Ccw {
+        *line
+    } else {
+        DirectedLine::new(line.to(), line.from())
+    };
     let (mut lo, mut hi) = (0, len);
-    let mut o_hi = sigma.reverse();
     while hi - lo > 1 {
         let mid = lo + (hi - lo) / 2;
-        let o = k.orient_line(line, at(mid));
-        if o == sigma {
+        if k.orient_line(&left, at(mid)) == Orientation::Ccw {
             lo = mid;
         } else {
             hi = mid;
-            o_hi = o;
         }
     }
+    let o_hi = if hi == len {
+        sigma.reverse()
+    } else {
+        k.orient_line(line, at(hi))
+    };
     (lo, o_hi)
 }
 
