@@ -69,7 +69,11 @@
 //! # Certificate
 //! [`ArrayIntersection::certified_probed`](super::ArrayIntersection::certified_probed)
 //! runs the same loop (a second instance of it, so the plain call keeps its code) and
-//! turns the exit into a certificate where the loop ends:
+//! turns the exit into a certificate where the loop ends (`certified_with`, without a
+//! probe, a third instance that also completes it there, so that the certificate is
+//! written once in the caller's place; both give the same certificate). A certified
+//! run computes the positions of its exit only where it ends, and hands a segment exit
+//! its witness's indices as found (`SegmentExit`):
 //! * a vertex of T_P in K (step 1) or of K in T_P (step 3): that vertex, inside;
 //! * an edge of T_P (a chord of P) meeting an edge of Q (step 4), or T_P meeting the
 //!   small Q' of the finish without a vertex of either inside the other: the chord is
@@ -222,6 +226,11 @@ impl ArrayIntersection for Barba {
     ) -> Derivation {
         Ours::default().derive_probed(k, p, q, probe)
     }
+
+    #[inline]
+    fn certified_with<K: Kernel>(&self, k: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Certificate {
+        Ours::default().certified_with(k, p, q)
+    }
 }
 
 impl<const T: bool, const S: usize, const E: bool> ArrayIntersection for BarbaVariant<T, S, E> {
@@ -248,6 +257,14 @@ impl<const T: bool, const S: usize, const E: bool> ArrayIntersection for BarbaVa
     ) -> Derivation {
         let k = k.within([p.bounding_box(), q.bounding_box()]);
         run::<K::Within, P, Derive, Self>(k, p.vertices(), q.vertices(), probe)
+    }
+
+    /// [`certified_probed`](ArrayIntersection::certified_probed) without a probe, from
+    /// a run that builds the certificate where it ends ([`Certify`]): the same
+    /// certificate, written once instead of passed up as a [`Derivation`] and moved.
+    fn certified_with<K: Kernel>(&self, k: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Certificate {
+        let k = k.within([p.bounding_box(), q.bounding_box()]);
+        run::<K::Within, (), Certify, Self>(k, p.vertices(), q.vertices(), &mut ())
     }
 }
 
@@ -478,19 +495,87 @@ impl Mode for Derive {
     }
 }
 
+/// The certified call without a probe: [`Derive`]'s derivation completed where the run
+/// ends ([`fallback::complete`](super::fallback::complete) where it gives only the
+/// answer), so that the certificate is written once, in the caller's place.
+struct Certify;
+
+impl Mode for Certify {
+    type Out = Certificate;
+    const CERTIFY: bool = true;
+    #[inline(always)]
+    fn done<K: Kernel, V: Variant>(
+        k: K,
+        pv: &[Point],
+        qv: &[Point],
+        _: bool,
+        exit: impl FnOnce() -> Exit,
+    ) -> Certificate {
+        match exit() {
+            Exit::PInside(i) => Certificate::VertexInside {
+                of: Which::P,
+                point: pv[i],
+            },
+            Exit::QInside(j) => Certificate::VertexInside {
+                of: Which::Q,
+                point: qv[j],
+            },
+            Exit::Segment(exit) => segment_certificate(k, pv, qv, exit),
+            other => completed::<K, V>(k, pv, qv, other),
+        }
+    }
+}
+
+/// [`Certify`]'s certificate for an exit other than a vertex inside or a segment.
+/// [`derivation`]'s body is written out here (no call, no [`Derivation`] moved).
+#[inline(never)]
+fn completed<K: Kernel, V: Variant>(k: K, pv: &[Point], qv: &[Point], exit: Exit) -> Certificate {
+    let complete = |answer| super::fallback::complete(k, pv, qv, Derivation::Answer(answer), &mut ());
+    match exit {
+        Exit::Apart { pr, q, line } => {
+            match lift(k, pv, qv, pr, q, line).or_else(|| rerun_lift::<K, V>(k, pv, qv)) {
+                Some(c) => c,
+                None => complete(false),
+            }
+        }
+        Exit::Stuck(answer) => complete(answer),
+        meet => match meet_certificate(k, pv, qv, meet) {
+            Some(c) => c,
+            None => complete(true),
+        },
+    }
+}
+
+/// The run with the roles exchanged, which ends on other pieces, and its separating
+/// edge if [`lift`] finds one.
+#[inline]
+fn rerun_lift<K: Kernel, V: Variant>(k: K, pv: &[Point], qv: &[Point]) -> Option<Certificate> {
+    match run::<K, (), Record, V>(k, qv, pv, &mut ()) {
+        Exit::Apart { pr, q, line } => lift(k, qv, pv, pr, q, line).map(Certificate::swapped),
+        _ => None,
+    }
+}
+
+/// [`Certify`]'s certificate for a segment exit ([`segment_witness`]).
+#[inline(never)]
+fn segment_certificate<K: Kernel>(k: K, pv: &[Point], qv: &[Point], exit: SegmentExit) -> Certificate {
+    segment_witness(
+        k,
+        pv,
+        qv,
+        exit,
+        |c| c,
+        || super::fallback::complete(k, pv, qv, Derivation::Answer(true), &mut ()),
+    )
+}
+
 /// The certified call's result for a run's exit (the module docs' "Certificate"). Out
 /// of line, so that the certified loop's code stays the plain loop's.
 #[inline(never)]
 fn derivation<K: Kernel, V: Variant>(k: K, pv: &[Point], qv: &[Point], exit: Exit) -> Derivation {
     match exit {
         Exit::Apart { pr, q, line } => lift(k, pv, qv, pr, q, line)
-            .or_else(|| {
-                // The run with the roles exchanged ends on other pieces.
-                match run::<K, (), Record, V>(k, qv, pv, &mut ()) {
-                    Exit::Apart { pr, q, line } => lift(k, qv, pv, pr, q, line).map(Certificate::swapped),
-                    _ => None,
-                }
-            })
+            .or_else(|| rerun_lift::<K, V>(k, pv, qv))
             .map_or(Derivation::Answer(false), Derivation::Certified),
         Exit::Stuck(answer) => Derivation::Answer(answer),
         meet => meet_certificate(k, pv, qv, meet).map_or(Derivation::Answer(true), Derivation::Certified),
@@ -576,6 +661,10 @@ fn run<K: Kernel, P: Probe, M: Mode, V: Variant>(k: K, pv: &[Point], qv: &[Point
         let decision = step::<K, V>(k, pv, pr, qv, qr, &mut cache);
         let (n, m) = (pv.len(), qv.len());
         let (tp, ep) = (pr.tri(), e_positions(qr));
+        // A certified run computes its exit's positions only where it ends (the thirds
+        // triangle's two divisions are not paid on every iteration).
+        let tp = move || if M::CERTIFY { pr.tri() } else { tp };
+        let ep = move || if M::CERTIFY { e_positions(qr) } else { ep };
         let apart = |line| Exit::Apart {
             pr,
             q: SmallQ {
@@ -586,23 +675,23 @@ fn run<K: Kernel, P: Probe, M: Mode, V: Variant>(k: K, pv: &[Point], qv: &[Point
         };
         match decision {
             Step::InK(i) => {
-                return M::done::<K, V>(k, pv, qv, true, || Exit::PInside(pr.idx(n, tp[i as usize])));
+                return M::done::<K, V>(k, pv, qv, true, || Exit::PInside(pr.idx(n, tp()[i as usize])));
             }
             Step::InTriangle(x) => {
                 return M::done::<K, V>(k, pv, qv, true, || {
-                    Exit::QInside(qr.idx(m, ep[x as usize / 2] + x as usize % 2))
+                    Exit::QInside(qr.idx(m, ep()[x as usize / 2] + x as usize % 2))
                 });
             }
             Step::Crossing(a, j) => {
                 let (a, b) = pr.chord(a as usize);
                 return M::done::<K, V>(k, pv, qv, true, || Exit::Chord {
-                    a: pr.idx(n, tp[a]),
-                    b: pr.idx(n, tp[b]),
-                    e: qr.idx(m, ep[j as usize]),
+                    a: pr.idx(n, tp()[a]),
+                    b: pr.idx(n, tp()[b]),
+                    e: qr.idx(m, ep()[j as usize]),
                 });
             }
             Step::ApartLine(j) => {
-                let e = ep[j as usize];
+                let e = ep()[j as usize];
                 return M::done::<K, V>(k, pv, qv, false, || {
                     apart(Sep::QLine(qr.idx(m, e), qr.idx(m, e + 1)))
                 });
@@ -611,7 +700,9 @@ fn run<K: Kernel, P: Probe, M: Mode, V: Variant>(k: K, pv: &[Point], qv: &[Point
                 return M::done::<K, V>(k, pv, qv, false, || apart(Sep::PChord));
             }
             Step::ApartEdge(a) => {
-                return M::done::<K, V>(k, pv, qv, false, || apart(Sep::PEdge(pr.idx(n, tp[a as usize]))));
+                return M::done::<K, V>(k, pv, qv, false, || {
+                    apart(Sep::PEdge(pr.idx(n, tp()[a as usize])))
+                });
             }
             Step::KeepP(chain) => {
                 let Some((from, to)) = pr.chain_ends(chain) else {
@@ -850,8 +941,18 @@ fn against_small<K: Kernel, P: Probe, M: Mode, V: Variant>(
             match SegmentTable::axis(k, &t, [qs[0], qs[1]]) {
                 Ok(axis) => Some(axis),
                 Err(table) => {
+                    // From the positions and indices at hand (no division again).
                     return M::done::<K, V>(k, pv, qv, true, || {
-                        Exit::Segment(SegmentExit::new(pv.len(), qv.len(), pr, small, table))
+                        let r = small.range;
+                        Exit::Segment(SegmentExit {
+                            t: tp.map(|pos| pr.idx(n, pos)),
+                            closing_reversed: !pr.thirds,
+                            c: idx[0],
+                            d: idx[1],
+                            q_mid: r.idx(qv.len(), (r.len - 1) / 2),
+                            q_edge: r.len == qv.len(),
+                            table,
+                        })
                     });
                 }
             }
@@ -987,16 +1088,6 @@ impl SegmentExit {
     }
 }
 
-impl Derivation {
-    /// The certificate, if derived.
-    fn certificate(self) -> Option<Certificate> {
-        match self {
-            Derivation::Certified(c) => Some(c),
-            Derivation::Answer(_) => None,
-        }
-    }
-}
-
 /// Only for kernels that contradict themselves: the O(n + m) reference on the
 /// remaining pieces.
 fn fallback<K: Kernel>(k: K, pv: &[Point], pr: Range, qv: &[Point], qr: Range) -> bool {
@@ -1025,7 +1116,7 @@ fn meet_certificate<K: Kernel>(k: K, pv: &[Point], qv: &[Point], exit: Exit) -> 
         }),
         Exit::Chord { a, b, e } => resolve_chords(k, pv, (a, b), qv, (e, (e + 1) % qv.len())),
         Exit::Small { pr, qs } => small_witness(k, pv, pr, qv, qs),
-        Exit::Segment(exit) => segment_witness(k, pv, qv, exit).certificate(),
+        Exit::Segment(exit) => segment_witness(k, pv, qv, exit, Some, || None),
         Exit::Apart { .. } | Exit::Stuck(_) => None,
     }
 }
@@ -1051,8 +1142,10 @@ fn small_witness<K: Kernel>(
         // Q' is a segment (certified runs end there with `Exit::Segment` instead).
         return match SegmentTable::axis(k, &tp, [qv[qi[0]], qv[qi[1]]]) {
             Ok(_) => None,
-            Err(table) => segment_witness(k, pv, qv, SegmentExit::new(pv.len(), qv.len(), pr, small, table))
-                .certificate(),
+            Err(table) => {
+                let exit = SegmentExit::new(pv.len(), qv.len(), pr, small, table);
+                segment_witness(k, pv, qv, exit, Some, || None)
+            }
         };
     }
     let qp: [Point; SMALL_Q] = std::array::from_fn(|j| if j < len { qv[qi[j]] } else { Point::default() });
@@ -1106,7 +1199,14 @@ fn small_witness<K: Kernel>(
 /// the chord's start against the segment's line. The steps of
 /// [`resolve_chords`] that the table already decides are not taken.
 #[inline(always)]
-fn segment_witness<K: Kernel>(k: K, pv: &[Point], qv: &[Point], exit: SegmentExit) -> Derivation {
+fn segment_witness<K: Kernel, O>(
+    k: K,
+    pv: &[Point],
+    qv: &[Point],
+    exit: SegmentExit,
+    certified: impl Fn(Certificate) -> O,
+    unproven: impl Fn() -> O,
+) -> O {
     let SegmentExit {
         t,
         closing_reversed,
@@ -1117,8 +1217,7 @@ fn segment_witness<K: Kernel>(k: K, pv: &[Point], qv: &[Point], exit: SegmentExi
         table: SegmentTable { o, w },
     } = exit;
     let n = pv.len();
-    let certified = Derivation::Certified;
-    let inside = |of: Which, point: Point| Derivation::Certified(Certificate::VertexInside { of, point });
+    let inside = |of: Which, point: Point| certified(Certificate::VertexInside { of, point });
     let qp = [qv[c], qv[d]];
     if o.contains(&Collinear)
         && let Some(a) = (0..3).find(|&a| o[a] == Collinear && point_on_segment(k, qp[0], qp[1], pv[t[a]]))
@@ -1132,7 +1231,7 @@ fn segment_witness<K: Kernel>(k: K, pv: &[Point], qv: &[Point], exit: SegmentExi
     // edge of T_P crosses the segment properly (both pairs strictly apart).
     let straddle = |x: Orientation, y: Orientation| x != Collinear && y == x.reverse();
     let Some(a) = (0..3).find(|&a| straddle(o[a], o[(a + 1) % 3]) && straddle(w[0][a], w[1][a])) else {
-        return Derivation::Answer(true);
+        return unproven();
     };
     // The chord between T_P's vertices ca and cb: T_P's edge a → a + 1, or P''s closing
     // chord given reversed (0 → 2), so that the chain behind it lies in P'.
@@ -1165,7 +1264,7 @@ fn segment_witness<K: Kernel>(k: K, pv: &[Point], qv: &[Point], exit: SegmentExi
         match reduce_chord(k, pv, (i, j), (qp[0], qp[1]), Some((near, o[ca]))) {
             Reduced::Edge(e, contact, next) => (e, contact, next),
             Reduced::Inside(x) => return inside(Which::Q, x),
-            Reduced::Fail => return Derivation::Answer(true),
+            Reduced::Fail => return unproven(),
         }
     };
     if q_edge {
@@ -1174,19 +1273,24 @@ fn segment_witness<K: Kernel>(k: K, pv: &[Point], qv: &[Point], exit: SegmentExi
     }
     let (u, v) = (pv[e], pv[next(e)]);
     if contact != SegmentContact::Crossing {
-        return endpoint_on_other(k, (u, v), (qp[0], qp[1])).map_or(Derivation::Answer(true), certified);
+        return match endpoint_on_other(k, (u, v), (qp[0], qp[1])) {
+            Some(c) => certified(c),
+            None => unproven(),
+        };
     }
     match reduce_chord(k, qv, (c, d), (u, v), known_q) {
         Reduced::Edge(f, ..) => certified(crossing(pv, e, qv, f)),
         Reduced::Inside(x) => inside(Which::P, x),
-        Reduced::Fail => Derivation::Answer(true),
+        Reduced::Fail => unproven(),
     }
 }
 
 /// The certified call's result for a segment exit ([`segment_witness`]), out of line.
 #[inline(never)]
 fn segment_derivation<K: Kernel>(k: K, pv: &[Point], qv: &[Point], exit: SegmentExit) -> Derivation {
-    segment_witness(k, pv, qv, exit)
+    segment_witness(k, pv, qv, exit, Derivation::Certified, || {
+        Derivation::Answer(true)
+    })
 }
 
 /// A separating edge for the whole polygons from a run's final separation of the
@@ -1461,6 +1565,41 @@ mod tests {
             segments > 0 && crossings > 0 && q_edges > 0,
             "{segments} segment exits, {crossings} crossings, {q_edges} edge pairs on Q's edge"
         );
+    }
+
+    /// `certified_with` (the run that completes its certificate where it ends) and
+    /// `certified_probed` (the derivation, completed by the fallback) give the same
+    /// certificate on every family, both relations, every variant's choice of Barba
+    /// included; and it verifies.
+    #[test]
+    fn certified_with_matches_the_derivation() {
+        use crate::generate::{self, Family, Relation};
+        use crate::intersect::verify;
+        use rand::SeedableRng;
+        let mut rng = rand::rngs::SmallRng::seed_from_u64(0xc47);
+        let mut compared = 0;
+        for &family in Family::ALL {
+            for log2 in [3, 6, 10] {
+                for relation in [Relation::Intersecting, Relation::Disjoint] {
+                    for _ in 0..6 {
+                        let Ok((p, q)) = generate::try_pair(family, 1 << log2, relation, &mut rng) else {
+                            continue;
+                        };
+                        let c = Barba.certified_with(Exact, &p, &q);
+                        assert_eq!(c, Barba.certified_probed(Exact, &p, &q, &mut ()), "{family:?}");
+                        assert_eq!(verify(&p, &q, &c), Ok(()), "{family:?} 2^{log2}: {c:?}");
+                        let v = BarbaVariant::<false, 4, true>;
+                        assert_eq!(
+                            v.certified_with(Exact, &p, &q),
+                            v.certified_probed(Exact, &p, &q, &mut ()),
+                            "{family:?}"
+                        );
+                        compared += 1;
+                    }
+                }
+            }
+        }
+        assert!(compared > 100, "{compared} pairs");
     }
 
     #[test]
