@@ -500,7 +500,10 @@ fn certify<K: Kernel, R: Rng + ?Sized>(
             // in boundary order, so they are convex polygons.
             let samples = (a, b) == (Set::Rp, Set::Rq) || (a, b) == (Set::Rq, Set::Rp);
             // Samples the walk found meeting are in boundary order already.
-            let drawn = |chords, rng: &mut R| draws.witness(k, (p, q), chords, [rp_points, rq_points], rng);
+            let drawn = |[pc, qc]: [(Point, Point); 2], rng: &mut R| {
+                let quads = [Quad::new(pc, rp_points), Quad::new(qc, rq_points)];
+                draws.witness(k, (p, q), quads, rng)
+            };
             return convex_sets_certificate(k, (p, q), (a, b), set, points, samples.then_some(drawn), rng);
         }
         // The sets are one of each polygon. Witness points keep their index in their
@@ -525,6 +528,14 @@ fn certify<K: Kernel, R: Rng + ?Sized>(
         } else if let Some([y, x, x1, t, x0]) = lp.mixed() {
             let (x, x1, t, x0) = (vertex(x), vertex(x1), vertex(t), vertex(x0));
             if let Some(c) = in_triangles(k, vertex(y), &[[x, x1, t], [x, x1, x0]]) {
+                return Some(c);
+            }
+        }
+        // A drawn vertex of one polygon in the other sample's quadrilateral.
+        let samples = (a, b) == (Set::Rp, Set::Rq) || (a, b) == (Set::Rq, Set::Rp);
+        if samples {
+            let quads = [Quad::spread(rp_points), Quad::spread(rq_points)];
+            if let Some(c) = draws.witness(k, (p, q), quads, rng) {
                 return Some(c);
             }
         }
@@ -562,13 +573,6 @@ fn certify<K: Kernel, R: Rng + ?Sized>(
         };
         let (p_set, q_set) = if a_of == Which::P { (a, b) } else { (b, a) };
         // Before walking: a drawn vertex of one polygon in the other's sample hull.
-        let chord = |v: &[Point], [i, j]: [Option<usize>; 2]| Some((v[i?], v[j?]));
-        if (p_set, q_set) == (Set::Rp, Set::Rq)
-            && let (Some(pc), Some(qc)) = (chord(rp_points, pc), chord(rq_points, qc))
-            && let Some(c) = draws.witness(k, (p, q), [pc, qc], [rp_points, rq_points], rng)
-        {
-            return Some(c);
-        }
         let starts = |s: Set| (set(s).0, points(s));
         // A chord's ends from indices in its set to arena positions.
         let ends = |s: Set, [i, j]: [Option<usize>; 2]| {
@@ -677,12 +681,11 @@ impl Draws {
         &mut self,
         k: K,
         (p, q): (&LinkedPolygon, &LinkedPolygon),
-        [pc, qc]: [(Point, Point); 2],
-        [rp, rq]: [&[Point]; 2],
+        quads: [Quad; 2],
         rng: &mut R,
     ) -> Option<Certificate> {
         let rounds = self.rounds.unwrap_or(DRAW_ROUNDS);
-        let found = drawn_witness(k, (p, q), [Quad::new(pc, rp), Quad::new(qc, rq)], rounds, rng);
+        let found = drawn_witness(k, (p, q), quads, rounds, rng);
         if found.is_some() {
             self.found += 1;
         } else {
@@ -703,12 +706,47 @@ struct Quad {
 }
 
 impl Quad {
+    /// The quadrilateral on the chord between `sample`'s extreme points in x or in y,
+    /// whichever spread is wider, among about 16 of its points (every ⌈len/16⌉-th).
+    fn spread(sample: &[Point]) -> Quad {
+        let Some(&first) = sample.first() else {
+            return Quad {
+                chord: (Point::new(0.0, 0.0), Point::new(0.0, 0.0)),
+                left: None,
+                right: None,
+            };
+        };
+        let (mut x0, mut x1, mut y0, mut y1) = (first, first, first, first);
+        let stride = (sample.len() / 16).max(1);
+        let mut i = 0;
+        while i < sample.len() {
+            let v = sample[i];
+            i += stride;
+            if v.x < x0.x {
+                x0 = v;
+            } else if v.x > x1.x {
+                x1 = v;
+            }
+            if v.y < y0.y {
+                y0 = v;
+            } else if v.y > y1.y {
+                y1 = v;
+            }
+        }
+        let chord = if x1.x - x0.x >= y1.y - y0.y { (x0, x1) } else { (y0, y1) };
+        Quad::new(chord, sample)
+    }
+
     /// The quadrilateral on `chord` with the farthest of about 16 of `sample`'s
     /// points (every ⌈len/16⌉-th) on each side.
     fn new((a, b): (Point, Point), sample: &[Point]) -> Quad {
         let (dx, dy) = (b.x - a.x, b.y - a.y);
         let (mut left, mut right) = ((0.0, None), (0.0, None));
-        for &x in sample.iter().step_by((sample.len() / 16).max(1)) {
+        let stride = (sample.len() / 16).max(1);
+        let mut i = 0;
+        while i < sample.len() {
+            let x = sample[i];
+            i += stride;
             let h = dx * (x.y - a.y) - dy * (x.x - a.x);
             if h > left.0 {
                 left = (h, Some(x));
