@@ -501,7 +501,7 @@ fn certify<K: Kernel, R: Rng + ?Sized>(
             let samples = (a, b) == (Set::Rp, Set::Rq) || (a, b) == (Set::Rq, Set::Rp);
             // Samples the walk found meeting are in boundary order already.
             let drawn = |[pc, qc]: [(Point, Point); 2], rng: &mut R| {
-                let quads = [Quad::new(pc, rp_points), Quad::new(qc, rq_points)];
+                let quads = (|| Quad::new(pc, rp_points), || Quad::new(qc, rq_points));
                 draws.witness(k, (p, q), quads, rng)
             };
             return convex_sets_certificate(k, (p, q), (a, b), set, points, samples.then_some(drawn), rng);
@@ -534,7 +534,7 @@ fn certify<K: Kernel, R: Rng + ?Sized>(
         // A drawn vertex of one polygon in the other sample's quadrilateral.
         let samples = (a, b) == (Set::Rp, Set::Rq) || (a, b) == (Set::Rq, Set::Rp);
         if samples {
-            let quads = [Quad::spread(rp_points), Quad::spread(rq_points)];
+            let quads = (|| Quad::spread(rp_points), || Quad::spread(rq_points));
             if let Some(c) = draws.witness(k, (p, q), quads, rng) {
                 return Some(c);
             }
@@ -681,7 +681,7 @@ impl Draws {
         &mut self,
         k: K,
         (p, q): (&LinkedPolygon, &LinkedPolygon),
-        quads: [Quad; 2],
+        quads: (impl FnOnce() -> Quad, impl FnOnce() -> Quad),
         rng: &mut R,
     ) -> Option<Certificate> {
         let rounds = self.rounds.unwrap_or(DRAW_ROUNDS);
@@ -716,7 +716,7 @@ impl Quad {
                 right: None,
             };
         };
-        let (mut x0, mut x1, mut y0, mut y1) = (first, first, first, first);
+        let (mut x0, mut x1) = (first, first);
         let stride = (sample.len() / 16).max(1);
         let mut i = 0;
         while i < sample.len() {
@@ -727,13 +727,8 @@ impl Quad {
             } else if v.x > x1.x {
                 x1 = v;
             }
-            if v.y < y0.y {
-                y0 = v;
-            } else if v.y > y1.y {
-                y1 = v;
-            }
         }
-        let chord = if x1.x - x0.x >= y1.y - y0.y { (x0, x1) } else { (y0, y1) };
+        let chord = (x0, x1);
         Quad::new(chord, sample)
     }
 
@@ -783,34 +778,43 @@ impl Quad {
     }
 }
 
-/// A vertex of Q in P's quadrilateral `quads[0]` or a vertex of P in Q's `quads[1]`
-/// (sample vertices: inside their polygon), so a vertex inside, from up to `rounds`
-/// rounds of one uniform draw on each polygon (`below`, as the samples are drawn),
-/// each tested in O(1). Where the sample hulls cross, a fair part of each boundary
-/// usually lies in the other's quadrilateral, so the expected number of rounds is O(1)
-/// on such pairs; on others the rounds cost O(`rounds`) and the caller walks.
+/// A vertex of Q in P's quadrilateral (made by `quads.0`) or a vertex of P in Q's
+/// (`quads.1`), sample vertices inside their polygon, so a vertex inside, from up to
+/// `rounds` rounds of one uniform draw on each polygon (`below`, as the samples are
+/// drawn), each tested in O(1); Q's quadrilateral is made only if the first draw
+/// misses. Where the sample hulls cross, a fair part of each boundary usually lies in
+/// the other's quadrilateral, so the expected number of rounds is O(1) on such pairs;
+/// on others the rounds cost O(`rounds`) and the caller goes on.
 fn drawn_witness<K: Kernel, R: Rng + ?Sized>(
     k: K,
     (p, q): (&LinkedPolygon, &LinkedPolygon),
-    [qp, qq]: [Quad; 2],
+    quads: (impl FnOnce() -> Quad, impl FnOnce() -> Quad),
     rounds: u32,
     rng: &mut R,
 ) -> Option<Certificate> {
+    if rounds == 0 {
+        return None;
+    }
     let (n, m) = (p.len() as u32, q.len() as u32);
-    for _ in 0..rounds {
-        let y = q.point_at(below(rng, m) as usize);
-        if qp.contains(k, y) {
-            return Some(Certificate::VertexInside {
-                of: Which::Q,
-                point: y,
-            });
+    let draw_q = |rng: &mut R| q.point_at(below(rng, m) as usize);
+    let draw_p = |rng: &mut R| p.point_at(below(rng, n) as usize);
+    let inside = |of, point| Some(Certificate::VertexInside { of, point });
+    let qp = quads.0();
+    let y = draw_q(rng);
+    if qp.contains(k, y) {
+        return inside(Which::Q, y);
+    }
+    let qq = quads.1();
+    for round in 0..rounds {
+        if round > 0 {
+            let y = draw_q(rng);
+            if qp.contains(k, y) {
+                return inside(Which::Q, y);
+            }
         }
-        let x = p.point_at(below(rng, n) as usize);
+        let x = draw_p(rng);
         if qq.contains(k, x) {
-            return Some(Certificate::VertexInside {
-                of: Which::P,
-                point: x,
-            });
+            return inside(Which::P, x);
         }
     }
     None
