@@ -78,7 +78,23 @@
 //!   of its own, y usually lies in the triangle of p, that point and the previous
 //!   optimum's tangent point of p's set (or p's frame point)
 //!   ([`LpWorkspace::mixed`](crate::lp::LpWorkspace::mixed)). A point of one set in
-//!   the hull of the other's is a vertex inside. Else the points the LP examined (a
+//!   the hull of the other's is a vertex inside. Else, when the LP ran on the two
+//!   samples (nearly always the 12-point prefixes), **drawn vertices**
+//!   (`drawn_witness`): each sample gives a quadrilateral of its own vertices, hence
+//!   inside its polygon (the chord between its lowest and highest x, and the sample
+//!   vertex farthest from that chord's line on each side, by `f64` distances over at
+//!   most about 16 of its points: a guide only); then rounds of one uniform vertex
+//!   draw on each polygon (`below`, the samples' own draw), each tested against the
+//!   other polygon's quadrilateral with three orientations (a fourth checks the
+//!   triangle it lands in), so a drawn vertex inside is a vertex inside. The samples'
+//!   hulls meet, and on crossing polygons such as the generators' intersecting pairs a
+//!   fair part of each boundary lies in the other's quadrilateral, so a few rounds
+//!   usually suffice (on Rotated pairs 97–99% of these queries end here, after
+//!   about three rounds); after `DRAW_ROUNDS` (16) rounds the query goes on below.
+//!   The step costs O(1) (at most 16 rounds and two passes over about 16 points), so
+//!   the expected bound is unchanged; it replaces the cone search and the chord walk
+//!   below in nearly every query that needed them, which at 2^16 cost about three
+//!   times the plain query (docs/certificates.md). Else the points the LP examined (a
 //!   few dozen) are searched without building a hull
 //!   ([`cone_witness`](super::certificate::cone_witness)): before the violating point
 //!   x the LP's line separated them, so seen from x its own set spans less than a
@@ -98,9 +114,12 @@
 //!   strictly convex polygons (a sample in boundary order, a chain in walk order), so
 //!   Barba's certified search on the two (O(log r)) gives a vertex of one inside the
 //!   other or two crossing edges, which are chords, resolved as above (the LP is
-//!   rerun only for sets of fewer than three points). So the certified query draws
-//!   the plain one's samples, except after an LP rerun for a witness (such small sets,
-//!   or a meet found by the chain-against-chain walk).
+//!   rerun only for sets of fewer than three points); when the sets are the two
+//!   samples, drawn vertices are tried first as above, with each quadrilateral built
+//!   on its polygon's crossing edge. So the certified query draws the plain one's
+//!   samples, except after an LP rerun for a witness (such small sets, or a meet found
+//!   by the chain-against-chain walk); the drawn vertices come after the answer and
+//!   only advance the random generator further (the next query's draws differ).
 //! * Otherwise (an inconsistent kernel) only the answer, completed on the walked arrays.
 //!
 //! # Complexity
@@ -706,8 +725,8 @@ struct Quad {
 }
 
 impl Quad {
-    /// The quadrilateral on the chord between `sample`'s extreme points in x or in y,
-    /// whichever spread is wider, among about 16 of its points (every ⌈len/16⌉-th).
+    /// The quadrilateral on the chord between `sample`'s lowest and highest x among
+    /// about 16 of its points (every ⌈len/16⌉-th); empty for an empty sample.
     fn spread(sample: &[Point]) -> Quad {
         let Some(&first) = sample.first() else {
             return Quad {
