@@ -157,7 +157,7 @@ use crate::lp::{
     ArenaPoints, Bitangent, LpError, LpWorkspace, Separation, WitnessPoint, separate_chains, separating_line,
 };
 use crate::polygon::{ConvexPolygon, LinkedPolygon, SampleWorkspace, box_of};
-use rand::Rng;
+use rand::{Rng, RngCore};
 
 /// The Chazelle–Liu–Magen sublinear test with the default sample factor
 /// [`Clm::SAMPLE_FACTOR`]; see the module docs.
@@ -301,13 +301,44 @@ pub struct ClmWorkspace {
     draws: Draws,
 }
 
-/// Counts of [`drawn_witness`]: how many chord pairs a drawn vertex certified and how
-/// many were left to the walk, and (for tests) a cap on the rounds.
+/// Counts of [`drawn_witness`]: how many queries a drawn vertex certified and how many
+/// went on (to the cone search and the chord walk), (for tests) a cap on the rounds,
+/// and the generator of the draws.
 #[derive(Clone, Debug, Default)]
 struct Draws {
     found: u64,
     walked: u64,
     rounds: Option<u32>,
+    generator: SplitMix,
+}
+
+/// SplitMix64, the drawn witnesses' random generator: it lives in the workspace, so
+/// the certified call draws from the caller's generator exactly what the plain call
+/// draws (the same samples, the same answers, the same state after the query).
+#[derive(Clone, Copy, Debug, Default)]
+struct SplitMix(u64);
+
+impl RngCore for SplitMix {
+    #[inline]
+    fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+
+    #[inline]
+    fn next_u32(&mut self) -> u32 {
+        (self.next_u64() >> 32) as u32
+    }
+
+    fn fill_bytes(&mut self, dst: &mut [u8]) {
+        for chunk in dst.chunks_mut(8) {
+            let bytes = self.next_u64().to_le_bytes();
+            chunk.copy_from_slice(&bytes[..chunk.len()]);
+        }
+    }
 }
 
 /// The point sets an LP of [`clm`] ran on: samples, first chains, second chains.
@@ -460,13 +491,19 @@ impl LinkedIntersection for ClmVariant {
         for _ in work_before..ws.lp.work + ws.walked {
             probe.iteration();
         }
-        certify(k, answer, p, q, ws, rng).map_or(Derivation::Answer(answer), Derivation::Certified)
+        // The drawn witnesses' generator: the workspace's, stirred with this query's
+        // first sample positions, so the caller's generator serves the plain draws only.
+        let stir = |r: &[u32]| u64::from(r.first().copied().unwrap_or(0));
+        let mut draws = SplitMix(ws.draws.generator.0 ^ (stir(&ws.rp) << 32 | stir(&ws.rq)));
+        let certificate = certify(k, answer, p, q, ws, &mut draws);
+        ws.draws.generator = draws;
+        certificate.map_or(Derivation::Answer(answer), Derivation::Certified)
     }
 }
 
 /// The certificate of a certified query from its trace (module docs), or `None` when
 /// the trace gives none in O(1) (then the caller walks the polygons). `rng` serves the
-/// drawn witnesses ([`drawn_witness`]) before a chord walk.
+/// drawn witnesses ([`drawn_witness`]).
 fn certify<K: Kernel, R: Rng + ?Sized>(
     k: K,
     answer: bool,
@@ -2007,15 +2044,17 @@ mod tests {
     }
 
     /// Intersecting Rotated pairs (the cost measurement's family) at sizes where the
-    /// 12-point prefixes decide: some certified queries need two crossing chords
-    /// resolved, and nearly all of those are certified by a drawn vertex inside the
-    /// other sample's quadrilateral (`drawn_witness`); with the rounds capped at 0 every
-    /// such query walks instead. Every certificate verifies either way.
+    /// 12-point prefixes decide: the LP's last step leaves many certified queries
+    /// without a witness, and nearly all of those are certified by a drawn vertex
+    /// inside the other sample's quadrilateral (`drawn_witness`); with the rounds
+    /// capped at 0 every such query goes on to the cone search and the chord walk
+    /// instead. Every certificate verifies either way, and the certified call leaves
+    /// the caller's generator where the plain call does.
     #[test]
     fn drawn_witnesses_verify_and_the_walk_takes_over_when_the_rounds_run_out() {
         for cap in [None, Some(0)] {
             let mut rng = SmallRng::seed_from_u64(0xd7a3);
-            let mut ws = ClmWorkspace::default();
+            let (mut ws, mut plain_ws) = (ClmWorkspace::default(), ClmWorkspace::default());
             ws.draws.rounds = cap;
             let mut checked = 0;
             for i in 0..24 {
@@ -2028,7 +2067,12 @@ mod tests {
                 let lp = LinkedPolygon::from_convex_shuffled(&p, &mut rng);
                 let lq = LinkedPolygon::from_convex_shuffled(&q, &mut rng);
                 for _ in 0..40 {
+                    let mut plain_rng = rng.clone();
+                    let plain = Clm.intersects_in(Exact, &lp, &lq, &mut plain_rng, &mut plain_ws, &mut ());
                     let d = Clm.derive_in(Exact, &lp, &lq, &mut rng, &mut ws, &mut ());
+                    // The draws come from the workspace's generator: the caller's is
+                    // where the plain call leaves it.
+                    assert!(plain && rng == plain_rng, "#{i} (cap {cap:?})");
                     let Derivation::Certified(c) = d else {
                         panic!("#{i} (cap {cap:?}): no certificate under the exact kernel");
                     };
