@@ -84,7 +84,7 @@
 //!   inside its polygon (the chord between its lowest and highest x, and the sample
 //!   vertex farthest from that chord's line on each side, by `f64` distances over at
 //!   most about 16 of its points: a guide only); then rounds of one uniform vertex
-//!   draw on each polygon (`below`, the samples' own draw), each tested against the
+//!   draw on each polygon (`below`, as the samples are drawn), each tested against the
 //!   other polygon's quadrilateral with three orientations (a fourth checks the
 //!   triangle it lands in), so a drawn vertex inside is a vertex inside. The samples'
 //!   hulls meet, and on crossing polygons such as the generators' intersecting pairs a
@@ -118,8 +118,9 @@
 //!   samples, drawn vertices are tried first as above, with each quadrilateral built
 //!   on its polygon's crossing edge. So the certified query draws the plain one's
 //!   samples, except after an LP rerun for a witness (such small sets, or a meet found
-//!   by the chain-against-chain walk); the drawn vertices come after the answer and
-//!   only advance the random generator further (the next query's draws differ).
+//!   by the chain-against-chain walk); the drawn vertices come from the workspace's
+//!   own generator (SplitMix64, stirred with the query's first sample positions), so
+//!   the caller's generator ends where the plain call leaves it.
 //! * Otherwise (an inconsistent kernel) only the answer, completed on the walked arrays.
 //!
 //! # Complexity
