@@ -1338,11 +1338,7 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     // At the top of this loop at least one slot walks: the loop returns when none does.
     loop {
         // Step every active walk until one of them ends.
-        while !slots.iter().flatten().any(|a| a.cursor.done) {
-            for a in slots.iter_mut().flatten() {
-                a.walk.advance(k, &mut a.cursor, &mut a.buffers);
-            }
-        }
+        lockstep(k, &mut slots);
         for slot in &mut slots {
             let Some(Active { set, buffers, .. }) = slot.take_if(|a| a.cursor.done) else {
                 continue;
@@ -1526,22 +1522,25 @@ fn report_lp<P: Probe>(
 /// One chain walk (see [`walk_and_decide`]): from the tangent vertex at position `t` of
 /// `poly`, along the side where the neighbour lies strictly on the `far` side of the
 /// directed line (s, e).
+#[derive(Clone, Copy)]
 struct Walk<'a> {
     poly: &'a LinkedPolygon,
-    /// The line, its direction computed once for all the walk's side tests.
+    /// The line, directed so that the far side is its left (reversed when `far` is the
+    /// right: `orient(e, s, x) = −orient(s, e, x)`, exactly under an exact kernel), its
+    /// direction computed once for all the walk's side tests.
     line: DirectedLine,
-    far: Orientation,
     t: usize,
 }
 
 impl<'a> Walk<'a> {
     fn new(poly: &'a LinkedPolygon, s: Point, e: Point, far: Orientation, t: usize) -> Self {
-        Walk {
-            poly,
-            line: DirectedLine::new(s, e),
-            far,
-            t,
-        }
+        let line = if far == Orientation::Cw {
+            DirectedLine::new(e, s)
+        } else {
+            debug_assert_eq!(far, Orientation::Ccw);
+            DirectedLine::new(s, e)
+        };
+        Walk { poly, line, t }
     }
 }
 
@@ -1554,9 +1553,9 @@ struct Cursor {
 }
 
 impl Walk<'_> {
-    #[inline]
+    #[inline(always)]
     fn is_far<K: Kernel>(&self, k: K, x: Point) -> bool {
-        k.orient_line(&self.line, x) == self.far
+        k.orient_line(&self.line, x) == Orientation::Ccw
     }
 
     /// Starts the walk, writing its first vertices and their points to `out`.
@@ -1593,26 +1592,112 @@ impl Walk<'_> {
         }
     }
 
-    /// One step: records the current vertex and its point, and moves on unless it
-    /// closes the chain.
+    /// One step from the vertex at `v`: records it and its point in `pos` and `point`,
+    /// and returns the next vertex, or `None` if `v` closes the chain (it is not
+    /// strictly beyond the line) or the next vertex is the start (the walk went
+    /// around).
     #[inline(always)]
-    fn advance<K: Kernel>(&self, k: K, c: &mut Cursor, (out, points): &mut (Vec<u32>, Vec<Point>)) {
-        let x = self.poly.point_at(c.v);
-        out.push(c.v as u32);
-        points.push(x);
-        c.steps_left -= 1;
-        if !self.is_far(k, x) || c.steps_left == 0 {
-            c.done = true;
-            return;
+    fn step<K: Kernel>(
+        &self,
+        k: K,
+        v: usize,
+        forward: bool,
+        pos: &mut u32,
+        point: &mut Point,
+    ) -> Option<usize> {
+        let x = self.poly.point_at(v);
+        (*pos, *point) = (v as u32, x);
+        if !self.is_far(k, x) {
+            return None;
         }
-        c.v = if c.forward {
-            self.poly.next_at(c.v)
+        let next = if forward {
+            self.poly.next_at(v)
         } else {
-            self.poly.prev_at(c.v)
+            self.poly.prev_at(v)
         };
-        if c.v == self.t {
-            c.done = true;
+        (next != self.t).then_some(next)
+    }
+}
+
+/// How many steps of each walk [`lockstep`] takes between two checks of its buffers'
+/// room.
+const CHUNK: usize = 64;
+
+/// Makes room for `m` more vertices in a walk's buffers, returning the slices to write
+/// them to (the buffers are cut back to what was written by [`close`]).
+#[inline(always)]
+fn open((positions, points): &mut (Vec<u32>, Vec<Point>), m: usize) -> (&mut [u32], &mut [Point]) {
+    let len = positions.len();
+    positions.resize(len + m, 0);
+    points.resize(len + m, Point::new(0.0, 0.0));
+    (&mut positions[len..], &mut points[len..])
+}
+
+/// After `steps` steps of a chunk that [`open`] made room for `m` of: the buffers keep
+/// the vertices written, and the cursor moves to `next` (`None`: the chain is closed)
+/// or ends at the step cap.
+#[inline(always)]
+fn close(
+    (positions, points): &mut (Vec<u32>, Vec<Point>),
+    c: &mut Cursor,
+    m: usize,
+    steps: usize,
+    next: Option<usize>,
+) {
+    let len = positions.len() - (m - steps);
+    positions.truncate(len);
+    points.truncate(len);
+    c.steps_left -= steps;
+    match next {
+        Some(v) if c.steps_left > 0 => c.v = v,
+        _ => c.done = true,
+    }
+}
+
+/// Steps the active walks in lockstep (one step of each per round) until one of them
+/// ends: their cache misses overlap. The steps run in chunks written to slices, with
+/// each walk's state in locals, so that a step is a load, a side test and two stores.
+fn lockstep<K: Kernel>(k: K, slots: &mut [Option<Active<'_>>; 2]) {
+    match slots {
+        [Some(a), Some(b)] => {
+            while !a.cursor.done && !b.cursor.done {
+                let m = CHUNK.min(a.cursor.steps_left).min(b.cursor.steps_left);
+                let (wa, wb) = (a.walk, b.walk);
+                let (fa, fb) = (a.cursor.forward, b.cursor.forward);
+                let (mut va, mut vb) = (Some(a.cursor.v), Some(b.cursor.v));
+                let ((pa, xa), (pb, xb)) = (open(&mut a.buffers, m), open(&mut b.buffers, m));
+                let mut steps = 0;
+                let slots_a = pa.iter_mut().zip(xa.iter_mut());
+                for ((pa, xa), (pb, xb)) in slots_a.zip(pb.iter_mut().zip(xb.iter_mut())) {
+                    let (Some(u), Some(w)) = (va, vb) else {
+                        break;
+                    };
+                    va = wa.step(k, u, fa, pa, xa);
+                    vb = wb.step(k, w, fb, pb, xb);
+                    steps += 1;
+                }
+                close(&mut a.buffers, &mut a.cursor, m, steps, va);
+                close(&mut b.buffers, &mut b.cursor, m, steps, vb);
+            }
         }
+        [Some(a), None] | [None, Some(a)] => {
+            while !a.cursor.done {
+                let m = CHUNK.min(a.cursor.steps_left);
+                let (w, forward) = (a.walk, a.cursor.forward);
+                let mut v = Some(a.cursor.v);
+                let (positions, points) = open(&mut a.buffers, m);
+                let mut steps = 0;
+                for (pos, point) in positions.iter_mut().zip(points.iter_mut()) {
+                    let Some(u) = v else {
+                        break;
+                    };
+                    v = w.step(k, u, forward, pos, point);
+                    steps += 1;
+                }
+                close(&mut a.buffers, &mut a.cursor, m, steps, v);
+            }
+        }
+        [None, None] => {}
     }
 }
 
