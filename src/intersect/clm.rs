@@ -683,23 +683,14 @@ fn boundary_order<K: Kernel>(
     let Some(&first) = points.first() else {
         return true;
     };
-    // The lowest point, the leftmost of those; and the sample's box, for the kernel.
-    let (mut o, mut lo, mut hi) = (first, first, first);
+    // The lowest point, the leftmost of those (one comparison per point but on a new
+    // lowest or tied height).
+    let mut o = first;
     for &x in &points[1..] {
-        if x.y < o.y || (x.y == o.y && x.x < o.x) {
+        if x.y <= o.y && (x.y < o.y || x.x < o.x) {
             o = x;
         }
-        if x.x < lo.x {
-            lo.x = x.x;
-        }
-        if x.x > hi.x {
-            hi.x = x.x;
-        }
-        if x.y > hi.y {
-            hi.y = x.y;
-        }
     }
-    lo.y = o.y;
     let OrderScratch {
         entries,
         counts,
@@ -707,28 +698,27 @@ fn boundary_order<K: Kernel>(
         positions: sorted_positions,
         points: sorted_points,
     } = scratch;
-    // Each point's key above its index; and the largest |dx| + dy (infinite if a
-    // difference overflowed).
-    let mut widest = 0.0f64;
-    entries.clear();
-    entries.extend(points.iter().zip(0u32..).map(|(&x, i)| {
-        let (key, width) = angle_key(o, x);
-        if width > widest {
-            widest = width;
-        }
-        u64::from(key) << 32 | u64::from(i)
-    }));
-    if widest == f64::INFINITY {
-        return false;
-    }
-    // Counting sort on the keys' top bits, then insertion sort on the whole entries.
+    // Each point's key above its index, counted in its bucket (the key's top bits) as
+    // it is made; and the largest |dx| + dy (infinite if a difference overflowed).
     let bits = n.next_power_of_two().trailing_zeros().clamp(1, 24);
     let bucket = |entry: u64| (entry >> (64 - bits)) as usize;
     counts.clear();
     counts.resize(1 << bits, 0);
-    for &entry in entries.iter() {
-        counts[bucket(entry)] += 1;
+    let mut widest = 0.0f64;
+    entries.clear();
+    entries.resize(n, 0);
+    for ((entry, &x), i) in entries.iter_mut().zip(points.iter()).zip(0u32..) {
+        let (key, width) = angle_key(o, x);
+        if width > widest {
+            widest = width;
+        }
+        *entry = u64::from(key) << 32 | u64::from(i);
+        counts[bucket(*entry)] += 1;
     }
+    if widest == f64::INFINITY {
+        return false;
+    }
+    // Counting sort on the keys' top bits, then insertion sort on the whole entries.
     let mut sum = 0;
     for count in counts.iter_mut() {
         (*count, sum) = (sum, sum + *count);
@@ -760,13 +750,10 @@ fn boundary_order<K: Kernel>(
     sorted_positions.extend(sorted.iter().map(|&e| positions[e as u32 as usize]));
     sorted_points.clear();
     sorted_points.extend(sorted.iter().map(|&e| points[e as u32 as usize]));
-    let near_tie = |w: &[u64]| (w[1] >> 32) - (w[0] >> 32) <= 1;
-    if let Some(first) = sorted.windows(2).position(near_tie) {
-        // Every `orient` is on three points of the sample.
-        let k = k.within([(lo, hi), (lo, hi)]);
-        if !settle_near_ties(k, o, sorted, first, sorted_positions, sorted_points) {
-            return false;
-        }
+    // Every `orient` of the near-ties is on three points of the sample: rare enough
+    // that the kernel's static filter does (no box to compute for a semi-static one).
+    if !settle_near_ties(k, o, sorted, sorted_positions, sorted_points) {
+        return false;
     }
     std::mem::swap(positions, sorted_positions);
     std::mem::swap(points, sorted_points);
@@ -799,8 +786,7 @@ fn angle_key(o: Point, x: Point) -> (u32, f64) {
 }
 
 /// The last step of [`boundary_order`], in place on the sample gathered in key order
-/// (`sorted`, its entries, gives the keys; the first near-tie is at `first`, `first +
-/// 1`): each run of near-ties (consecutive keys at
+/// (`sorted`, its entries, gives the keys): each run of near-ties (consecutive keys at
 /// most one apart) is sorted by insertion with `orient` about `o`, and repeats (equal
 /// points, which have equal keys and end up adjacent) are dropped. Keys two or more
 /// apart are in the exact order ([`angle_key`]), so every point of a run is rightly
@@ -810,7 +796,6 @@ fn settle_near_ties<K: Kernel>(
     k: K,
     o: Point,
     sorted: &[u64],
-    first: usize,
     positions: &mut Vec<u32>,
     points: &mut Vec<Point>,
 ) -> bool {
@@ -818,12 +803,26 @@ fn settle_near_ties<K: Kernel>(
     let before = |a: Point, b: Point| b != o && (a == o || k.orient(o, a, b) == Orientation::Ccw);
     let mut budget = 4 * n + 16;
     let mut repeats = false;
-    let mut start = first;
-    for end in first + 1..=n {
-        if end < n && (sorted[end] >> 32) - (sorted[end - 1] >> 32) <= 1 {
+    let near_tie = |w: &[u64]| (w[1] >> 32) - (w[0] >> 32) <= 1;
+    // A near-tie's entries (key above index) differ by less than 2 · 2^32: a cheap
+    // filter for the scan, which a pair two keys apart may also pass (checked next).
+    let close = |(&a, &b): (&u64, &u64)| b - a < 2 << 32;
+    let mut from = 0;
+    while let Some(at) = sorted[from..]
+        .iter()
+        .zip(&sorted[from.min(n - 1) + 1..])
+        .position(close)
+    {
+        let start = from + at;
+        if !near_tie(&sorted[start..start + 2]) {
+            from = start + 1;
             continue;
         }
         // The run start..end.
+        let mut end = start + 2;
+        while end < n && near_tie(&sorted[end - 1..=end]) {
+            end += 1;
+        }
         for i in start + 1..end {
             let (x, at) = (points[i], positions[i]);
             let mut j = i;
@@ -839,11 +838,11 @@ fn settle_near_ties<K: Kernel>(
             (points[j], positions[j]) = (x, at);
             repeats |= j > start && points[j - 1] == x;
         }
-        start = end;
+        from = end;
     }
     if repeats {
-        let mut len = first + 1;
-        for i in first + 1..n {
+        let mut len = 1;
+        for i in 1..n {
             if points[i] != points[len - 1] {
                 (points[len], positions[len]) = (points[i], positions[i]);
                 len += 1;
