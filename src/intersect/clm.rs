@@ -631,7 +631,7 @@ fn sample<R: Rng + ?Sized>(
 ) {
     let n = poly.len();
     if r.saturating_mul(16) <= n {
-        out.extend((0..r).map(|_| below(rng, n as u32)));
+        draw_below(rng, n as u32, r, out);
     } else {
         poly.sample_positions(r, rng, marks, out);
     }
@@ -877,6 +877,21 @@ fn below_from<R: Rng + ?Sized>(bits: u32, rng: &mut R, n: u32) -> u32 {
     (m >> 32) as u32
 }
 
+/// Appends `count` independent uniform integers in `0..n` (`n > 0`) to `out`, two from
+/// each 64-bit draw (its halves are independent uniform 32-bit words, as in
+/// [`shuffle`]): half the generator's steps of [`below`] for each.
+fn draw_below<R: Rng + ?Sized>(rng: &mut R, n: u32, count: usize, out: &mut Vec<u32>) {
+    out.reserve(count);
+    for _ in 0..count / 2 {
+        let bits = rng.next_u64();
+        let first = below_from(bits as u32, rng, n);
+        out.extend([first, below_from((bits >> 32) as u32, rng, n)]);
+    }
+    if count % 2 == 1 {
+        out.push(below(rng, n));
+    }
+}
+
 /// Shuffles `positions` uniformly (Fisher–Yates), and `points` the same way when it is
 /// not empty (then it has the same length). Each 64-bit draw serves two swaps (its
 /// halves are independent uniform 32-bit words).
@@ -1111,7 +1126,7 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
             (q, rq_len, &mut ws.rq, &mut ws.rq_points),
         ] {
             let drawn = positions.len();
-            positions.extend((drawn..r).map(|_| below(rng, poly.len() as u32)));
+            draw_below(rng, poly.len() as u32, r - drawn, positions);
             points.extend(positions[drawn..].iter().map(|&i| poly.point_at(i as usize)));
         }
     }
