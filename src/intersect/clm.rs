@@ -802,7 +802,8 @@ fn settle_near_ties<K: Kernel>(
     let n = points.len();
     let before = |a: Point, b: Point| b != o && (a == o || k.orient(o, a, b) == Orientation::Ccw);
     let mut budget = 4 * n + 16;
-    let mut repeats = false;
+    // The first index whose point repeats its predecessor's (n: none).
+    let mut first_repeat = n;
     let near_tie = |w: &[u64]| (w[1] >> 32) - (w[0] >> 32) <= 1;
     // A near-tie's entries (key above index) differ by less than 2 · 2^32: a cheap
     // filter for the scan, which a pair two keys apart may also pass (checked next).
@@ -836,13 +837,17 @@ fn settle_near_ties<K: Kernel>(
                 j -= 1;
             }
             (points[j], positions[j]) = (x, at);
-            repeats |= j > start && points[j - 1] == x;
+            if j > start && points[j - 1] == x {
+                // Later insertions only move this pair right: no repeat lies before
+                // the first one recorded.
+                first_repeat = first_repeat.min(j);
+            }
         }
         from = end;
     }
-    if repeats {
-        let mut len = 1;
-        for i in 1..n {
+    if first_repeat < n {
+        let mut len = first_repeat;
+        for i in first_repeat..n {
             if points[i] != points[len - 1] {
                 (points[len], positions[len]) = (points[i], positions[i]);
                 len += 1;
@@ -881,14 +886,16 @@ fn below_from<R: Rng + ?Sized>(bits: u32, rng: &mut R, n: u32) -> u32 {
 /// each 64-bit draw (its halves are independent uniform 32-bit words, as in
 /// [`shuffle`]): half the generator's steps of [`below`] for each.
 fn draw_below<R: Rng + ?Sized>(rng: &mut R, n: u32, count: usize, out: &mut Vec<u32>) {
-    out.reserve(count);
-    for _ in 0..count / 2 {
+    let start = out.len();
+    out.resize(start + count, 0);
+    let mut pairs = out[start..].chunks_exact_mut(2);
+    for pair in &mut pairs {
         let bits = rng.next_u64();
-        let first = below_from(bits as u32, rng, n);
-        out.extend([first, below_from((bits >> 32) as u32, rng, n)]);
+        pair[0] = below_from(bits as u32, rng, n);
+        pair[1] = below_from((bits >> 32) as u32, rng, n);
     }
-    if count % 2 == 1 {
-        out.push(below(rng, n));
+    if let [last] = pairs.into_remainder() {
+        *last = below(rng, n);
     }
 }
 
