@@ -892,7 +892,7 @@ fn sample<R: Rng + ?Sized>(
 ) {
     let n = poly.len();
     if r.saturating_mul(16) <= n {
-        out.extend((0..r).map(|_| below(rng, n as u32)));
+        draw_below(rng, n as u32, r, out);
     } else {
         poly.sample_positions(r, rng, marks, out);
     }
@@ -944,23 +944,14 @@ fn boundary_order<K: Kernel>(
     let Some(&first) = points.first() else {
         return true;
     };
-    // The lowest point, the leftmost of those; and the sample's box, for the kernel.
-    let (mut o, mut lo, mut hi) = (first, first, first);
+    // The lowest point, the leftmost of those (one comparison per point but on a new
+    // lowest or tied height).
+    let mut o = first;
     for &x in &points[1..] {
-        if x.y < o.y || (x.y == o.y && x.x < o.x) {
+        if x.y <= o.y && (x.y < o.y || x.x < o.x) {
             o = x;
         }
-        if x.x < lo.x {
-            lo.x = x.x;
-        }
-        if x.x > hi.x {
-            hi.x = x.x;
-        }
-        if x.y > hi.y {
-            hi.y = x.y;
-        }
     }
-    lo.y = o.y;
     let OrderScratch {
         entries,
         counts,
@@ -968,28 +959,27 @@ fn boundary_order<K: Kernel>(
         positions: sorted_positions,
         points: sorted_points,
     } = scratch;
-    // Each point's key above its index; and the largest |dx| + dy (infinite if a
-    // difference overflowed).
-    let mut widest = 0.0f64;
-    entries.clear();
-    entries.extend(points.iter().zip(0u32..).map(|(&x, i)| {
-        let (key, width) = angle_key(o, x);
-        if width > widest {
-            widest = width;
-        }
-        u64::from(key) << 32 | u64::from(i)
-    }));
-    if widest == f64::INFINITY {
-        return false;
-    }
-    // Counting sort on the keys' top bits, then insertion sort on the whole entries.
+    // Each point's key above its index, counted in its bucket (the key's top bits) as
+    // it is made; and the largest |dx| + dy (infinite if a difference overflowed).
     let bits = n.next_power_of_two().trailing_zeros().clamp(1, 24);
     let bucket = |entry: u64| (entry >> (64 - bits)) as usize;
     counts.clear();
     counts.resize(1 << bits, 0);
-    for &entry in entries.iter() {
-        counts[bucket(entry)] += 1;
+    let mut widest = 0.0f64;
+    entries.clear();
+    entries.resize(n, 0);
+    for ((entry, &x), i) in entries.iter_mut().zip(points.iter()).zip(0u32..) {
+        let (key, width) = angle_key(o, x);
+        if width > widest {
+            widest = width;
+        }
+        *entry = u64::from(key) << 32 | u64::from(i);
+        counts[bucket(*entry)] += 1;
     }
+    if widest == f64::INFINITY {
+        return false;
+    }
+    // Counting sort on the keys' top bits, then insertion sort on the whole entries.
     let mut sum = 0;
     for count in counts.iter_mut() {
         (*count, sum) = (sum, sum + *count);
@@ -1021,13 +1011,10 @@ fn boundary_order<K: Kernel>(
     sorted_positions.extend(sorted.iter().map(|&e| positions[e as u32 as usize]));
     sorted_points.clear();
     sorted_points.extend(sorted.iter().map(|&e| points[e as u32 as usize]));
-    let near_tie = |w: &[u64]| (w[1] >> 32) - (w[0] >> 32) <= 1;
-    if let Some(first) = sorted.windows(2).position(near_tie) {
-        // Every `orient` is on three points of the sample.
-        let k = k.within([(lo, hi), (lo, hi)]);
-        if !settle_near_ties(k, o, sorted, first, sorted_positions, sorted_points) {
-            return false;
-        }
+    // Every `orient` of the near-ties is on three points of the sample: rare enough
+    // that the kernel's static filter does (no box to compute for a semi-static one).
+    if !settle_near_ties(k, o, sorted, sorted_positions, sorted_points) {
+        return false;
     }
     std::mem::swap(positions, sorted_positions);
     std::mem::swap(points, sorted_points);
@@ -1060,8 +1047,7 @@ fn angle_key(o: Point, x: Point) -> (u32, f64) {
 }
 
 /// The last step of [`boundary_order`], in place on the sample gathered in key order
-/// (`sorted`, its entries, gives the keys; the first near-tie is at `first`, `first +
-/// 1`): each run of near-ties (consecutive keys at
+/// (`sorted`, its entries, gives the keys): each run of near-ties (consecutive keys at
 /// most one apart) is sorted by insertion with `orient` about `o`, and repeats (equal
 /// points, which have equal keys and end up adjacent) are dropped. Keys two or more
 /// apart are in the exact order ([`angle_key`]), so every point of a run is rightly
@@ -1071,20 +1057,34 @@ fn settle_near_ties<K: Kernel>(
     k: K,
     o: Point,
     sorted: &[u64],
-    first: usize,
     positions: &mut Vec<u32>,
     points: &mut Vec<Point>,
 ) -> bool {
     let n = points.len();
     let before = |a: Point, b: Point| b != o && (a == o || k.orient(o, a, b) == Orientation::Ccw);
     let mut budget = 4 * n + 16;
-    let mut repeats = false;
-    let mut start = first;
-    for end in first + 1..=n {
-        if end < n && (sorted[end] >> 32) - (sorted[end - 1] >> 32) <= 1 {
+    // The first index whose point repeats its predecessor's (n: none).
+    let mut first_repeat = n;
+    let near_tie = |w: &[u64]| (w[1] >> 32) - (w[0] >> 32) <= 1;
+    // A near-tie's entries (key above index) differ by less than 2 · 2^32: a cheap
+    // filter for the scan, which a pair two keys apart may also pass (checked next).
+    let close = |(&a, &b): (&u64, &u64)| b - a < 2 << 32;
+    let mut from = 0;
+    while let Some(at) = sorted[from..]
+        .iter()
+        .zip(&sorted[from.min(n - 1) + 1..])
+        .position(close)
+    {
+        let start = from + at;
+        if !near_tie(&sorted[start..start + 2]) {
+            from = start + 1;
             continue;
         }
         // The run start..end.
+        let mut end = start + 2;
+        while end < n && near_tie(&sorted[end - 1..=end]) {
+            end += 1;
+        }
         for i in start + 1..end {
             let (x, at) = (points[i], positions[i]);
             let mut j = i;
@@ -1098,13 +1098,17 @@ fn settle_near_ties<K: Kernel>(
                 j -= 1;
             }
             (points[j], positions[j]) = (x, at);
-            repeats |= j > start && points[j - 1] == x;
+            if j > start && points[j - 1] == x {
+                // Later insertions only move this pair right: no repeat lies before
+                // the first one recorded.
+                first_repeat = first_repeat.min(j);
+            }
         }
-        start = end;
+        from = end;
     }
-    if repeats {
-        let mut len = first + 1;
-        for i in first + 1..n {
+    if first_repeat < n {
+        let mut len = first_repeat;
+        for i in first_repeat..n {
             if points[i] != points[len - 1] {
                 (points[len], positions[len]) = (points[i], positions[i]);
                 len += 1;
@@ -1137,6 +1141,23 @@ fn below_from<R: Rng + ?Sized>(bits: u32, rng: &mut R, n: u32) -> u32 {
         }
     }
     (m >> 32) as u32
+}
+
+/// Appends `count` independent uniform integers in `0..n` (`n > 0`) to `out`, two from
+/// each 64-bit draw (its halves are independent uniform 32-bit words, as in
+/// [`shuffle`]): half the generator's steps of [`below`] for each.
+fn draw_below<R: Rng + ?Sized>(rng: &mut R, n: u32, count: usize, out: &mut Vec<u32>) {
+    let start = out.len();
+    out.resize(start + count, 0);
+    let mut pairs = out[start..].chunks_exact_mut(2);
+    for pair in &mut pairs {
+        let bits = rng.next_u64();
+        pair[0] = below_from(bits as u32, rng, n);
+        pair[1] = below_from((bits >> 32) as u32, rng, n);
+    }
+    if let [last] = pairs.into_remainder() {
+        *last = below(rng, n);
+    }
 }
 
 /// Shuffles `positions` uniformly (Fisher–Yates), and `points` the same way when it is
@@ -1373,7 +1394,7 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
             (q, rq_len, &mut ws.rq, &mut ws.rq_points),
         ] {
             let drawn = positions.len();
-            positions.extend((drawn..r).map(|_| below(rng, poly.len() as u32)));
+            draw_below(rng, poly.len() as u32, r - drawn, positions);
             points.extend(positions[drawn..].iter().map(|&i| poly.point_at(i as usize)));
         }
     }
@@ -1599,11 +1620,7 @@ fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     // At the top of this loop at least one slot walks: the loop returns when none does.
     loop {
         // Step every active walk until one of them ends.
-        while !slots.iter().flatten().any(|a| a.cursor.done) {
-            for a in slots.iter_mut().flatten() {
-                a.walk.advance(k, &mut a.cursor, &mut a.buffers);
-            }
-        }
+        lockstep(k, &mut slots);
         for slot in &mut slots {
             let Some(Active { set, buffers, .. }) = slot.take_if(|a| a.cursor.done) else {
                 continue;
@@ -1787,22 +1804,25 @@ fn report_lp<P: Probe>(
 /// One chain walk (see [`walk_and_decide`]): from the tangent vertex at position `t` of
 /// `poly`, along the side where the neighbour lies strictly on the `far` side of the
 /// directed line (s, e).
+#[derive(Clone, Copy)]
 struct Walk<'a> {
     poly: &'a LinkedPolygon,
-    /// The line, its direction computed once for all the walk's side tests.
+    /// The line, directed so that the far side is its left (reversed when `far` is the
+    /// right: `orient(e, s, x) = −orient(s, e, x)`, exactly under an exact kernel), its
+    /// direction computed once for all the walk's side tests.
     line: DirectedLine,
-    far: Orientation,
     t: usize,
 }
 
 impl<'a> Walk<'a> {
     fn new(poly: &'a LinkedPolygon, s: Point, e: Point, far: Orientation, t: usize) -> Self {
-        Walk {
-            poly,
-            line: DirectedLine::new(s, e),
-            far,
-            t,
-        }
+        let line = if far == Orientation::Cw {
+            DirectedLine::new(e, s)
+        } else {
+            debug_assert_eq!(far, Orientation::Ccw);
+            DirectedLine::new(s, e)
+        };
+        Walk { poly, line, t }
     }
 }
 
@@ -1815,9 +1835,9 @@ struct Cursor {
 }
 
 impl Walk<'_> {
-    #[inline]
+    #[inline(always)]
     fn is_far<K: Kernel>(&self, k: K, x: Point) -> bool {
-        k.orient_line(&self.line, x) == self.far
+        k.orient_line(&self.line, x) == Orientation::Ccw
     }
 
     /// Starts the walk, writing its first vertices and their points to `out`.
@@ -1854,26 +1874,112 @@ impl Walk<'_> {
         }
     }
 
-    /// One step: records the current vertex and its point, and moves on unless it
-    /// closes the chain.
+    /// One step from the vertex at `v`: records it and its point in `pos` and `point`,
+    /// and returns the next vertex, or `None` if `v` closes the chain (it is not
+    /// strictly beyond the line) or the next vertex is the start (the walk went
+    /// around).
     #[inline(always)]
-    fn advance<K: Kernel>(&self, k: K, c: &mut Cursor, (out, points): &mut (Vec<u32>, Vec<Point>)) {
-        let x = self.poly.point_at(c.v);
-        out.push(c.v as u32);
-        points.push(x);
-        c.steps_left -= 1;
-        if !self.is_far(k, x) || c.steps_left == 0 {
-            c.done = true;
-            return;
+    fn step<K: Kernel>(
+        &self,
+        k: K,
+        v: usize,
+        forward: bool,
+        pos: &mut u32,
+        point: &mut Point,
+    ) -> Option<usize> {
+        let x = self.poly.point_at(v);
+        (*pos, *point) = (v as u32, x);
+        if !self.is_far(k, x) {
+            return None;
         }
-        c.v = if c.forward {
-            self.poly.next_at(c.v)
+        let next = if forward {
+            self.poly.next_at(v)
         } else {
-            self.poly.prev_at(c.v)
+            self.poly.prev_at(v)
         };
-        if c.v == self.t {
-            c.done = true;
+        (next != self.t).then_some(next)
+    }
+}
+
+/// How many steps of each walk [`lockstep`] takes between two checks of its buffers'
+/// room.
+const CHUNK: usize = 64;
+
+/// Makes room for `m` more vertices in a walk's buffers, returning the slices to write
+/// them to (the buffers are cut back to what was written by [`close`]).
+#[inline(always)]
+fn open((positions, points): &mut (Vec<u32>, Vec<Point>), m: usize) -> (&mut [u32], &mut [Point]) {
+    let len = positions.len();
+    positions.resize(len + m, 0);
+    points.resize(len + m, Point::new(0.0, 0.0));
+    (&mut positions[len..], &mut points[len..])
+}
+
+/// After `steps` steps of a chunk that [`open`] made room for `m` of: the buffers keep
+/// the vertices written, and the cursor moves to `next` (`None`: the chain is closed)
+/// or ends at the step cap.
+#[inline(always)]
+fn close(
+    (positions, points): &mut (Vec<u32>, Vec<Point>),
+    c: &mut Cursor,
+    m: usize,
+    steps: usize,
+    next: Option<usize>,
+) {
+    let len = positions.len() - (m - steps);
+    positions.truncate(len);
+    points.truncate(len);
+    c.steps_left -= steps;
+    match next {
+        Some(v) if c.steps_left > 0 => c.v = v,
+        _ => c.done = true,
+    }
+}
+
+/// Steps the active walks in lockstep (one step of each per round) until one of them
+/// ends: their cache misses overlap. The steps run in chunks written to slices, with
+/// each walk's state in locals, so that a step is a load, a side test and two stores.
+fn lockstep<K: Kernel>(k: K, slots: &mut [Option<Active<'_>>; 2]) {
+    match slots {
+        [Some(a), Some(b)] => {
+            while !a.cursor.done && !b.cursor.done {
+                let m = CHUNK.min(a.cursor.steps_left).min(b.cursor.steps_left);
+                let (wa, wb) = (a.walk, b.walk);
+                let (fa, fb) = (a.cursor.forward, b.cursor.forward);
+                let (mut va, mut vb) = (Some(a.cursor.v), Some(b.cursor.v));
+                let ((pa, xa), (pb, xb)) = (open(&mut a.buffers, m), open(&mut b.buffers, m));
+                let mut steps = 0;
+                let slots_a = pa.iter_mut().zip(xa.iter_mut());
+                for ((pa, xa), (pb, xb)) in slots_a.zip(pb.iter_mut().zip(xb.iter_mut())) {
+                    let (Some(u), Some(w)) = (va, vb) else {
+                        break;
+                    };
+                    va = wa.step(k, u, fa, pa, xa);
+                    vb = wb.step(k, w, fb, pb, xb);
+                    steps += 1;
+                }
+                close(&mut a.buffers, &mut a.cursor, m, steps, va);
+                close(&mut b.buffers, &mut b.cursor, m, steps, vb);
+            }
         }
+        [Some(a), None] | [None, Some(a)] => {
+            while !a.cursor.done {
+                let m = CHUNK.min(a.cursor.steps_left);
+                let (w, forward) = (a.walk, a.cursor.forward);
+                let mut v = Some(a.cursor.v);
+                let (positions, points) = open(&mut a.buffers, m);
+                let mut steps = 0;
+                for (pos, point) in positions.iter_mut().zip(points.iter_mut()) {
+                    let Some(u) = v else {
+                        break;
+                    };
+                    v = w.step(k, u, forward, pos, point);
+                    steps += 1;
+                }
+                close(&mut a.buffers, &mut a.cursor, m, steps, v);
+            }
+        }
+        [None, None] => {}
     }
 }
 
