@@ -167,7 +167,13 @@ fn every_experiment_writes_csv_and_svg() {
     // CLM against its memory limit and its variants: positive times at every size.
     let (header, rows) = read_csv(&dir.join("clm_limit.csv"));
     assert_eq!(rows.len(), 2 * 2, "two sizes, two relations");
-    for name in ["clm_ns", "limit_ns", "clm_over_limit"] {
+    for name in [
+        "clm_ns",
+        "limit_ns",
+        "clm_over_limit",
+        "limit_two_ns",
+        "clm_over_limit_two",
+    ] {
         for v in column(&header, &rows, name) {
             let v: f64 = v.parse().unwrap();
             assert!(v > 0.0 && v.is_finite(), "{name}: {v}");

@@ -72,16 +72,18 @@ pub(crate) fn run(config: &Config) -> io::Result<Report> {
         }
     }
     t.push_str(
-        "\nCLM against the memory limit (bare lockstep chase of its walked nodes + bare reads of its samples, same arenas, interleaved):\n\n| n | relation | CLM | limit | CLM / limit |\n|---|---|---|---|---|\n",
+        "\nCLM against the memory limit (bare lockstep chase of its walked nodes + bare reads of its samples, same arenas, interleaved; the limit with all of a query's walks in flight, and with at most two, as CLM can):\n\n| n | relation | CLM | limit | CLM / limit | two-walk limit | CLM / two-walk limit |\n|---|---|---|---|---|---|---|\n",
     );
     for l in &limits {
         t.push_str(&format!(
-            "| 2^{} | {} | {} | {} | {:.2} |\n",
+            "| 2^{} | {} | {} | {} | {:.2} | {} | {:.2} |\n",
             l.n.trailing_zeros(),
             relation_name(l.relation),
             short_ns(l.clm_ns),
             short_ns(l.limit_ns),
-            l.clm_ns / l.limit_ns
+            l.clm_ns / l.limit_ns,
+            short_ns(l.limit_two_ns),
+            l.clm_ns / l.limit_two_ns
         ));
     }
     t.push_str(&variants);
@@ -233,6 +235,8 @@ struct Limit {
     relation: Relation,
     clm_ns: f64,
     limit_ns: f64,
+    /// The limit with at most two walks in flight, in CLM's order ([`Shape::replay`]).
+    limit_two_ns: f64,
 }
 
 /// Counted queries per pair whose walks and samples the limit replays.
@@ -270,18 +274,24 @@ impl Shape {
         }
     }
 
-    /// Replays the shape: all walks in lockstep (one cursor per walk, a step reads the
-    /// node's point and follows its link), then the sampled reads, which are
-    /// independent and so overlap. Returns a sum of coordinates, for `black_box`.
-    fn replay(&self, p: &LinkedPolygon, q: &LinkedPolygon) -> f64 {
+    /// Replays the shape: the walks in lockstep, at most `in_flight` (1..=8) at a time
+    /// in CLM's order (a walk that ends hands its cursor to the next one; 8 puts all of
+    /// a query's walks in flight at once), a step reading the node's point and following
+    /// its link; then the sampled reads, which are independent and so overlap. Returns a
+    /// sum of coordinates, for `black_box`.
+    fn replay(&self, p: &LinkedPolygon, q: &LinkedPolygon, in_flight: usize) -> f64 {
         let mut acc = 0.0;
         let mut cursors = [(false, 0usize, 0usize); 8];
-        let live = self.walks.len().min(cursors.len());
-        cursors[..live].copy_from_slice(&self.walks[..live]);
-        let mut active = live;
-        while active > 0 {
-            active = 0;
-            for (on_q, v, left) in &mut cursors[..live] {
+        let live = in_flight.clamp(1, cursors.len());
+        let mut next = 0;
+        loop {
+            let mut active = 0;
+            for cursor in &mut cursors[..live] {
+                if cursor.2 == 0 && next < self.walks.len() {
+                    *cursor = self.walks[next];
+                    next += 1;
+                }
+                let (on_q, v, left) = cursor;
                 if *left == 0 {
                     continue;
                 }
@@ -290,6 +300,9 @@ impl Shape {
                 *v = poly.next_at(*v);
                 *left -= 1;
                 active += 1;
+            }
+            if active == 0 {
+                break;
             }
         }
         for (poly, positions) in [(p, &self.samples_p), (q, &self.samples_q)] {
@@ -314,6 +327,8 @@ fn limit(config: &Config, sizes: &[usize], report: &mut Report) -> io::Result<Ve
         "clm_ns",
         "limit_ns",
         "clm_over_limit",
+        "limit_two_ns",
+        "clm_over_limit_two",
         "walked_mean",
         "samples_mean",
     ]);
@@ -321,10 +336,10 @@ fn limit(config: &Config, sizes: &[usize], report: &mut Report) -> io::Result<Ve
     let mut lines: Vec<Series> = Vec::new();
     for relation in [Relation::Intersecting, Relation::Disjoint] {
         let r = relation_name(relation);
-        let mut ratio = Vec::new();
+        let (mut ratio, mut ratio_two) = (Vec::new(), Vec::new());
         for &n in sizes {
             let mut prepared = pairs(config, Family::Rotated, relation, n, config.pairs_for(n));
-            let (mut clm, mut lim) = (Vec::new(), Vec::new());
+            let (mut clm, mut lim, mut lim2) = (Vec::new(), Vec::new(), Vec::new());
             let (mut walked, mut sampled) = (0usize, 0usize);
             let mut rng = SmallRng::seed_from_u64(config.seed ^ n as u64);
             for pp in &mut prepared {
@@ -337,9 +352,10 @@ fn limit(config: &Config, sizes: &[usize], report: &mut Report) -> io::Result<Ve
                         Shape::new(&c, p, q, &mut rng)
                     })
                     .collect();
-                let (a, b) = clm_and_limit(config, pp, &shapes);
+                let (a, b, c) = clm_and_limit(config, pp, &shapes);
                 clm.push(a);
                 lim.push(b);
+                lim2.push(c);
             }
             let queries = (prepared.len() * SHAPES) as f64;
             let l = Limit {
@@ -347,6 +363,7 @@ fn limit(config: &Config, sizes: &[usize], report: &mut Report) -> io::Result<Ve
                 relation,
                 clm_ns: median(&mut clm),
                 limit_ns: median(&mut lim),
+                limit_two_ns: median(&mut lim2),
             };
             csv.row(&[
                 Family::Rotated.to_string(),
@@ -356,13 +373,17 @@ fn limit(config: &Config, sizes: &[usize], report: &mut Report) -> io::Result<Ve
                 super::ns(l.clm_ns),
                 super::ns(l.limit_ns),
                 format!("{:.3}", l.clm_ns / l.limit_ns),
+                super::ns(l.limit_two_ns),
+                format!("{:.3}", l.clm_ns / l.limit_two_ns),
                 format!("{:.1}", walked as f64 / queries),
                 format!("{:.1}", sampled as f64 / queries),
             ]);
             ratio.push((n as f64, l.clm_ns / l.limit_ns));
+            ratio_two.push((n as f64, l.clm_ns / l.limit_two_ns));
             out.push(l);
         }
         lines.push(Series::new(format!("CLM / limit, {r}"), ratio));
+        lines.push(Series::new(format!("CLM / two-walk limit, {r}"), ratio_two));
     }
     csv.write(&config.out, "clm_limit.csv", report)?;
     let chart = Chart {
@@ -377,22 +398,25 @@ fn limit(config: &Config, sizes: &[usize], report: &mut Report) -> io::Result<Ve
     Ok(out)
 }
 
-/// One pair's CLM time and limit (ns per query), timed in turn: three rounds of each,
-/// alternating, the median of each.
-fn clm_and_limit(config: &Config, pp: &mut PreparedPair, shapes: &[Shape]) -> (f64, f64) {
-    let (mut clm, mut lim) = (Vec::new(), Vec::new());
+/// One pair's CLM time and its two limits (ns per query): all of a query's walks in
+/// flight at once, and at most two (CLM's own bound: its second chains start from the
+/// lines its first chains give). Timed in turn, three rounds of each, the median of each.
+fn clm_and_limit(config: &Config, pp: &mut PreparedPair, shapes: &[Shape]) -> (f64, f64, f64) {
+    let (mut clm, mut lim, mut lim2) = (Vec::new(), Vec::new(), Vec::new());
     for _ in 0..3 {
         clm.push(time_per_query(config.min_time, || {
             pp.query(Algorithm::Clm, Precision::Exact)
         }));
         let (p, q) = pp.arenas();
-        let mut i = 0;
-        lim.push(time_per_query(config.min_time, || {
-            i = (i + 1) % shapes.len();
-            black_box(shapes[i].replay(p, q)) > f64::MAX
-        }));
+        for (in_flight, out) in [(8, &mut lim), (2, &mut lim2)] {
+            let mut i = 0;
+            out.push(time_per_query(config.min_time, || {
+                i = (i + 1) % shapes.len();
+                black_box(shapes[i].replay(p, q, in_flight)) > f64::MAX
+            }));
+        }
     }
-    (median(&mut clm), median(&mut lim))
+    (median(&mut clm), median(&mut lim), median(&mut lim2))
 }
 
 /// CLM's counts on the pairs the timing used (regenerated from the same seed), one
