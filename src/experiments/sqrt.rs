@@ -287,7 +287,9 @@ impl Shape {
         loop {
             let mut active = 0;
             for cursor in &mut cursors[..live] {
-                if cursor.2 == 0 && next < self.walks.len() {
+                // A free cursor takes the next walk (skipping empty ones, so that a
+                // round with walks left always has one in flight).
+                while cursor.2 == 0 && next < self.walks.len() {
                     *cursor = self.walks[next];
                     next += 1;
                 }
