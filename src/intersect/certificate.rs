@@ -787,9 +787,9 @@ pub(crate) fn reduce_chord<K: Kernel>(
     // end, it reads them from a slice, with no wrap-around test per probe.
     let (lo, o_next) = if i + len <= n {
         let chain = &av[i..i + len];
-        crossing_edge(k, &line, &|off: usize| chain[off], len, sigma)
+        crossing_edge(k, &line, &|off: usize| chain[off], (a, b), len, sigma)
     } else {
-        crossing_edge(k, &line, &at, len, sigma)
+        crossing_edge(k, &line, &at, (a, b), len, sigma)
     };
     let e = if i + lo >= n { i + lo - n } else { i + lo };
     let (u, v) = (av[e], at(lo + 1));
@@ -816,16 +816,24 @@ pub(crate) fn reduce_chord<K: Kernel>(
 /// The chain `at(0..=len)` has `at(0)` strictly on side `sigma` of `line` and `at(len)`
 /// strictly on the other side, and crosses the line once: the offset `lo` of the edge
 /// `at(lo)` → `at(lo + 1)` where it does (`at(lo)` on side `sigma`, `at(lo + 1)` not),
-/// with the side of `at(lo + 1)`. A binary search, one exact orientation per probe
-/// against the line's precomputed direction, turned so that `sigma`'s side is its left
-/// (each probe then asks only whether the point is strictly left); the side of
-/// `at(lo + 1)` is computed once at the end (one orientation more, unless it is
-/// `at(len)`), not carried through the probes.
+/// with the side of `at(lo + 1)`. `ends` are `at(0)` and `at(len)` (the caller's `at`
+/// may not reach `at(len)`). One exact orientation per probe against the line's
+/// precomputed direction, turned so that `sigma`'s side is its left (each probe then
+/// asks only whether the point is strictly left); the side of `at(lo + 1)` is computed
+/// once at the end (one orientation more, unless it is `at(len)`), not carried through
+/// the probes.
+///
+/// On chains of at least [`INTERPOLATE_FROM`] edges the first probes are placed by
+/// [`regula_falsi`], bisection finishing the bracket it leaves: at most twice
+/// bisection's probes, far fewer on the long chains of round polygons
+/// (docs/certificates.md, "Barba, eighth round"). Every decision is the exact
+/// orientation.
 #[inline]
 fn crossing_edge<K: Kernel>(
     k: K,
     line: &DirectedLine,
     at: &impl Fn(usize) -> Point,
+    ends: (Point, Point),
     len: usize,
     sigma: Orientation,
 ) -> (usize, Orientation) {
@@ -834,7 +842,11 @@ fn crossing_edge<K: Kernel>(
     } else {
         DirectedLine::new(line.to(), line.from())
     };
-    let (mut lo, mut hi) = (0, len);
+    let (mut lo, mut hi) = if len >= INTERPOLATE_FROM {
+        regula_falsi(k, &left, at, ends, len)
+    } else {
+        (0, len)
+    };
     while hi - lo > 1 {
         let mid = lo + (hi - lo) / 2;
         if k.orient_line(&left, at(mid)) == Orientation::Ccw {
@@ -849,6 +861,61 @@ fn crossing_edge<K: Kernel>(
         k.orient_line(line, at(hi))
     };
     (lo, o_hi)
+}
+
+/// 2^52: a float in [0, 2^52) plus this, rounded, has the integer in its low bits.
+const ROUND: f64 = 4_503_599_627_370_496.0;
+
+/// Chains at least this long are searched by [`regula_falsi`] first: on shorter ones its
+/// arithmetic costs more than the probes it saves (docs/certificates.md, "Barba, eighth
+/// round").
+const INTERPOLATE_FROM: usize = 1 << 11;
+
+/// The first ⌈log₂(len + 1)⌉ probes of [`crossing_edge`]'s search, placed by regula
+/// falsi on the chain `at(0..=len)` whose ends `(at(0), at(len))` are strictly left of
+/// `left` and not: the bracket `(lo, hi)` it leaves, `at(lo)` strictly left and `at(hi)`
+/// not. Each probe goes where the line through the bracket's ends' signed distances to
+/// `left` (in `f64`: the products the orientation's filter computes) meets zero, kept
+/// strictly inside the bracket; the decision is the exact orientation. Near the
+/// crossing the distance is nearly linear in the position on a smooth, evenly sampled
+/// chain, so the bracket closes in a few probes there (about 6 on chains of 87,381
+/// edges, against bisection's 16 or 17).
+#[inline(always)]
+fn regula_falsi<K: Kernel>(
+    k: K,
+    left: &DirectedLine,
+    at: &impl Fn(usize) -> Point,
+    (first, last): (Point, Point),
+    len: usize,
+) -> (usize, usize) {
+    let distance = |x: Point| {
+        let (l, r) = left.products(x);
+        l - r
+    };
+    let (mut lo, mut hi) = (0, len);
+    let (mut d_lo, mut d_hi) = (distance(first), distance(last));
+    let mut budget = usize::BITS - len.leading_zeros();
+    while hi - lo > 1 && budget > 0 {
+        budget -= 1;
+        let w = (hi - lo) as i64 as f64;
+        // The interpolated offset, rounded down (less a half, then to nearest), kept in
+        // [1, w − 1] (a NaN fails the first test and gives 1), then converted by adding
+        // 2^52 (exact for offsets below 2^52): a few instructions, where a saturating
+        // cast takes a dozen.
+        let t = w * (d_lo / (d_lo - d_hi)) - 0.5;
+        let t = if t > 1.0 { t } else { 1.0 };
+        let t = if t < w - 1.0 { t } else { w - 1.0 };
+        let mid = lo + ((t + ROUND).to_bits() - ROUND.to_bits()) as usize;
+        let x = at(mid);
+        if k.orient_line(left, x) == Orientation::Ccw {
+            lo = mid;
+            d_lo = distance(x);
+        } else {
+            hi = mid;
+            d_hi = distance(x);
+        }
+    }
+    (lo, hi)
 }
 
 /// An endpoint of one segment on the other segment, as a vertex-inside certificate: the
@@ -1818,7 +1885,8 @@ mod tests {
     }
 
     /// The chain search finds the crossing edge a scan finds, on every family's polygons
-    /// (touching, one-ulp, nested and ordinary pairs) for lines through two vertices,
+    /// (touching, one-ulp, nested and ordinary pairs, up to 2^12 vertices, so that long
+    /// chains take the regula falsi probes) for lines through two vertices,
     /// with the side of the edge's end; and every chord of P crossing a chord of Q properly resolves to a certificate
     /// that verifies, at ordinary scale and scaled by 2^600 and 2^-600.
     #[test]
@@ -1828,7 +1896,8 @@ mod tests {
         let mut rng = rand::rngs::SmallRng::seed_from_u64(0x1e7);
         let (mut searches, mut resolved) = (0, 0);
         for &family in Family::ALL {
-            for log2 in [3, 6, 10] {
+            // 2^12: chains long enough for `regula_falsi`.
+            for log2 in [3, 6, 10, 12] {
                 for relation in [Relation::Intersecting, Relation::Any] {
                     let Ok(base) = generate::try_pair(family, 1 << log2, relation, &mut rng) else {
                         continue;
@@ -1859,7 +1928,7 @@ mod tests {
                                 unreachable!("the chain ends off sigma's side");
                             };
                             // One crossing (a convex chain): sides hold until first_off.
-                            let (lo, o_next) = crossing_edge(Exact, &line, &at, len, sigma);
+                            let (lo, o_next) = crossing_edge(Exact, &line, &at, (at(0), at(len)), len, sigma);
                             if sides[first_off..].iter().all(|&x| !x) {
                                 assert_eq!(lo + 1, first_off, "{family:?} 2^{log2} ×{scale}");
                                 assert_eq!(o_next, Exact.orient_line(&line, at(lo + 1)));
