@@ -727,6 +727,9 @@ pub(crate) enum Reduced {
     Edge(usize, SegmentContact, Option<(Point, Orientation)>),
     /// This endpoint of the segment lies in the polygon.
     Inside(Point),
+    /// This vertex of the chain lies in the triangle of the segment and the caller's
+    /// `apex`, so in the segment's polygon.
+    Beyond(Point),
     /// Only an inconsistent kernel gets here.
     Fail,
 }
@@ -748,12 +751,19 @@ pub(crate) enum Reduced {
 ///
 /// `known`, when the caller has them: the segment's end strictly right of the chord
 /// `av[i]` → `av[j]` and the side of `av[i]` against the line s → t.
+///
+/// `apex`, when the caller has one: a point of the segment's polygon strictly right of
+/// s → t, whose triangle (s, apex, t) then lies in that polygon. The regula falsi probes
+/// on that side of the line are tested in the triangle (two orientations), and the
+/// first inside ends the search (`Reduced::Beyond`): the chain has a vertex in the
+/// segment's polygon, a witness as good as the crossing edge.
 pub(crate) fn reduce_chord<K: Kernel>(
     k: K,
     av: &[Point],
     (i, j): (usize, usize),
     (s, t): (Point, Point),
     known: Option<(Point, Orientation)>,
+    apex: Option<Point>,
 ) -> Reduced {
     let n = av.len();
     let (a, b) = (av[i], av[j]);
@@ -785,11 +795,29 @@ pub(crate) fn reduce_chord<K: Kernel>(
     }
     // The search probes offsets 1 to len − 1 only: where they do not pass the array's
     // end, it reads them from a slice, with no wrap-around test per probe.
-    let (lo, o_next) = if i + len <= n {
+    // A probe strictly on sigma's side is strictly right of s → t when sigma is
+    // clockwise; otherwise the probes not strictly on it are right of s → t or on it.
+    let in_triangle = |x: Point, on_sigma: bool| match apex {
+        Some(q) => on_sigma == (sigma == Cw) && k.orient(s, q, x) != Cw && k.orient(q, t, x) != Cw,
+        None => false,
+    };
+    let searched = if i + len <= n {
         let chain = &av[i..i + len];
-        crossing_edge(k, &line, &|off: usize| chain[off], (a, b), len, sigma)
+        crossing_edge(
+            k,
+            &line,
+            &|off: usize| chain[off],
+            (a, b),
+            len,
+            sigma,
+            &in_triangle,
+        )
     } else {
-        crossing_edge(k, &line, &at, (a, b), len, sigma)
+        crossing_edge(k, &line, &at, (a, b), len, sigma, &in_triangle)
+    };
+    let (lo, o_next) = match searched {
+        Ok(found) => found,
+        Err(x) => return Reduced::Beyond(x),
     };
     let e = if i + lo >= n { i + lo - n } else { i + lo };
     let (u, v) = (av[e], at(lo + 1));
@@ -836,14 +864,15 @@ fn crossing_edge<K: Kernel>(
     ends: (Point, Point),
     len: usize,
     sigma: Orientation,
-) -> (usize, Orientation) {
+    in_other: &impl Fn(Point, bool) -> bool,
+) -> Result<(usize, Orientation), Point> {
     let left = if sigma == Orientation::Ccw {
         *line
     } else {
         DirectedLine::new(line.to(), line.from())
     };
     let (mut lo, mut hi) = if len >= INTERPOLATE_FROM {
-        regula_falsi(k, &left, at, ends, len)
+        regula_falsi(k, &left, at, ends, len, in_other)?
     } else {
         (0, len)
     };
@@ -860,7 +889,7 @@ fn crossing_edge<K: Kernel>(
     } else {
         k.orient_line(line, at(hi))
     };
-    (lo, o_hi)
+    Ok((lo, o_hi))
 }
 
 /// 2^52: a float in [0, 2^52) plus this, rounded, has the integer in its low bits.
@@ -874,7 +903,7 @@ const INTERPOLATE_FROM: usize = 1 << 11;
 /// The first ⌈log₂(len + 1)⌉ probes of [`crossing_edge`]'s search, placed by regula
 /// falsi on the chain `at(0..=len)` whose ends `(at(0), at(len))` are strictly left of
 /// `left` and not: the bracket `(lo, hi)` it leaves, `at(lo)` strictly left and `at(hi)`
-/// not. Each probe goes where the line through the bracket's ends' signed distances to
+/// not, or the first probe `x` that `in_other(x, strictly left)` accepts. Each probe goes where the line through the bracket's ends' signed distances to
 /// `left` (in `f64`: the products the orientation's filter computes) meets zero, kept
 /// strictly inside the bracket; the decision is the exact orientation. Near the
 /// crossing the distance is nearly linear in the position on a smooth, evenly sampled
@@ -887,7 +916,8 @@ fn regula_falsi<K: Kernel>(
     at: &impl Fn(usize) -> Point,
     (first, last): (Point, Point),
     len: usize,
-) -> (usize, usize) {
+    in_other: &impl Fn(Point, bool) -> bool,
+) -> Result<(usize, usize), Point> {
     let distance = |x: Point| {
         let (l, r) = left.products(x);
         l - r
@@ -907,7 +937,11 @@ fn regula_falsi<K: Kernel>(
         let t = if t < w - 1.0 { t } else { w - 1.0 };
         let mid = lo + ((t + ROUND).to_bits() - ROUND.to_bits()) as usize;
         let x = at(mid);
-        if k.orient_line(left, x) == Orientation::Ccw {
+        let on_left = k.orient_line(left, x) == Orientation::Ccw;
+        if in_other(x, on_left) {
+            return Err(x);
+        }
+        if on_left {
             lo = mid;
             d_lo = distance(x);
         } else {
@@ -915,7 +949,7 @@ fn regula_falsi<K: Kernel>(
             d_hi = distance(x);
         }
     }
-    (lo, hi)
+    Ok((lo, hi))
 }
 
 /// An endpoint of one segment on the other segment, as a vertex-inside certificate: the
@@ -1002,11 +1036,17 @@ fn resolve_crossing<K: Kernel>(
     let q_edge = edge_between(qv.len(), c, d);
     let (e, contact, known_q) = match edge_between(pv.len(), i, j) {
         Some(e) => (e, SegmentContact::Crossing, None),
-        None => match reduce_chord(k, pv, (i, j), (s, t), known) {
+        None => match reduce_chord(k, pv, (i, j), (s, t), known, None) {
             Reduced::Edge(e, contact, next) => (e, contact, next),
             Reduced::Inside(x) => {
                 return Some(Certificate::VertexInside {
                     of: Which::Q,
+                    point: x,
+                });
+            }
+            Reduced::Beyond(x) => {
+                return Some(Certificate::VertexInside {
+                    of: Which::P,
                     point: x,
                 });
             }
@@ -1020,10 +1060,14 @@ fn resolve_crossing<K: Kernel>(
     if contact != SegmentContact::Crossing {
         return endpoint_on_other(k, (u, v), (s, t));
     }
-    match reduce_chord(k, qv, (c, d), (u, v), known_q) {
+    match reduce_chord(k, qv, (c, d), (u, v), known_q, None) {
         Reduced::Edge(f, ..) => Some(crossing(pv, e, qv, f)),
         Reduced::Inside(x) => Some(Certificate::VertexInside {
             of: Which::P,
+            point: x,
+        }),
+        Reduced::Beyond(x) => Some(Certificate::VertexInside {
+            of: Which::Q,
             point: x,
         }),
         Reduced::Fail => None,
@@ -1672,6 +1716,12 @@ pub(crate) fn resolve_linked_chords<K: Kernel>(
                     point: x,
                 });
             }
+            Reduced::Beyond(x) => {
+                return Some(Certificate::VertexInside {
+                    of: Which::P,
+                    point: x,
+                });
+            }
             Reduced::Fail => return None,
         },
     };
@@ -1702,6 +1752,10 @@ pub(crate) fn resolve_linked_chords<K: Kernel>(
         }),
         Reduced::Inside(x) => Some(Certificate::VertexInside {
             of: Which::P,
+            point: x,
+        }),
+        Reduced::Beyond(x) => Some(Certificate::VertexInside {
+            of: Which::Q,
             point: x,
         }),
         Reduced::Fail => None,
@@ -1857,7 +1911,7 @@ mod tests {
             let inside = |x: Point| (0..n).all(|i| Exact.orient(pv[i], pv[(i + 1) % n], x) != Cw);
             for (k, &(near, in_p)) in ends.iter().enumerate() {
                 let (s, t) = (pt(far), pt(near));
-                match reduce_chord(Exact, &pv, (0, 8), (s, t), None) {
+                match reduce_chord(Exact, &pv, (0, 8), (s, t), None, None) {
                     Reduced::Inside(x) => {
                         assert!(in_p && x == t && inside(x), "×{scale} {near:?}");
                     }
@@ -1868,7 +1922,7 @@ mod tests {
                             "×{scale} {near:?}: edge {e}"
                         );
                     }
-                    Reduced::Fail => panic!("×{scale} {near:?}: failed"),
+                    Reduced::Beyond(_) | Reduced::Fail => panic!("×{scale} {near:?}: failed"),
                 }
                 // The triangle test misses every end; the triangle (0, 2, 4) holds the
                 // first two only (the second on its edge), the third is an ulp beyond it.
@@ -1928,7 +1982,11 @@ mod tests {
                                 unreachable!("the chain ends off sigma's side");
                             };
                             // One crossing (a convex chain): sides hold until first_off.
-                            let (lo, o_next) = crossing_edge(Exact, &line, &at, (at(0), at(len)), len, sigma);
+                            let Ok((lo, o_next)) =
+                                crossing_edge(Exact, &line, &at, (at(0), at(len)), len, sigma, &|_, _| false)
+                            else {
+                                unreachable!("no probe is accepted");
+                            };
                             if sides[first_off..].iter().all(|&x| !x) {
                                 assert_eq!(lo + 1, first_off, "{family:?} 2^{log2} ×{scale}");
                                 assert_eq!(o_next, Exact.orient_line(&line, at(lo + 1)));
