@@ -752,10 +752,10 @@ pub(crate) enum Reduced {
 /// `known`, when the caller has them: the segment's end strictly right of the chord
 /// `av[i]` → `av[j]` and the side of `av[i]` against the line s → t.
 ///
-/// `apex`, when the caller has one: a point of the segment's polygon strictly right of
-/// s → t, whose triangle (s, apex, t) then lies in that polygon. The regula falsi probes
-/// on that side of the line are tested in the triangle (two orientations), and the
-/// first inside ends the search (`Reduced::Beyond`): the chain has a vertex in the
+/// `apex`, when the caller has one: a point of the segment's polygon, used when it is
+/// strictly right of s → t (one orientation): the triangle (s, apex, t) lies in that
+/// polygon. The regula falsi probes on that side of the line are tested in the
+/// triangle (two orientations), and the first inside ends the search (`Reduced::Beyond`): the chain has a vertex in the
 /// segment's polygon, a witness as good as the crossing edge.
 pub(crate) fn reduce_chord<K: Kernel>(
     k: K,
@@ -796,7 +796,10 @@ pub(crate) fn reduce_chord<K: Kernel>(
     // The search probes offsets 1 to len − 1 only: where they do not pass the array's
     // end, it reads them from a slice, with no wrap-around test per probe.
     // A probe strictly on sigma's side is strictly right of s → t when sigma is
-    // clockwise; otherwise the probes not strictly on it are right of s → t or on it.
+    // clockwise; otherwise the probes not strictly on it are right of s → t or on it,
+    // and on it inside the triangle only between s and t: the apex must be strictly
+    // right of s → t (checked once, only where the regula falsi probes run).
+    let apex = apex.filter(|&q| len >= INTERPOLATE_FROM && k.orient(s, t, q) == Cw);
     let in_triangle = |x: Point, on_sigma: bool| match apex {
         Some(q) => on_sigma == (sigma == Cw) && k.orient(s, q, x) != Cw && k.orient(q, t, x) != Cw,
         None => false,
