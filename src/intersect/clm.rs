@@ -573,26 +573,58 @@ fn certify<K: Kernel, R: Rng + ?Sized>(
             pos: w.index,
         };
         // The LP's last step: its violating point beyond a chord of the other set (five
-        // points, no hull to build: a vertex inside or two chords), or a mixed pair of
-        // bounds (the other set's bound in a triangle of the violating point's set).
+        // points), or a mixed pair of bounds (the other set's bound beyond a chord of
+        // the violating point's set).
+        let straddle = lp.straddle();
+        let mixed = if straddle.is_none() { lp.mixed() } else { None };
+        let samples = (a, b) == (Set::Rp, Set::Rq) || (a, b) == (Set::Rq, Set::Rp);
+        if samples {
+            // That point in the quadrilateral of the chord's sample on the chord (the
+            // sample vertex farthest beyond it on either side): no pass but that one.
+            let named = match (straddle, mixed) {
+                (Some([x, _, b, c, _]), _) => Some((x, [b, c])),
+                (None, Some([y, x, x1, _, _])) => Some((y, [x, x1])),
+                _ => None,
+            };
+            let mut quads: (Option<Quad>, Option<Quad>) = (None, None);
+            if let Some((z, [u, v])) = named {
+                let of = vertex(u).of;
+                let quad = Quad::new(
+                    (u.point, v.point),
+                    if of == Which::P { rp_points } else { rq_points },
+                );
+                if quad.contains(k, z.point) {
+                    return Some(Certificate::VertexInside {
+                        of: vertex(z).of,
+                        point: z.point,
+                    });
+                }
+                if of == Which::P {
+                    quads.0 = Some(quad);
+                } else {
+                    quads.1 = Some(quad);
+                }
+            }
+            // A drawn vertex of one polygon in the other sample's quadrilateral.
+            let quads = (
+                || quads.0.unwrap_or_else(|| Quad::spread(rp_points)),
+                || quads.1.unwrap_or_else(|| Quad::spread(rq_points)),
+            );
+            if let Some(c) = draws.witness(k, (p, q), quads, rng) {
+                return Some(c);
+            }
+        }
+        // The last step's five points: a vertex inside or two chords.
         let mut chords = None;
-        if let Some([x, x0, b, c, y0]) = lp.straddle() {
+        if let Some([x, x0, b, c, y0]) = straddle {
             match straddle_certificate(k, [vertex(x), vertex(x0)], [vertex(b), vertex(c), vertex(y0)]) {
                 Radon::Inside(c) => return Some(c),
                 Radon::Chords(pc, qc) => chords = Some((pc, qc)),
                 Radon::Nothing => {}
             }
-        } else if let Some([y, x, x1, t, x0]) = lp.mixed() {
+        } else if let Some([y, x, x1, t, x0]) = mixed {
             let (x, x1, t, x0) = (vertex(x), vertex(x1), vertex(t), vertex(x0));
             if let Some(c) = in_triangles(k, vertex(y), &[[x, x1, t], [x, x1, x0]]) {
-                return Some(c);
-            }
-        }
-        // A drawn vertex of one polygon in the other sample's quadrilateral.
-        let samples = (a, b) == (Set::Rp, Set::Rq) || (a, b) == (Set::Rq, Set::Rp);
-        if samples {
-            let quads = (|| Quad::spread(rp_points), || Quad::spread(rq_points));
-            if let Some(c) = draws.witness(k, (p, q), quads, rng) {
                 return Some(c);
             }
         }
