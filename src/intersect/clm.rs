@@ -848,8 +848,27 @@ impl Quad {
     /// Whether `y` lies in the triangle of the chord and its vertex on y's side,
     /// boundary included (three orientations; a fourth checks that vertex's side when
     /// the answer is yes). A point on the chord's line is not looked at.
+    /// Most points tested are outside: the same three signs are computed in `f64`
+    /// first (a guide), and only a point they put inside is tested exactly. A point
+    /// that rounding puts outside is missed, which only costs the caller another draw.
     #[inline]
     fn contains<K: Kernel>(&self, k: K, y: Point) -> bool {
+        let (a, b) = self.chord;
+        let turn = |u: Point, v: Point| (v.x - u.x) * (y.y - u.y) - (v.y - u.y) * (y.x - u.x);
+        let h = turn(a, b);
+        let guide = if h > 0.0 {
+            self.left.is_some_and(|w| turn(b, w) >= 0.0 && turn(w, a) >= 0.0)
+        } else if h < 0.0 {
+            self.right.is_some_and(|w| turn(a, w) >= 0.0 && turn(w, b) >= 0.0)
+        } else {
+            false
+        };
+        guide && self.contains_exactly(k, y)
+    }
+
+    /// [`contains`](Self::contains)'s test, exact.
+    #[inline(never)]
+    fn contains_exactly<K: Kernel>(&self, k: K, y: Point) -> bool {
         let (a, b) = self.chord;
         match k.orient(a, b, y) {
             Orientation::Ccw => self.left.is_some_and(|w| {
