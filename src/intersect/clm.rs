@@ -587,22 +587,16 @@ fn certify<K: Kernel, R: Rng + ?Sized>(
                 _ => None,
             };
             let mut quads: (Option<Quad>, Option<Quad>) = (None, None);
-            if let Some((z, [u, v])) = named {
-                let of = vertex(u).of;
-                let quad = Quad::new(
-                    (u.point, v.point),
-                    if of == Which::P { rp_points } else { rq_points },
-                );
-                if quad.contains(k, z.point) {
-                    return Some(Certificate::VertexInside {
-                        of: vertex(z).of,
-                        point: z.point,
-                    });
-                }
-                if of == Which::P {
-                    quads.0 = Some(quad);
-                } else {
-                    quads.1 = Some(quad);
+            // (Tests turn the quadrilaterals off with a cap of 0 rounds.)
+            if let Some((z, [u, v])) = named
+                && draws.rounds != Some(0)
+            {
+                let (z, of) = ((vertex(z).of, z.point), vertex(u).of);
+                if let Some(c) =
+                    sample_quads(k, z, (of, (u.point, v.point)), (rp_points, rq_points), &mut quads)
+                {
+                    draws.found += 1;
+                    return Some(c);
                 }
             }
             // A drawn vertex of one polygon in the other sample's quadrilateral.
@@ -884,6 +878,44 @@ impl Quad {
             Orientation::Collinear => false,
         }
     }
+}
+
+/// A sample vertex of one polygon inside the other polygon, from the LP's last step:
+/// `z` (of polygon `z.0`) beyond `chord` (two vertices of the other polygon `of`'s
+/// sample) is tested in the quadrilateral of that sample on the chord, then the rest
+/// of z's sample (already read: no draw, no arena read) in the same quadrilateral,
+/// then the chord's sample in the quadrilateral of z's sample ([`Quad::spread`]).
+/// Each sample is tested on its first [`PREFIX`] points. Else `None`, with the two
+/// quadrilaterals (P's, Q's) in `quads`, for the draws.
+fn sample_quads<K: Kernel>(
+    k: K,
+    (z_of, z): (Which, Point),
+    (of, chord): (Which, (Point, Point)),
+    (rp, rq): (&[Point], &[Point]),
+    quads: &mut (Option<Quad>, Option<Quad>),
+) -> Option<Certificate> {
+    let (chord_sample, own) = if of == Which::P { (rp, rq) } else { (rq, rp) };
+    let quad = Quad::new(chord, chord_sample);
+    if quad.contains(k, z) {
+        return Some(Certificate::VertexInside { of: z_of, point: z });
+    }
+    if let Some(&y) = own.iter().take(PREFIX).find(|&&y| y != z && quad.contains(k, y)) {
+        return Some(Certificate::VertexInside { of: z_of, point: y });
+    }
+    let own_quad = Quad::spread(own);
+    if let Some(&y) = chord_sample
+        .iter()
+        .take(PREFIX)
+        .find(|&&y| own_quad.contains(k, y))
+    {
+        return Some(Certificate::VertexInside { of, point: y });
+    }
+    *quads = if of == Which::P {
+        (Some(quad), Some(own_quad))
+    } else {
+        (Some(own_quad), Some(quad))
+    };
+    None
 }
 
 /// A vertex of Q in P's quadrilateral (made by `quads.0`) or a vertex of P in Q's
