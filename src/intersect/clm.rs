@@ -69,8 +69,18 @@
 //! * **Intersecting.** The LP reports a witness of intersecting hulls (at most nine
 //!   points: the violating point, the one or two points that bounded its 1D problem,
 //!   the previous optimum's tangent points, and a₀, b₀ and the bounding pair, which
-//!   restrict separators to the LP's half-circle of directions). Its last step is
-//!   read first, in O(1): when the violating point p failed on two points of the
+//!   restrict separators to the LP's half-circle of directions). When the LP ran on
+//!   the two samples (nearly always the 12-point prefixes), its last step names a
+//!   point z beyond a chord of the other polygon's sample (the violating point p and
+//!   the two points of the other set it failed on, or, for a mixed pair, the other
+//!   set's bound y beyond p and p's own bound): z is tested in the quadrilateral of
+//!   that sample on that chord (the sample vertex farthest beyond it on each side,
+//!   one pass of `f64` distances), then the rest of z's sample in the same
+//!   quadrilateral, then the chord's sample in the quadrilateral of z's sample
+//!   (below): sample vertices already read, no draw. Every quadrilateral test
+//!   computes its signs in `f64` first and tests exactly only a point they put
+//!   inside. Then the drawn vertices below, and only then the last step's five
+//!   points, in O(1): when the violating point p failed on two points of the
 //!   other set, one on each side of it in x′, the segment from p to its set's frame
 //!   point meets their triangle with the other frame point
 //!   ([`LpWorkspace::straddle`](crate::lp::LpWorkspace::straddle): p or that point
@@ -78,10 +88,10 @@
 //!   of its own, y usually lies in the triangle of p, that point and the previous
 //!   optimum's tangent point of p's set (or p's frame point)
 //!   ([`LpWorkspace::mixed`](crate::lp::LpWorkspace::mixed)). A point of one set in
-//!   the hull of the other's is a vertex inside. Else, when the LP ran on the two
-//!   samples (nearly always the 12-point prefixes), **drawn vertices**
+//!   the hull of the other's is a vertex inside. The **drawn vertices**
 //!   (`drawn_witness`): each sample gives a quadrilateral of its own vertices, hence
-//!   inside its polygon (the chord between its lowest and highest x, and the sample
+//!   inside its polygon (the two above where the last step named a chord; else the
+//!   chord between its lowest and highest x, and the sample
 //!   vertex farthest from that chord's line on each side, by `f64` distances over at
 //!   most about 16 of its points: a guide only); then rounds of one uniform vertex
 //!   draw on each polygon (`below`, as the samples are drawn), each tested against the
@@ -91,11 +101,11 @@
 //!   fair part of each boundary lies in the other's quadrilateral, so a few rounds
 //!   usually suffice (on Rotated pairs 97–99% of these queries end here, after
 //!   about three rounds); after `DRAW_ROUNDS` (16) rounds the query goes on below.
-//!   The step costs O(1) (at most 16 rounds and two passes over about 16 points), so
-//!   the expected bound is unchanged; it replaces the cone search and the chord walk
-//!   below in nearly every query that needed them, which at 2^16 cost about three
-//!   times the plain query (docs/certificates.md). Else the points the LP examined (a
-//!   few dozen) are searched without building a hull
+//!   The step costs O(1) (at most 16 rounds, 24 sample tests and three passes over
+//!   about 16 points), so the expected bound is unchanged; it replaces the cone
+//!   search and the chord walk below in nearly every query that needed them, which
+//!   at 2^16 cost about three times the plain query (docs/certificates.md). Else
+//!   the points the LP examined (a few dozen) are searched without building a hull
 //!   ([`cone_witness`](super::certificate::cone_witness)): before the violating point
 //!   x the LP's line separated them, so seen from x its own set spans less than a
 //!   half-turn, and a point of the other set in that cone lies in the triangle of x
