@@ -830,16 +830,27 @@ impl Quad {
     fn new((a, b): (Point, Point), sample: &[Point]) -> Quad {
         let (dx, dy) = (b.x - a.x, b.y - a.y);
         let (mut left, mut right) = ((0.0, None), (0.0, None));
-        let stride = (sample.len() / 16).max(1);
-        let mut i = 0;
-        while i < sample.len() {
-            let x = sample[i];
-            i += stride;
-            let h = dx * (x.y - a.y) - dy * (x.x - a.x);
-            if h > left.0 {
-                left = (h, Some(x));
-            } else if h < right.0 {
-                right = (h, Some(x));
+        if sample.len() <= 16 {
+            for &x in sample {
+                let h = dx * (x.y - a.y) - dy * (x.x - a.x);
+                if h > left.0 {
+                    left = (h, Some(x));
+                } else if h < right.0 {
+                    right = (h, Some(x));
+                }
+            }
+        } else {
+            let stride = sample.len() / 16;
+            let mut i = 0;
+            while i < sample.len() {
+                let x = sample[i];
+                i += stride;
+                let h = dx * (x.y - a.y) - dy * (x.x - a.x);
+                if h > left.0 {
+                    left = (h, Some(x));
+                } else if h < right.0 {
+                    right = (h, Some(x));
+                }
             }
         }
         Quad {
