@@ -69,8 +69,18 @@
 //! * **Intersecting.** The LP reports a witness of intersecting hulls (at most nine
 //!   points: the violating point, the one or two points that bounded its 1D problem,
 //!   the previous optimum's tangent points, and a₀, b₀ and the bounding pair, which
-//!   restrict separators to the LP's half-circle of directions). Its last step is
-//!   read first, in O(1): when the violating point p failed on two points of the
+//!   restrict separators to the LP's half-circle of directions). When the LP ran on
+//!   the two samples (nearly always the 12-point prefixes), its last step names a
+//!   point z beyond a chord of the other polygon's sample (the violating point p and
+//!   the two points of the other set it failed on, or, for a mixed pair, the other
+//!   set's bound y beyond p and p's own bound): z is tested in the quadrilateral of
+//!   that sample on that chord (the sample vertex farthest beyond it on each side,
+//!   one pass of `f64` distances), then the rest of z's sample in the same
+//!   quadrilateral, then the chord's sample in the quadrilateral of z's sample
+//!   (below): sample vertices already read, no draw. Every quadrilateral test
+//!   computes its signs in `f64` first and tests exactly only a point they put
+//!   inside. Then the drawn vertices below, and only then the last step's five
+//!   points, in O(1): when the violating point p failed on two points of the
 //!   other set, one on each side of it in x′, the segment from p to its set's frame
 //!   point meets their triangle with the other frame point
 //!   ([`LpWorkspace::straddle`](crate::lp::LpWorkspace::straddle): p or that point
@@ -78,10 +88,10 @@
 //!   of its own, y usually lies in the triangle of p, that point and the previous
 //!   optimum's tangent point of p's set (or p's frame point)
 //!   ([`LpWorkspace::mixed`](crate::lp::LpWorkspace::mixed)). A point of one set in
-//!   the hull of the other's is a vertex inside. Else, when the LP ran on the two
-//!   samples (nearly always the 12-point prefixes), **drawn vertices**
+//!   the hull of the other's is a vertex inside. The **drawn vertices**
 //!   (`drawn_witness`): each sample gives a quadrilateral of its own vertices, hence
-//!   inside its polygon (the chord between its lowest and highest x, and the sample
+//!   inside its polygon (the two above where the last step named a chord; else the
+//!   chord between its lowest and highest x, and the sample
 //!   vertex farthest from that chord's line on each side, by `f64` distances over at
 //!   most about 16 of its points: a guide only); then rounds of one uniform vertex
 //!   draw on each polygon (`below`, as the samples are drawn), each tested against the
@@ -91,11 +101,11 @@
 //!   fair part of each boundary lies in the other's quadrilateral, so a few rounds
 //!   usually suffice (on Rotated pairs 97–99% of these queries end here, after
 //!   about three rounds); after `DRAW_ROUNDS` (16) rounds the query goes on below.
-//!   The step costs O(1) (at most 16 rounds and two passes over about 16 points), so
-//!   the expected bound is unchanged; it replaces the cone search and the chord walk
-//!   below in nearly every query that needed them, which at 2^16 cost about three
-//!   times the plain query (docs/certificates.md). Else the points the LP examined (a
-//!   few dozen) are searched without building a hull
+//!   The step costs O(1) (at most 16 rounds, 24 sample tests and three passes over
+//!   about 16 points), so the expected bound is unchanged; it replaces the cone
+//!   search and the chord walk below in nearly every query that needed them, which
+//!   at 2^16 cost about three times the plain query (docs/certificates.md). Else
+//!   the points the LP examined (a few dozen) are searched without building a hull
 //!   ([`cone_witness`](super::certificate::cone_witness)): before the violating point
 //!   x the LP's line separated them, so seen from x its own set spans less than a
 //!   half-turn, and a point of the other set in that cone lies in the triangle of x
@@ -573,26 +583,52 @@ fn certify<K: Kernel, R: Rng + ?Sized>(
             pos: w.index,
         };
         // The LP's last step: its violating point beyond a chord of the other set (five
-        // points, no hull to build: a vertex inside or two chords), or a mixed pair of
-        // bounds (the other set's bound in a triangle of the violating point's set).
+        // points), or a mixed pair of bounds (the other set's bound beyond a chord of
+        // the violating point's set).
+        let straddle = lp.straddle();
+        let mixed = if straddle.is_none() { lp.mixed() } else { None };
+        let samples = (a, b) == (Set::Rp, Set::Rq) || (a, b) == (Set::Rq, Set::Rp);
+        if samples {
+            // That point in the quadrilateral of the chord's sample on the chord (the
+            // sample vertex farthest beyond it on either side): no pass but that one.
+            let named = match (straddle, mixed) {
+                (Some([x, _, b, c, _]), _) => Some((x, [b, c])),
+                (None, Some([y, x, x1, _, _])) => Some((y, [x, x1])),
+                _ => None,
+            };
+            let mut quads: (Option<Quad>, Option<Quad>) = (None, None);
+            // (Tests turn the quadrilaterals off with a cap of 0 rounds.)
+            if let Some((z, [u, v])) = named
+                && draws.rounds != Some(0)
+            {
+                let (z, of) = ((vertex(z).of, z.point), vertex(u).of);
+                if let Some(c) =
+                    sample_quads(k, z, (of, (u.point, v.point)), (rp_points, rq_points), &mut quads)
+                {
+                    draws.found += 1;
+                    return Some(c);
+                }
+            }
+            // A drawn vertex of one polygon in the other sample's quadrilateral.
+            let quads = (
+                || quads.0.unwrap_or_else(|| Quad::spread(rp_points)),
+                || quads.1.unwrap_or_else(|| Quad::spread(rq_points)),
+            );
+            if let Some(c) = draws.witness(k, (p, q), quads, rng) {
+                return Some(c);
+            }
+        }
+        // The last step's five points: a vertex inside or two chords.
         let mut chords = None;
-        if let Some([x, x0, b, c, y0]) = lp.straddle() {
+        if let Some([x, x0, b, c, y0]) = straddle {
             match straddle_certificate(k, [vertex(x), vertex(x0)], [vertex(b), vertex(c), vertex(y0)]) {
                 Radon::Inside(c) => return Some(c),
                 Radon::Chords(pc, qc) => chords = Some((pc, qc)),
                 Radon::Nothing => {}
             }
-        } else if let Some([y, x, x1, t, x0]) = lp.mixed() {
+        } else if let Some([y, x, x1, t, x0]) = mixed {
             let (x, x1, t, x0) = (vertex(x), vertex(x1), vertex(t), vertex(x0));
             if let Some(c) = in_triangles(k, vertex(y), &[[x, x1, t], [x, x1, x0]]) {
-                return Some(c);
-            }
-        }
-        // A drawn vertex of one polygon in the other sample's quadrilateral.
-        let samples = (a, b) == (Set::Rp, Set::Rq) || (a, b) == (Set::Rq, Set::Rp);
-        if samples {
-            let quads = (|| Quad::spread(rp_points), || Quad::spread(rq_points));
-            if let Some(c) = draws.witness(k, (p, q), quads, rng) {
                 return Some(c);
             }
         }
@@ -794,16 +830,27 @@ impl Quad {
     fn new((a, b): (Point, Point), sample: &[Point]) -> Quad {
         let (dx, dy) = (b.x - a.x, b.y - a.y);
         let (mut left, mut right) = ((0.0, None), (0.0, None));
-        let stride = (sample.len() / 16).max(1);
-        let mut i = 0;
-        while i < sample.len() {
-            let x = sample[i];
-            i += stride;
-            let h = dx * (x.y - a.y) - dy * (x.x - a.x);
-            if h > left.0 {
-                left = (h, Some(x));
-            } else if h < right.0 {
-                right = (h, Some(x));
+        if sample.len() <= 16 {
+            for &x in sample {
+                let h = dx * (x.y - a.y) - dy * (x.x - a.x);
+                if h > left.0 {
+                    left = (h, Some(x));
+                } else if h < right.0 {
+                    right = (h, Some(x));
+                }
+            }
+        } else {
+            let stride = sample.len() / 16;
+            let mut i = 0;
+            while i < sample.len() {
+                let x = sample[i];
+                i += stride;
+                let h = dx * (x.y - a.y) - dy * (x.x - a.x);
+                if h > left.0 {
+                    left = (h, Some(x));
+                } else if h < right.0 {
+                    right = (h, Some(x));
+                }
             }
         }
         Quad {
@@ -816,8 +863,27 @@ impl Quad {
     /// Whether `y` lies in the triangle of the chord and its vertex on y's side,
     /// boundary included (three orientations; a fourth checks that vertex's side when
     /// the answer is yes). A point on the chord's line is not looked at.
+    /// Most points tested are outside: the same three signs are computed in `f64`
+    /// first (a guide), and only a point they put inside is tested exactly. A point
+    /// that rounding puts outside is missed, which only costs the caller another draw.
     #[inline]
     fn contains<K: Kernel>(&self, k: K, y: Point) -> bool {
+        let (a, b) = self.chord;
+        let turn = |u: Point, v: Point| (v.x - u.x) * (y.y - u.y) - (v.y - u.y) * (y.x - u.x);
+        let h = turn(a, b);
+        let guide = if h > 0.0 {
+            self.left.is_some_and(|w| turn(b, w) >= 0.0 && turn(w, a) >= 0.0)
+        } else if h < 0.0 {
+            self.right.is_some_and(|w| turn(a, w) >= 0.0 && turn(w, b) >= 0.0)
+        } else {
+            false
+        };
+        guide && self.contains_exactly(k, y)
+    }
+
+    /// [`contains`](Self::contains)'s test, exact.
+    #[inline(never)]
+    fn contains_exactly<K: Kernel>(&self, k: K, y: Point) -> bool {
         let (a, b) = self.chord;
         match k.orient(a, b, y) {
             Orientation::Ccw => self.left.is_some_and(|w| {
@@ -833,6 +899,44 @@ impl Quad {
             Orientation::Collinear => false,
         }
     }
+}
+
+/// A sample vertex of one polygon inside the other polygon, from the LP's last step:
+/// `z` (of polygon `z.0`) beyond `chord` (two vertices of the other polygon `of`'s
+/// sample) is tested in the quadrilateral of that sample on the chord, then the rest
+/// of z's sample (already read: no draw, no arena read) in the same quadrilateral,
+/// then the chord's sample in the quadrilateral of z's sample ([`Quad::spread`]).
+/// Each sample is tested on its first [`PREFIX`] points. Else `None`, with the two
+/// quadrilaterals (P's, Q's) in `quads`, for the draws.
+fn sample_quads<K: Kernel>(
+    k: K,
+    (z_of, z): (Which, Point),
+    (of, chord): (Which, (Point, Point)),
+    (rp, rq): (&[Point], &[Point]),
+    quads: &mut (Option<Quad>, Option<Quad>),
+) -> Option<Certificate> {
+    let (chord_sample, own) = if of == Which::P { (rp, rq) } else { (rq, rp) };
+    let quad = Quad::new(chord, chord_sample);
+    if quad.contains(k, z) {
+        return Some(Certificate::VertexInside { of: z_of, point: z });
+    }
+    if let Some(&y) = own.iter().take(PREFIX).find(|&&y| y != z && quad.contains(k, y)) {
+        return Some(Certificate::VertexInside { of: z_of, point: y });
+    }
+    let own_quad = Quad::spread(own);
+    if let Some(&y) = chord_sample
+        .iter()
+        .take(PREFIX)
+        .find(|&&y| own_quad.contains(k, y))
+    {
+        return Some(Certificate::VertexInside { of, point: y });
+    }
+    *quads = if of == Which::P {
+        (Some(quad), Some(own_quad))
+    } else {
+        (Some(own_quad), Some(quad))
+    };
+    None
 }
 
 /// A vertex of Q in P's quadrilateral (made by `quads.0`) or a vertex of P in Q's

@@ -318,6 +318,38 @@ impl Default for Witness {
 }
 
 impl Witness {
+    /// Records the witness of an infeasible step, each point written in its slot
+    /// (no array of the whole witness is built and copied): the violating point and
+    /// its one or two bounds, the previous optimum's tangent points (encoded, with
+    /// their points), a₀ and b₀, and the bounding pair.
+    #[inline(always)]
+    fn record(
+        &mut self,
+        [x, q, q2]: [Item; 3],
+        [ta, tb]: [(u32, Point); 2],
+        [a0, b0]: [Point; 2],
+        [al, br]: [Item; 2],
+        examined: usize,
+    ) {
+        let of = |enc: u32, point: Point| WitnessPoint {
+            point,
+            in_b: enc & B_BIT != 0,
+            index: Some((enc & !B_BIT) as usize),
+        };
+        let w = &mut self.points;
+        w[0] = of(x.enc, x.p);
+        w[1] = of(q.enc, q.p);
+        w[2] = of(q2.enc, q2.p);
+        w[3] = of(ta.0, ta.1);
+        w[4] = of(tb.0, tb.1);
+        w[5] = of(0, a0);
+        w[6] = of(B_BIT, b0);
+        w[7] = of(al.enc, al.p);
+        w[8] = of(br.enc, br.p);
+        self.len = WITNESS;
+        self.examined = examined;
+    }
+
     fn set(&mut self, points: &[WitnessPoint], examined: usize) {
         self.len = points.len().min(WITNESS);
         self.points[..self.len].copy_from_slice(&points[..self.len]);
@@ -891,16 +923,7 @@ fn incremental<K: Kernel, S: Load, const RECORD: bool>(
             Step::Infeasible(q, q2) => {
                 *work += w;
                 if RECORD {
-                    let item = |(enc, p)| Item { p, enc, loaded: true };
-                    let (a, b) = (item(ta), item(tb));
-                    let frame = [item((0, a0)), item((B_BIT, b0)), al, br];
-                    let points = [items[t], q, q2, a, b, frame[0], frame[1], frame[2], frame[3]];
-                    // Written in place: the whole witness.
-                    *witness = Witness {
-                        points: points.map(WitnessPoint::of),
-                        len: WITNESS,
-                        examined: t + 1,
-                    };
+                    witness.record([items[t], q, q2], [ta, tb], [a0, b0], [al, br], t + 1);
                 }
                 return StepOut::Infeasible;
             }
