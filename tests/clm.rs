@@ -6,8 +6,8 @@
 
 use polysect::generate::{Family, Relation, map_pair, pair, regular_polygon};
 use polysect::intersect::{
-    Algorithm, ArrayIntersection, Clm, ClmVariant, ClmWithFactor, ClmWorkspace, Convert, ConvertWorkspace,
-    Iterations, Linear, LinkedIntersection, LpOrder, Sampling,
+    Algorithm, ArrayIntersection, Certificate, Clm, ClmVariant, ClmWithFactor, ClmWorkspace, Convert,
+    ConvertWorkspace, Counts, Iterations, Linear, LinkedIntersection, LpOrder, Sampling, verify_linked,
 };
 use polysect::{ConvexPolygon, Exact, Fast, LinkedPolygon, Point, Precision};
 use rand::rngs::SmallRng;
@@ -315,20 +315,22 @@ fn algorithm_enum_and_probe() {
 }
 
 /// The thesis's variants (Fisher–Yates sampling, the caller randomising the LP), with
-/// and without the chain-against-chain walk and the samples in boundary order, answer
-/// as `Linear` does under the exact kernel, on the touching families and random pairs,
-/// several seeds per pair.
+/// and without the chain-against-chain walk, the samples in boundary order and the
+/// prefixes' quadrilaterals, answer as `Linear` does under the exact kernel, on the
+/// touching families and random pairs, several seeds per pair.
 #[test]
 fn thesis_variants_agree_with_linear() {
     let mut rng = SmallRng::seed_from_u64(SEED + 9);
     let mut ws = ClmWorkspace::default();
-    // (sampling, LP order, chain-against-chain walk, samples in boundary order)
+    // (sampling, LP order, chain-against-chain walk, samples in boundary order, the
+    // prefixes' quadrilaterals)
     let variants = [
-        (Sampling::FisherYates, LpOrder::Lp, true, true),
-        (Sampling::Independent, LpOrder::Caller, false, true),
-        (Sampling::Independent, LpOrder::Caller, true, false),
-        (Sampling::FisherYates, LpOrder::Caller, false, false),
-        (Sampling::Independent, LpOrder::Lp, false, false),
+        (Sampling::FisherYates, LpOrder::Lp, true, true, true),
+        (Sampling::Independent, LpOrder::Caller, false, true, true),
+        (Sampling::Independent, LpOrder::Caller, true, true, false),
+        (Sampling::Independent, LpOrder::Caller, true, false, true),
+        (Sampling::FisherYates, LpOrder::Caller, false, false, true),
+        (Sampling::Independent, LpOrder::Lp, false, false, true),
     ];
     let (mut queries, mut intersecting) = (0u32, 0u32);
     for &family in Family::TOUCHING.iter().chain([Family::Rotated].iter()) {
@@ -339,19 +341,20 @@ fn thesis_variants_agree_with_linear() {
                 let truth = Linear.intersects_with(Exact, &p, &q);
                 let lp = LinkedPolygon::from_convex_shuffled(&p, &mut rng);
                 let lq = LinkedPolygon::from_convex_shuffled(&q, &mut rng);
-                for (sampling, lp_order, chain_walk, sample_walk) in variants {
+                for (sampling, lp_order, chain_walk, sample_walk, prefix_quads) in variants {
                     let v = ClmVariant {
                         sampling,
                         lp_order,
                         chain_walk,
                         sample_walk,
+                        prefix_quads,
                         ..ClmVariant::default()
                     };
                     for _ in 0..3 {
                         let got = v.intersects_in(Exact, &lp, &lq, &mut rng, &mut ws, &mut ());
                         assert_eq!(
                             got, truth,
-                            "{family:?} n = {n}, {sampling:?}, {lp_order:?}, {chain_walk}, {sample_walk}"
+                            "{family:?} n = {n}, {sampling:?}, {lp_order:?}, {chain_walk}, {sample_walk}, {prefix_quads}"
                         );
                         queries += 1;
                         intersecting += u32::from(got);
@@ -363,5 +366,57 @@ fn thesis_variants_agree_with_linear() {
     assert!(
         intersecting > queries / 5 && intersecting < queries * 4 / 5,
         "{intersecting} of {queries}"
+    );
+}
+
+/// The prefixes' quadrilaterals: on every family and at sizes where the samples have
+/// more than a prefix, a query they answer is intersecting and its certificate (the
+/// vertex inside) verifies; they answer most intersecting queries on the crossing
+/// families, never a disjoint one, and with or without them the answers are the same.
+#[test]
+fn prefix_quadrilaterals_answer_only_intersecting_queries_with_verified_certificates() {
+    let mut rng = SmallRng::seed_from_u64(SEED + 21);
+    let mut ws = ClmWorkspace::default();
+    let without = ClmVariant {
+        prefix_quads: false,
+        ..ClmVariant::default()
+    };
+    let (mut rotated, mut rotated_inside) = (0usize, 0usize);
+    for &family in Family::ALL {
+        for relation in [Relation::Intersecting, Relation::Disjoint] {
+            for i in 0..8 {
+                // 2^9 .. 2^14 vertices: samples of 23 .. 128 points.
+                let n = 1 << (9 + i % 6);
+                let (p, q) = pair(family, n, relation, &mut rng);
+                let truth = Linear.intersects_with(Exact, &p, &q);
+                let lp = LinkedPolygon::from_convex_shuffled(&p, &mut rng);
+                let lq = LinkedPolygon::from_convex_shuffled(&q, &mut rng);
+                for _ in 0..4 {
+                    let mut counts = Counts::default();
+                    let c = Clm.certified_in(Exact, &lp, &lq, &mut rng, &mut ws, &mut counts);
+                    assert_eq!(c.intersects(), truth, "{family:?} n = {n}");
+                    assert_eq!(verify_linked(&lp, &lq, &c), Ok(()), "{family:?} n = {n}");
+                    if counts.inside > 0 {
+                        assert!(truth, "{family:?} n = {n}: a vertex inside on disjoint polygons");
+                        assert!(
+                            matches!(c, Certificate::VertexInside { .. }),
+                            "{family:?} n = {n}: {c:?}"
+                        );
+                        // Answered before any LP.
+                        assert_eq!(counts.lp_calls(), 0, "{family:?} n = {n}");
+                    }
+                    if family == Family::Rotated && truth {
+                        rotated += 1;
+                        rotated_inside += counts.inside;
+                    }
+                    let plain = without.intersects_in(Exact, &lp, &lq, &mut rng, &mut ws, &mut ());
+                    assert_eq!(plain, truth, "{family:?} n = {n}, without the quadrilaterals");
+                }
+            }
+        }
+    }
+    assert!(
+        rotated_inside * 10 > rotated * 8,
+        "{rotated_inside} of {rotated} intersecting Rotated queries answered by a vertex inside"
     );
 }

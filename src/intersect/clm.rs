@@ -263,6 +263,12 @@ pub struct ClmVariant {
     /// order: chains are not shuffled, and an LP that still runs (a walk without an
     /// answer, a certified query's witness) shuffles its points itself.
     pub sample_walk: bool,
+    /// Whether, with [`sample_walk`](Self::sample_walk), the prefixes' quadrilaterals
+    /// are tried first (the default): a prefix vertex of one polygon in a quadrilateral
+    /// of the other's prefix answers an intersecting query before the prefix LP, and
+    /// the next points of the samples are tried in the same quadrilaterals before the
+    /// samples are put in order. Each test certifies its answer (a vertex inside).
+    pub prefix_quads: bool,
 }
 
 impl Default for ClmVariant {
@@ -273,6 +279,7 @@ impl Default for ClmVariant {
             lp_order: LpOrder::default(),
             chain_walk: true,
             sample_walk: true,
+            prefix_quads: true,
         }
     }
 }
@@ -378,7 +385,13 @@ impl Set {
 /// separates (A on its right, B on its left).
 #[derive(Clone, Debug, Default)]
 struct Trace {
+    /// A sample vertex the prefix test ([`prefix_inside`]) found inside the other
+    /// polygon (which polygon it is a vertex of, the point): the certificate itself.
+    inside: Option<(Which, Point)>,
     meet: Option<(Set, Set)>,
+    /// The prefixes' quadrilaterals (P's, Q's) that the prefix test tried, when the
+    /// prefix LP found the prefixes' hulls intersecting.
+    spread: Option<(Quad, Quad)>,
     lines: Vec<(Bitangent, Set, Set)>,
 }
 
@@ -559,6 +572,9 @@ fn certify<K: Kernel, R: Rng + ?Sized>(
         }
     };
     if answer {
+        if let Some((of, point)) = trace.inside {
+            return Some(Certificate::VertexInside { of, point });
+        }
         // The LP's witness; else a vertex inside among the points it examined; else its
         // two crossing chords, resolved by walks from the nearest sample or chain vertex.
         let (a, b) = trace.meet?;
@@ -596,7 +612,8 @@ fn certify<K: Kernel, R: Rng + ?Sized>(
                 (None, Some([y, x, x1, _, _])) => Some((y, [x, x1])),
                 _ => None,
             };
-            let mut quads: (Option<Quad>, Option<Quad>) = (None, None);
+            // The prefix test's quadrilaterals, where it ran: their tests are done.
+            let mut quads = trace.spread.map_or((None, None), |(a, b)| (Some(a), Some(b)));
             // (Tests turn the quadrilaterals off with a cap of 0 rounds.)
             if let Some((z, [u, v])) = named
                 && draws.rounds != Some(0)
@@ -802,61 +819,59 @@ impl Quad {
     /// The quadrilateral on the chord between `sample`'s lowest and highest x among
     /// about 16 of its points (every ⌈len/16⌉-th); empty for an empty sample.
     fn spread(sample: &[Point]) -> Quad {
-        let Some(&first) = sample.first() else {
+        let Some(first) = sample.first() else {
             return Quad {
                 chord: (Point::new(0.0, 0.0), Point::new(0.0, 0.0)),
                 left: None,
                 right: None,
             };
         };
-        let (mut x0, mut x1) = (first, first);
-        let stride = (sample.len() / 16).max(1);
-        let mut i = 0;
-        while i < sample.len() {
-            let v = sample[i];
-            i += stride;
-            if v.x < x0.x {
-                x0 = v;
-            } else if v.x > x1.x {
-                x1 = v;
+        // Indices and coordinates, not points, are carried through the loop.
+        let (mut lo, mut hi, mut lo_x, mut hi_x) = (0, 0, first.x, first.x);
+        let (stride, mut i) = (Quad::stride(sample), 0);
+        while let Some(v) = sample.get(i) {
+            if v.x < lo_x {
+                (lo, lo_x) = (i, v.x);
+            } else if v.x > hi_x {
+                (hi, hi_x) = (i, v.x);
             }
+            i += stride;
         }
-        let chord = (x0, x1);
-        Quad::new(chord, sample)
+        Quad::new((sample[lo], sample[hi]), sample)
+    }
+
+    /// The corners counter-clockwise: the chord's ends and the vertices right and left
+    /// of it (a chord end repeats for a missing one).
+    fn corners(&self) -> [Point; 4] {
+        let (a, b) = self.chord;
+        [a, self.right.unwrap_or(a), b, self.left.unwrap_or(b)]
+    }
+
+    /// The step through a sample that visits about 16 of its points.
+    #[inline]
+    fn stride(sample: &[Point]) -> usize {
+        (sample.len() / 16).max(1)
     }
 
     /// The quadrilateral on `chord` with the farthest of about 16 of `sample`'s
     /// points (every ⌈len/16⌉-th) on each side.
     fn new((a, b): (Point, Point), sample: &[Point]) -> Quad {
         let (dx, dy) = (b.x - a.x, b.y - a.y);
-        let (mut left, mut right) = ((0.0, None), (0.0, None));
-        if sample.len() <= 16 {
-            for &x in sample {
-                let h = dx * (x.y - a.y) - dy * (x.x - a.x);
-                if h > left.0 {
-                    left = (h, Some(x));
-                } else if h < right.0 {
-                    right = (h, Some(x));
-                }
+        let (mut left, mut right) = ((0.0, usize::MAX), (0.0, usize::MAX));
+        let (stride, mut i) = (Quad::stride(sample), 0);
+        while let Some(x) = sample.get(i) {
+            let h = dx * (x.y - a.y) - dy * (x.x - a.x);
+            if h > left.0 {
+                left = (h, i);
+            } else if h < right.0 {
+                right = (h, i);
             }
-        } else {
-            let stride = sample.len() / 16;
-            let mut i = 0;
-            while i < sample.len() {
-                let x = sample[i];
-                i += stride;
-                let h = dx * (x.y - a.y) - dy * (x.x - a.x);
-                if h > left.0 {
-                    left = (h, Some(x));
-                } else if h < right.0 {
-                    right = (h, Some(x));
-                }
-            }
+            i += stride;
         }
         Quad {
             chord: (a, b),
-            left: left.1,
-            right: right.1,
+            left: sample.get(left.1).copied(),
+            right: sample.get(right.1).copied(),
         }
     }
 
@@ -905,9 +920,11 @@ impl Quad {
 /// `z` (of polygon `z.0`) beyond `chord` (two vertices of the other polygon `of`'s
 /// sample) is tested in the quadrilateral of that sample on the chord, then the rest
 /// of z's sample (already read: no draw, no arena read) in the same quadrilateral,
-/// then the chord's sample in the quadrilateral of z's sample ([`Quad::spread`]).
-/// Each sample is tested on its first [`PREFIX`] points. Else `None`, with the two
-/// quadrilaterals (P's, Q's) in `quads`, for the draws.
+/// then the chord's sample in the quadrilateral of z's sample ([`Quad::spread`]),
+/// unless `quads` (P's, Q's) holds that one already: then the prefix test
+/// ([`prefix_inside`]) has done that test. Each sample is tested on its first
+/// [`PREFIX`] points. Else `None`, with the two quadrilaterals (P's, Q's) in `quads`,
+/// for the draws.
 fn sample_quads<K: Kernel>(
     k: K,
     (z_of, z): (Which, Point),
@@ -923,11 +940,13 @@ fn sample_quads<K: Kernel>(
     if let Some(&y) = own.iter().take(PREFIX).find(|&&y| y != z && quad.contains(k, y)) {
         return Some(Certificate::VertexInside { of: z_of, point: y });
     }
-    let own_quad = Quad::spread(own);
-    if let Some(&y) = chord_sample
-        .iter()
-        .take(PREFIX)
-        .find(|&&y| own_quad.contains(k, y))
+    let tested = if of == Which::P { quads.1 } else { quads.0 };
+    let own_quad = tested.unwrap_or_else(|| Quad::spread(own));
+    if tested.is_none()
+        && let Some(&y) = chord_sample
+            .iter()
+            .take(PREFIX)
+            .find(|&&y| own_quad.contains(k, y))
     {
         return Some(Certificate::VertexInside { of, point: y });
     }
@@ -1341,6 +1360,44 @@ fn fisher_yates<R: Rng + ?Sized>(
 /// sample that a first LP tries before they are put in order.
 const PREFIX: usize = 12;
 
+/// How many points of each sample after its prefix are tested in the prefixes'
+/// quadrilaterals when the prefix LP finds the prefixes' hulls disjoint.
+const NEXT: usize = 20;
+
+/// The [`NEXT`] points of a sample after its prefix (fewer if it has fewer).
+fn next_points(sample: &[Point]) -> &[Point] {
+    &sample[PREFIX.min(sample.len())..(PREFIX + NEXT).min(sample.len())]
+}
+
+/// A point of `a` (P's prefix) in `b`'s quadrilateral ([`Quad::spread`]), or of `b`
+/// (Q's prefix) in `a`'s, taken alternately: which polygon it is a vertex of, the
+/// point, and how many points were tested. Each quadrilateral has sample vertices for
+/// corners, so it lies inside its polygon and a point in it is a vertex inside, an
+/// intersection with its certificate. O(|a| + |b|); each test computes `f64` signs,
+/// then (only for a point they put inside) exact orientations ([`Quad::contains`]). A
+/// miss (a point rounding puts outside, or on the chord's line) only leaves the query
+/// to the LP.
+#[inline(never)]
+fn prefix_inside<K: Kernel>(
+    k: K,
+    (a, qa): (&[Point], &Quad),
+    (b, qb): (&[Point], &Quad),
+) -> Option<(Which, Point, u64)> {
+    for i in 0..a.len().max(b.len()) {
+        if let Some(&y) = b.get(i)
+            && qa.contains(k, y)
+        {
+            return Some((Which::Q, y, 2 * i as u64 + 1));
+        }
+        if let Some(&x) = a.get(i)
+            && qb.contains(k, x)
+        {
+            return Some((Which::P, x, 2 * i as u64 + 2));
+        }
+    }
+    None
+}
+
 /// ⌈c·√n⌉, at least 3.
 fn sample_size(c: f64, n: usize) -> usize {
     let r = (c * (n as f64).sqrt()).ceil();
@@ -1420,6 +1477,34 @@ fn walk_or_lp<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     counted_lp_after(k, (a, a_points), (b, b_points), lp.work - before, rng, lp, probe)
 }
 
+/// Ends a query that [`prefix_inside`] answered with `found` (in `quads`, P's and
+/// Q's): counts the points tested as work, reports the samples and the vertex inside
+/// to `probe`, and with `CERT` records the certificate. The answer: intersecting.
+fn inside_found<P: Probe, const CERT: bool>(
+    (p, q): (&LinkedPolygon, &LinkedPolygon),
+    (of, point, tested): (Which, Point, u64),
+    quads: &(Quad, Quad),
+    ws: &mut ClmWorkspace,
+    probe: &mut P,
+) -> bool {
+    ws.lp.work += tested;
+    let rp = ArenaPoints {
+        polygon: p,
+        positions: &ws.rp,
+    };
+    let rq = ArenaPoints {
+        polygon: q,
+        positions: &ws.rq,
+    };
+    probe.samples(&rp, &rq);
+    let quad = if of == Which::P { &quads.1 } else { &quads.0 };
+    probe.sample_inside(of, point, quad.corners());
+    if CERT {
+        ws.trace.inside = Some((of, point));
+    }
+    true
+}
+
 /// The test; with `CERT` it also records in `ws.trace` what its certificate needs.
 fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     k: K,
@@ -1431,7 +1516,9 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     probe: &mut P,
 ) -> bool {
     if CERT {
+        ws.trace.inside = None;
         ws.trace.meet = None;
+        ws.trace.spread = None;
         ws.trace.lines.clear();
     }
     ws.lp.record_witness(CERT);
@@ -1482,10 +1569,24 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     // prefix of each sample answers most intersecting queries before the samples are
     // put in order (a prefix of a random sample is a random sample).
     let mut spent = 0;
-    if v.sample_walk && (rp_len > PREFIX || rq_len > PREFIX) {
+    let prefix_lp = v.sample_walk && (rp_len > PREFIX || rq_len > PREFIX);
+    // The prefixes' quadrilaterals (P's, Q's).
+    let prefix_quads = (prefix_lp && v.prefix_quads).then(|| {
+        let a = &ws.rp_points[..ws.rp.len().min(PREFIX)];
+        let b = &ws.rq_points[..ws.rq.len().min(PREFIX)];
+        (Quad::spread(a), Quad::spread(b))
+    });
+    if prefix_lp {
         let before = ws.lp.work;
         let a = &ws.rp_points[..ws.rp.len().min(PREFIX)];
         let b = &ws.rq_points[..ws.rq.len().min(PREFIX)];
+        // A prefix vertex of one polygon in a quadrilateral of the other prefix's
+        // points answers most intersecting queries before any LP.
+        if let Some(quads) = &prefix_quads
+            && let Some(found) = prefix_inside(k, (a, &quads.0), (b, &quads.1))
+        {
+            return inside_found::<P, CERT>((p, q), found, quads, ws, probe);
+        }
         // Distinct samples come in arena order: the LP shuffles them.
         let random = v.sampling == Sampling::FisherYates || independent;
         ws.lp.keep_order(random);
@@ -1506,6 +1607,7 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
             if CERT {
                 // The witness's indices are the prefixes', the samples' own.
                 ws.trace.meet = Some((Set::Rp, Set::Rq));
+                ws.trace.spread = prefix_quads;
             }
             return true;
         }
@@ -1519,6 +1621,15 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
             let drawn = positions.len();
             draw_below(rng, poly.len() as u32, r - drawn, positions);
             points.extend(positions[drawn..].iter().map(|&i| poly.point_at(i as usize)));
+        }
+        // The next points of each sample in the prefixes' quadrilaterals: most
+        // intersecting queries the prefix LP did not answer end here, before the
+        // samples are put in order.
+        if let Some(quads) = &prefix_quads {
+            let (a, b) = (next_points(&ws.rp_points), next_points(&ws.rq_points));
+            if let Some(found) = prefix_inside(k, (a, &quads.0), (b, &quads.1)) {
+                return inside_found::<P, CERT>((p, q), found, quads, ws, probe);
+            }
         }
     }
     // Both samples in boundary order, or neither: then the LPs decide.
@@ -2285,6 +2396,12 @@ mod tests {
         for cap in [None, Some(0)] {
             let mut rng = SmallRng::seed_from_u64(0xd7a3);
             let (mut ws, mut plain_ws) = (ClmWorkspace::default(), ClmWorkspace::default());
+            // Without the prefix test, which answers most of these queries before any
+            // LP and so before the draws.
+            let clm = super::ClmVariant {
+                prefix_quads: false,
+                ..super::ClmVariant::default()
+            };
             ws.draws.rounds = cap;
             let mut checked = 0;
             for i in 0..24 {
@@ -2298,8 +2415,8 @@ mod tests {
                 let lq = LinkedPolygon::from_convex_shuffled(&q, &mut rng);
                 for _ in 0..40 {
                     let mut plain_rng = rng.clone();
-                    let plain = Clm.intersects_in(Exact, &lp, &lq, &mut plain_rng, &mut plain_ws, &mut ());
-                    let d = Clm.derive_in(Exact, &lp, &lq, &mut rng, &mut ws, &mut ());
+                    let plain = clm.intersects_in(Exact, &lp, &lq, &mut plain_rng, &mut plain_ws, &mut ());
+                    let d = clm.derive_in(Exact, &lp, &lq, &mut rng, &mut ws, &mut ());
                     // The draws come from the workspace's generator: the caller's is
                     // where the plain call leaves it.
                     assert!(plain && rng == plain_rng, "#{i} (cap {cap:?})");

@@ -8,7 +8,8 @@
 //! CLM query), so experiments fill a `Counts` in an untimed run and time the plain
 //! query separately.
 
-use super::Probe;
+use super::{Probe, Which};
+use crate::kernel::Point;
 use crate::lp::{ArenaPoints, LpError, Separation};
 
 /// One LP call of a CLM query.
@@ -45,6 +46,9 @@ pub struct Counts {
     pub lps: Vec<LpCall>,
     /// CLM's chain walks, vertices collected by each, in the order they ran.
     pub walks: Vec<usize>,
+    /// CLM queries answered by a sample vertex in a quadrilateral of the other
+    /// polygon's sample ([`Probe::sample_inside`]).
+    pub inside: usize,
 }
 
 impl Counts {
@@ -55,6 +59,7 @@ impl Counts {
         self.samples_q = 0;
         self.lps.clear();
         self.walks.clear();
+        self.inside = 0;
     }
 
     /// Number of LP calls.
@@ -112,6 +117,10 @@ impl Probe for Counts {
 
     fn chain_walk(&mut self, chain: &ArenaPoints<'_>) {
         self.walks.push(chain.positions.len());
+    }
+
+    fn sample_inside(&mut self, _of: Which, _point: Point, _quad: [Point; 4]) {
+        self.inside += 1;
     }
 }
 

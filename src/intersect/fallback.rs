@@ -48,6 +48,7 @@ pub(crate) fn complete<K: Kernel, P: Probe>(
 
 /// [`complete`] for linked polygons: a certificate passes through unchanged, an answer
 /// alone is completed on the walked arrays.
+#[inline]
 pub(crate) fn complete_linked<K: Kernel, P: Probe>(
     k: K,
     p: &LinkedPolygon,

@@ -59,7 +59,7 @@ pub(crate) use linear_linked::separating_edge_at;
 pub use linked::{Convert, ConvertWorkspace, LinkedIntersection};
 pub use trace::{Kept, Mark, Role, Shape, Span, Trace, TraceStep, Tracer, trace, trace_rng};
 
-use crate::kernel::{Exact, Fast, Kernel, Precision};
+use crate::kernel::{Exact, Fast, Kernel, Point, Precision};
 use crate::lp::{ArenaPoints, LpError, Separation};
 use crate::polygon::ConvexPolygon;
 use rand::Rng;
@@ -99,6 +99,13 @@ pub trait Probe {
     /// [`Clm`] walked one chain (a step per vertex collected).
     #[inline]
     fn chain_walk(&mut self, _chain: &ArenaPoints<'_>) {}
+
+    /// [`Clm`] found the sample vertex `point` of polygon `of` in `quad`, a
+    /// quadrilateral of the other polygon's sample vertices (counter-clockwise; a
+    /// corner repeats where it has only three), so inside that polygon: the polygons
+    /// intersect, and the query ends there.
+    #[inline]
+    fn sample_inside(&mut self, _of: Which, _point: Point, _quad: [Point; 4]) {}
 
     /// One pruning step of [`Barba`], [`Dobkin`] or [`ChazelleDobkin`] is about to
     /// decide: what the algorithm keeps at this point ([`Kept`]). [`Tracer`] records

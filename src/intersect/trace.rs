@@ -512,6 +512,31 @@ impl Probe for Tracer<'_> {
         self.note(text, marks);
     }
 
+    fn sample_inside(&mut self, of: Which, point: Point, quad: [Point; 4]) {
+        let other = if of == Which::P { Which::Q } else { Which::P };
+        let text = format!(
+            "the sample vertex ({}, {}) of {} lies in a quadrilateral of {}'s sample vertices, so inside {}: the polygons intersect",
+            point.x,
+            point.y,
+            name(Some(of)),
+            name(Some(other)),
+            name(Some(other))
+        );
+        let marks = vec![
+            Mark {
+                role: Role::Sample,
+                of: Some(other),
+                shape: Shape::Polygon(quad.to_vec()),
+            },
+            Mark {
+                role: Role::Witness,
+                of: Some(of),
+                shape: Shape::Points(vec![point]),
+            },
+        ];
+        self.note(text, marks);
+    }
+
     fn chain_walk(&mut self, chain: &ArenaPoints<'_>) {
         let of = self.owner(chain);
         let text = format!(
