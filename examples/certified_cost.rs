@@ -9,7 +9,9 @@
 //! `barba-thesis` has all three of the thesis's choices. `dobkin-lemmas` is Dobkin's
 //! variant with every pruning rule by its own `if` (the thesis's Code 3.1 form),
 //! `dobkin-compact` ours (= `dobkin`). `clm` runs CLM on the pairs as linked polygons
-//! in shuffled arena order (one workspace, one seeded generator, as in the `clm` bench).
+//! in shuffled arena order (one workspace, one seeded generator, as in the `clm` bench);
+//! `clm-no-prefix` the same without the prefixes' quadrilaterals
+//! (`ClmVariant::prefix_quads` off).
 //!
 //! The setup (generating the pairs with the exact kernel) costs far more than the
 //! queries at large sizes, and under an instruction counter it runs for hours at 2^18.
@@ -22,7 +24,7 @@
 
 use polysect::generate::{self, Family, Relation};
 use polysect::intersect::{
-    Algorithm, ArrayIntersection, Barba, BarbaVariant, ChazelleDobkin, Clm, ClmWorkspace, Dobkin,
+    Algorithm, ArrayIntersection, Barba, BarbaVariant, ChazelleDobkin, ClmVariant, ClmWorkspace, Dobkin,
     DobkinVariant, Linear, LinkedIntersection,
 };
 use polysect::{ConvexPolygon, Exact, LinkedPolygon, Point};
@@ -190,7 +192,17 @@ fn main() {
             std::process::exit(2)
         }
     };
-    let variant = match alg.as_str() {
+    // CLM without the prefixes' quadrilaterals (the code before they were added).
+    let clm_variant = ClmVariant {
+        prefix_quads: alg != "clm-no-prefix",
+        ..ClmVariant::default()
+    };
+    let alg = if alg == "clm-no-prefix" {
+        "clm"
+    } else {
+        alg.as_str()
+    };
+    let variant = match alg {
         "barba-thirds" => Some(0),
         "barba-finish3" => Some(1),
         "barba-p-edges-first" => Some(2),
@@ -249,10 +261,11 @@ fn main() {
             let (p, q) = &linked[i % linked.len()];
             let (p, q) = (black_box(p), black_box(q));
             let hit = if certified {
-                Clm.certified_with_workspace(Exact, p, q, &mut rng, &mut ws)
+                clm_variant
+                    .certified_with_workspace(Exact, p, q, &mut rng, &mut ws)
                     .intersects()
             } else {
-                Clm.intersects_with_workspace(Exact, p, q, &mut rng, &mut ws)
+                clm_variant.intersects_with_workspace(Exact, p, q, &mut rng, &mut ws)
             };
             hits += usize::from(hit == want);
         }

@@ -105,9 +105,11 @@ fn barba_and_dobkin_stay_within_the_thesis_bounds() {
 
 /// CLM's counts per query, kept apart: samples of ⌈√n⌉ draws (at least 3, at most the
 /// polygon; repeats kept once; 12 when the first 12 draws of each decide an
-/// intersection), the first LP on both samples, one LP when the sample hulls meet, five LPs
-/// and four walks on every disjoint pair, the summed work equal to its parts, and
-/// chains of expected length O(n / r) = O(√n) (Chazelle–Liu–Magen, Theorem 2.1).
+/// intersection), a vertex inside the other sample's quadrilateral only on intersecting
+/// pairs and then no LP but the prefixes', else the first LP on both samples, one LP
+/// when the sample hulls meet, five LPs and four walks on every disjoint pair, the
+/// summed work equal to its parts, and chains of expected length O(n / r) = O(√n)
+/// (Chazelle–Liu–Magen, Theorem 2.1).
 #[test]
 fn clm_counts_are_recorded_apart_and_match_the_algorithm() {
     let mut rng = SmallRng::seed_from_u64(0x0c13);
@@ -125,10 +127,11 @@ fn clm_counts_are_recorded_apart_and_match_the_algorithm() {
         // Independent draws may repeat a vertex (about r²/2n = ½ repeats expected);
         // the sample keeps one copy. With independent draws on both sides (r ≤ n/16)
         // the first 12 of each are drawn first, and the rest only when their hulls are
-        // disjoint: an intersecting query that one LP decided may have read only those.
+        // disjoint: an intersecting query that one LP or the quadrilaterals decided may
+        // have read only those.
         let independent = |n: usize| expected(n) * 16 <= n;
         let prefix_only = answer
-            && c.lp_calls() == 1
+            && c.lp_calls() <= 1
             && independent(p.len())
             && independent(q.len())
             && c.samples_p <= 12
@@ -141,13 +144,29 @@ fn clm_counts_are_recorded_apart_and_match_the_algorithm() {
             };
             assert!(got <= want && got + 8 >= want, "{name}: {got} of {n}");
         }
-        assert!((1..=5).contains(&c.lp_calls()), "{name}: {c:?}");
-        assert_eq!(c.lps[0].constraints, c.samples(), "{name}");
+        assert!(c.inside <= 1, "{name}: {c:?}");
+        if c.inside == 1 {
+            assert!(truth, "{name}: a vertex inside on disjoint polygons");
+            // Before any LP, or after the prefix LP found the prefixes' hulls disjoint.
+            let prefixes = c.samples_p.min(12) + c.samples_q.min(12);
+            assert!(
+                c.walks.is_empty() && c.lps.iter().all(|l| l.constraints == prefixes) && c.lps.len() <= 1,
+                "{name}: {c:?}"
+            );
+        } else {
+            assert!((1..=5).contains(&c.lp_calls()), "{name}: {c:?}");
+            // The prefix LP, or the LP on the whole samples.
+            let prefixes = c.samples_p.min(12) + c.samples_q.min(12);
+            assert!(
+                [prefixes, c.samples()].contains(&c.lps[0].constraints),
+                "{name}: {c:?}"
+            );
+        }
         assert!(c.walks.len() <= 4, "{name}: {c:?}");
         assert_eq!(
             c.iterations,
-            c.lp_work() + c.chain_steps() as u64,
-            "{name}: the summed work is LP work plus chain steps"
+            c.lp_work() + c.chain_steps() as u64 + c.quad_tests,
+            "{name}: the summed work is LP work plus chain steps plus points tested in quadrilaterals: {c:?}"
         );
         if c.lp_calls() == 1 {
             assert!(c.walks.is_empty(), "{name}: {c:?}");

@@ -35,6 +35,19 @@
 //!    first, and the rest of the samples only when their hulls are disjoint, so an
 //!    intersecting query decided there reads 24 random vertices instead of 2⌈c·√n⌉
 //!    (at 2^20, 1.2 instead of 55 µs; docs/results.md).
+//!    Before that LP, with [`ClmVariant::prefix_quads`] (the default): each prefix
+//!    gives a quadrilateral of its own points (`Quad::spread`: the chord between its
+//!    lowest and highest x and the point farthest from that chord on each side, by
+//!    `f64` distances, a guide only), which lies inside its polygon; a prefix point of
+//!    the other polygon in it (`prefix_inside`: `f64` signs first, three or four exact
+//!    orientations for a point they put inside) is a vertex inside, so the polygons
+//!    intersect and the query ends, certified, without any LP: about 95% of the
+//!    intersecting Rotated queries at 2^10–2^18 end there (docs/certificates.md).
+//!    When the prefix LP then finds the prefixes' hulls disjoint, the next 20 points
+//!    of each sample are tried in the same quadrilaterals before the samples are put
+//!    in order. Both tests cost O(1) (at most 24 and 40 points), so the bounds below
+//!    are unchanged; on disjoint polygons they never answer, and cost about 2,000
+//!    instructions per query.
 //!    Order of work: chain walks run two at a time in lockstep, so that their cache
 //!    misses (each step is a dependent load at a random arena position) overlap, and
 //!    each LP runs as soon as the chain it needs is walked (either sample-against-chain
@@ -60,13 +73,17 @@
 //! (docs/sublinear.md, `benches/clm.rs`).
 //!
 //! # Certificate
-//! The certified call records which LP decided and every separating line it found
-//! (nothing in the plain call: the recording is chosen at compile time).
+//! The certified call records what decided (a vertex inside, or an LP) and every
+//! separating line it found (nothing in the plain call: the recording is chosen at
+//! compile time).
 //! * **Disjoint.** Each LP line touches an input point of each set; if both are
 //!   extreme in their whole polygons (each neighbour checked, four predicates), the
 //!   line supports both polygons and an edge at its tangent vertices separates. The
 //!   lines are tried from the last; the chain LPs' lines almost always qualify.
-//! * **Intersecting.** The LP reports a witness of intersecting hulls (at most nine
+//! * **Intersecting.** A query the prefixes' quadrilaterals answered has its
+//!   certificate already: the vertex inside (about 95% of the intersecting queries on
+//!   the generators' crossing pairs). Otherwise the LP that found the hulls
+//!   intersecting reports a witness (at most nine
 //!   points: the violating point, the one or two points that bounded its 1D problem,
 //!   the previous optimum's tangent points, and a₀, b₀ and the bounding pair, which
 //!   restrict separators to the LP's half-circle of directions). When the LP ran on
@@ -77,9 +94,9 @@
 //!   that sample on that chord (the sample vertex farthest beyond it on each side,
 //!   one pass of `f64` distances), then the rest of z's sample in the same
 //!   quadrilateral, then the chord's sample in the quadrilateral of z's sample
-//!   (below): sample vertices already read, no draw. Every quadrilateral test
-//!   computes its signs in `f64` first and tests exactly only a point they put
-//!   inside. Then the drawn vertices below, and only then the last step's five
+//!   (below) unless the prefix test tried that one already: sample vertices already
+//!   read, no draw. Every quadrilateral test computes its signs in `f64` first and
+//!   tests exactly only a point they put inside. Then the drawn vertices below, and only then the last step's five
 //!   points, in O(1): when the violating point p failed on two points of the
 //!   other set, one on each side of it in x′, the segment from p to its set's frame
 //!   point meets their triangle with the other frame point
@@ -306,6 +323,8 @@ pub struct ClmWorkspace {
     /// [`separate_chains`] ([`ClmVariant::chain_walk`]).
     ordered: [(Vec<u32>, Vec<Point>); 2],
     walked: u64,
+    /// Sample points tested in the other sample's quadrilaterals (`prefix_inside`).
+    tested: u64,
     /// Scratch of [`boundary_order`].
     order: OrderScratch,
     /// The index array of [`Sampling::FisherYates`] (the identity between draws) and
@@ -492,9 +511,9 @@ impl LinkedIntersection for ClmVariant {
         ws: &mut ClmWorkspace,
         probe: &mut P,
     ) -> bool {
-        let work_before = ws.lp.work + ws.walked;
+        let work_before = ws.lp.work + ws.walked + ws.tested;
         let answer = clm::<K, R, P, false>(k, *self, p, q, rng, ws, probe);
-        for _ in work_before..ws.lp.work + ws.walked {
+        for _ in work_before..ws.lp.work + ws.walked + ws.tested {
             probe.iteration();
         }
         answer
@@ -510,9 +529,9 @@ impl LinkedIntersection for ClmVariant {
         ws: &mut ClmWorkspace,
         probe: &mut P,
     ) -> Derivation {
-        let work_before = ws.lp.work + ws.walked;
+        let work_before = ws.lp.work + ws.walked + ws.tested;
         let answer = clm::<K, R, P, true>(k, *self, p, q, rng, ws, probe);
-        for _ in work_before..ws.lp.work + ws.walked {
+        for _ in work_before..ws.lp.work + ws.walked + ws.tested {
             probe.iteration();
         }
         // The drawn witnesses' generator: the workspace's, stirred with this query's
@@ -1364,14 +1383,19 @@ const PREFIX: usize = 12;
 /// quadrilaterals when the prefix LP finds the prefixes' hulls disjoint.
 const NEXT: usize = 20;
 
+/// The first [`PREFIX`] points of a sample (fewer if it has fewer).
+fn prefix_points(sample: &[Point]) -> &[Point] {
+    &sample[..PREFIX.min(sample.len())]
+}
+
 /// The [`NEXT`] points of a sample after its prefix (fewer if it has fewer).
 fn next_points(sample: &[Point]) -> &[Point] {
     &sample[PREFIX.min(sample.len())..(PREFIX + NEXT).min(sample.len())]
 }
 
 /// A point of `a` (P's prefix) in `b`'s quadrilateral ([`Quad::spread`]), or of `b`
-/// (Q's prefix) in `a`'s, taken alternately: which polygon it is a vertex of, the
-/// point, and how many points were tested. Each quadrilateral has sample vertices for
+/// (Q's prefix) in `a`'s, taken alternately: how many points were tested, and the
+/// point found with the polygon it is a vertex of. Each quadrilateral has sample vertices for
 /// corners, so it lies inside its polygon and a point in it is a vertex inside, an
 /// intersection with its certificate. O(|a| + |b|); each test computes `f64` signs,
 /// then (only for a point they put inside) exact orientations ([`Quad::contains`]). A
@@ -1382,20 +1406,20 @@ fn prefix_inside<K: Kernel>(
     k: K,
     (a, qa): (&[Point], &Quad),
     (b, qb): (&[Point], &Quad),
-) -> Option<(Which, Point, u64)> {
+) -> (u64, Option<(Which, Point)>) {
     for i in 0..a.len().max(b.len()) {
         if let Some(&y) = b.get(i)
             && qa.contains(k, y)
         {
-            return Some((Which::Q, y, 2 * i as u64 + 1));
+            return (2 * i as u64 + 1, Some((Which::Q, y)));
         }
         if let Some(&x) = a.get(i)
             && qb.contains(k, x)
         {
-            return Some((Which::P, x, 2 * i as u64 + 2));
+            return (2 * i as u64 + 2, Some((Which::P, x)));
         }
     }
-    None
+    ((a.len() + b.len()) as u64, None)
 }
 
 /// ⌈c·√n⌉, at least 3.
@@ -1477,17 +1501,28 @@ fn walk_or_lp<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     counted_lp_after(k, (a, a_points), (b, b_points), lp.work - before, rng, lp, probe)
 }
 
-/// Ends a query that [`prefix_inside`] answered with `found` (in `quads`, P's and
-/// Q's): counts the points tested as work, reports the samples and the vertex inside
-/// to `probe`, and with `CERT` records the certificate. The answer: intersecting.
-fn inside_found<P: Probe, const CERT: bool>(
+/// [`prefix_inside`] on the parts `part` of the two samples (P's points, Q's) and
+/// `quads` (P's, Q's): counts the points tested as work and reports them to `probe`.
+/// When a point lies inside, also reports the samples and then `prefix_lp` (the work
+/// and result of an LP on the prefixes that ran before, not reported yet) first and,
+/// with `CERT`, records the certificate; then true, the answer (intersecting).
+#[allow(clippy::too_many_arguments)]
+fn quads_answer<K: Kernel, P: Probe, const CERT: bool>(
+    k: K,
     (p, q): (&LinkedPolygon, &LinkedPolygon),
-    (of, point, tested): (Which, Point, u64),
+    part: fn(&[Point]) -> &[Point],
     quads: &(Quad, Quad),
+    prefix_lp: Option<(u64, Result<Separation, LpError>)>,
     ws: &mut ClmWorkspace,
     probe: &mut P,
 ) -> bool {
-    ws.lp.work += tested;
+    let (a, b) = (part(&ws.rp_points), part(&ws.rq_points));
+    let (tested, found) = prefix_inside(k, (a, &quads.0), (b, &quads.1));
+    ws.tested += tested;
+    let Some((of, point)) = found else {
+        probe.sample_quads(tested, None);
+        return false;
+    };
     let rp = ArenaPoints {
         polygon: p,
         positions: &ws.rp,
@@ -1497,8 +1532,21 @@ fn inside_found<P: Probe, const CERT: bool>(
         positions: &ws.rq,
     };
     probe.samples(&rp, &rq);
+    if let Some((work, result)) = prefix_lp {
+        let (pa, pb) = (
+            ArenaPoints {
+                polygon: p,
+                positions: &ws.rp[..PREFIX.min(ws.rp.len())],
+            },
+            ArenaPoints {
+                polygon: q,
+                positions: &ws.rq[..PREFIX.min(ws.rq.len())],
+            },
+        );
+        probe.lp_call(&pa, &pb, work, &result);
+    }
     let quad = if of == Which::P { &quads.1 } else { &quads.0 };
-    probe.sample_inside(of, point, quad.corners());
+    probe.sample_quads(tested, Some((of, point, quad.corners())));
     if CERT {
         ws.trace.inside = Some((of, point));
     }
@@ -1572,27 +1620,28 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     let prefix_lp = v.sample_walk && (rp_len > PREFIX || rq_len > PREFIX);
     // The prefixes' quadrilaterals (P's, Q's).
     let prefix_quads = (prefix_lp && v.prefix_quads).then(|| {
-        let a = &ws.rp_points[..ws.rp.len().min(PREFIX)];
-        let b = &ws.rq_points[..ws.rq.len().min(PREFIX)];
+        let (a, b) = (prefix_points(&ws.rp_points), prefix_points(&ws.rq_points));
         (Quad::spread(a), Quad::spread(b))
     });
+    // The prefix LP's work and result, once it ran.
+    let mut prefix_lp_ran = None;
     if prefix_lp {
         let before = ws.lp.work;
-        let a = &ws.rp_points[..ws.rp.len().min(PREFIX)];
-        let b = &ws.rq_points[..ws.rq.len().min(PREFIX)];
         // A prefix vertex of one polygon in a quadrilateral of the other prefix's
         // points answers most intersecting queries before any LP.
         if let Some(quads) = &prefix_quads
-            && let Some(found) = prefix_inside(k, (a, &quads.0), (b, &quads.1))
+            && quads_answer::<K, P, CERT>(k, (p, q), prefix_points, quads, None, ws, probe)
         {
-            return inside_found::<P, CERT>((p, q), found, quads, ws, probe);
+            return true;
         }
+        let (a, b) = (prefix_points(&ws.rp_points), prefix_points(&ws.rq_points));
         // Distinct samples come in arena order: the LP shuffles them.
         let random = v.sampling == Sampling::FisherYates || independent;
         ws.lp.keep_order(random);
         let meet = separating_line(k.within([box_of(a), box_of(b)]), a, b, rng, &mut ws.lp);
         ws.lp.keep_order(caller_random);
         spent = ws.lp.work - before;
+        prefix_lp_ran = Some((spent, meet));
         if meet == Ok(Separation::Intersecting) {
             let rp = ArenaPoints {
                 polygon: p,
@@ -1625,11 +1674,10 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         // The next points of each sample in the prefixes' quadrilaterals: most
         // intersecting queries the prefix LP did not answer end here, before the
         // samples are put in order.
-        if let Some(quads) = &prefix_quads {
-            let (a, b) = (next_points(&ws.rp_points), next_points(&ws.rq_points));
-            if let Some(found) = prefix_inside(k, (a, &quads.0), (b, &quads.1)) {
-                return inside_found::<P, CERT>((p, q), found, quads, ws, probe);
-            }
+        if let Some(quads) = &prefix_quads
+            && quads_answer::<K, P, CERT>(k, (p, q), next_points, quads, prefix_lp_ran, ws, probe)
+        {
+            return true;
         }
     }
     // Both samples in boundary order, or neither: then the LPs decide.

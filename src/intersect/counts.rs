@@ -46,8 +46,10 @@ pub struct Counts {
     pub lps: Vec<LpCall>,
     /// CLM's chain walks, vertices collected by each, in the order they ran.
     pub walks: Vec<usize>,
-    /// CLM queries answered by a sample vertex in a quadrilateral of the other
-    /// polygon's sample ([`Probe::sample_inside`]).
+    /// CLM's sample points tested in the other sample's quadrilaterals
+    /// ([`Probe::sample_quads`]).
+    pub quad_tests: u64,
+    /// CLM queries answered by a sample vertex in such a quadrilateral.
     pub inside: usize,
 }
 
@@ -59,6 +61,7 @@ impl Counts {
         self.samples_q = 0;
         self.lps.clear();
         self.walks.clear();
+        self.quad_tests = 0;
         self.inside = 0;
     }
 
@@ -119,8 +122,9 @@ impl Probe for Counts {
         self.walks.push(chain.positions.len());
     }
 
-    fn sample_inside(&mut self, _of: Which, _point: Point, _quad: [Point; 4]) {
-        self.inside += 1;
+    fn sample_quads(&mut self, tested: u64, inside: Option<(Which, Point, [Point; 4])>) {
+        self.quad_tests += tested;
+        self.inside += usize::from(inside.is_some());
     }
 }
 

@@ -100,12 +100,13 @@ pub trait Probe {
     #[inline]
     fn chain_walk(&mut self, _chain: &ArenaPoints<'_>) {}
 
-    /// [`Clm`] found the sample vertex `point` of polygon `of` in `quad`, a
-    /// quadrilateral of the other polygon's sample vertices (counter-clockwise; a
-    /// corner repeats where it has only three), so inside that polygon: the polygons
-    /// intersect, and the query ends there.
+    /// [`Clm`] tested `tested` sample points (one unit of work each) in quadrilaterals
+    /// of the other polygon's sample vertices, which lie inside that polygon.
+    /// `inside`: the vertex it found in one, its polygon, and that quadrilateral
+    /// (counter-clockwise; a corner repeats where it has only three); then the
+    /// polygons intersect and the query ends there.
     #[inline]
-    fn sample_inside(&mut self, _of: Which, _point: Point, _quad: [Point; 4]) {}
+    fn sample_quads(&mut self, _tested: u64, _inside: Option<(Which, Point, [Point; 4])>) {}
 
     /// One pruning step of [`Barba`], [`Dobkin`] or [`ChazelleDobkin`] is about to
     /// decide: what the algorithm keeps at this point ([`Kept`]). [`Tracer`] records

@@ -512,7 +512,11 @@ impl Probe for Tracer<'_> {
         self.note(text, marks);
     }
 
-    fn sample_inside(&mut self, of: Which, point: Point, quad: [Point; 4]) {
+    fn sample_quads(&mut self, _tested: u64, inside: Option<(Which, Point, [Point; 4])>) {
+        // Only the test that ends the query makes a step.
+        let Some((of, point, quad)) = inside else {
+            return;
+        };
         let other = if of == Which::P { Which::Q } else { Which::P };
         let text = format!(
             "the sample vertex ({}, {}) of {} lies in a quadrilateral of {}'s sample vertices, so inside {}: the polygons intersect",
