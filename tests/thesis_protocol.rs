@@ -88,7 +88,9 @@ fn quick_thesis_protocol_writes_a_consistent_csv() {
         }
         if alg == Algorithm::Clm {
             let calls = float(row, "lp_calls_mean");
-            assert!((1.0..=5.0).contains(&calls), "{row:?}");
+            // An intersecting query may end before any LP (a sample vertex inside the
+            // other sample's quadrilateral).
+            assert!((0.0..=5.0).contains(&calls), "{row:?}");
             assert!(float(row, "constraints_per_lp") >= 6.0, "{row:?}");
             assert!(float(row, "samples_mean") >= 6.0, "{row:?}");
             if get(row, "outcome") == "disjoint" {

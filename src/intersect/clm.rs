@@ -43,11 +43,11 @@
 //!    orientations for a point they put inside) is a vertex inside, so the polygons
 //!    intersect and the query ends, certified, without any LP: about 95% of the
 //!    intersecting Rotated queries at 2^10–2^18 end there (docs/certificates.md).
-//!    When the prefix LP then finds the prefixes' hulls disjoint, the next 20 points
+//!    When the prefix LP then finds the prefixes' hulls disjoint, the next 12 points
 //!    of each sample are tried in the same quadrilaterals before the samples are put
-//!    in order. Both tests cost O(1) (at most 24 and 40 points), so the bounds below
-//!    are unchanged; on disjoint polygons they never answer, and cost about 2,000
-//!    instructions per query.
+//!    in order. Both tests cost O(1) (at most 24 points each), so the bounds below
+//!    are unchanged; on disjoint polygons they never answer, and cost about 2,500
+//!    instructions per query (2.5K of 34K at 2^10, under 2% from 2^16).
 //!    Order of work: chain walks run two at a time in lockstep, so that their cache
 //!    misses (each step is a dependent load at a random arena position) overlap, and
 //!    each LP runs as soon as the chain it needs is walked (either sample-against-chain
@@ -1381,7 +1381,7 @@ const PREFIX: usize = 12;
 
 /// How many points of each sample after its prefix are tested in the prefixes'
 /// quadrilaterals when the prefix LP finds the prefixes' hulls disjoint.
-const NEXT: usize = 20;
+const NEXT: usize = 12;
 
 /// The first [`PREFIX`] points of a sample (fewer if it has fewer).
 fn prefix_points(sample: &[Point]) -> &[Point] {
