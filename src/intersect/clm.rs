@@ -1114,16 +1114,25 @@ fn boundary_order<K: Kernel>(
         sorted[*slot as usize] = entry;
         *slot += 1;
     }
+    // Each insertion's first step is branchless (the entry and its predecessor as their
+    // minimum and maximum): most entries move by at most one place, which a loop's exit
+    // branch mispredicts about as often as it happens. Only an entry that moves further
+    // loops, on a branch rarely taken.
     let mut moves = 0;
     for i in 1..n {
-        let entry = sorted[i];
-        let mut j = i;
-        while j > 0 && sorted[j - 1] > entry {
-            sorted[j] = sorted[j - 1];
-            j -= 1;
+        let (prev, entry) = (sorted[i - 1], sorted[i]);
+        let low = prev.min(entry);
+        (sorted[i - 1], sorted[i]) = (low, prev.max(entry));
+        moves += usize::from(entry < prev);
+        if i >= 2 && sorted[i - 2] > low {
+            let mut j = i - 1;
+            while j > 0 && sorted[j - 1] > low {
+                sorted[j] = sorted[j - 1];
+                j -= 1;
+            }
+            sorted[j] = low;
+            moves += i - 1 - j;
         }
-        sorted[j] = entry;
-        moves += i - j;
         if moves > 4 * n {
             // Crowded buckets.
             sorted.sort_unstable();
