@@ -1030,8 +1030,11 @@ struct OrderScratch {
 /// Each point gets a 32-bit key, an `f64` pseudo-angle about o scaled by 2³¹
 /// ([`angle_key`]), and keys two or more apart are in the exact order (the error bound
 /// is proved there). So the points are sorted by key alone (key and index in one
-/// `u64`: one counting pass into r–2r buckets by the top bits, then an insertion sort,
-/// which falls back to a full sort after 4r moves when the angles crowd), gathered in
+/// `u64`: one counting pass into r–2r buckets by the top bits, then an insertion sort
+/// whose first step per entry is branchless, a minimum and a maximum with its
+/// predecessor (most entries move by one place or none, and a loop exit there was
+/// mispredicted about as often as it moved), and which falls back to a full sort after
+/// 4r moves when the angles crowd), gathered in
 /// that order, and only the runs of near-ties (consecutive keys at most one apart:
 /// repeats, o's neighbours, angles within about 2⁻³¹) are sorted again with `orient`
 /// ([`settle_near_ties`]), which also drops the repeats. Returns `false` when a
