@@ -1068,8 +1068,11 @@ struct OrderScratch {
 /// Each point gets a 32-bit key, an `f64` pseudo-angle about o scaled by 2³¹
 /// ([`angle_key`]), and keys two or more apart are in the exact order (the error bound
 /// is proved there). So the points are sorted by key alone (key and index in one
-/// `u64`: one counting pass into r–2r buckets by the top bits, then an insertion sort,
-/// which falls back to a full sort after 4r moves when the angles crowd), gathered in
+/// `u64`: one counting pass into r–2r buckets by the top bits, then an insertion sort
+/// whose first step per entry is branchless, a minimum and a maximum with its
+/// predecessor (most entries move by one place or none, and a loop exit there was
+/// mispredicted about as often as it moved), and which falls back to a full sort after
+/// 4r moves when the angles crowd), gathered in
 /// that order, and only the runs of near-ties (consecutive keys at most one apart:
 /// repeats, o's neighbours, angles within about 2⁻³¹) are sorted again with `orient`
 /// ([`settle_near_ties`]), which also drops the repeats. Returns `false` when a
@@ -1152,16 +1155,25 @@ fn boundary_order<K: Kernel>(
         sorted[*slot as usize] = entry;
         *slot += 1;
     }
+    // Each insertion's first step is branchless (the entry and its predecessor as their
+    // minimum and maximum): most entries move by at most one place, which a loop's exit
+    // branch mispredicts about as often as it happens. Only an entry that moves further
+    // loops, on a branch rarely taken.
     let mut moves = 0;
     for i in 1..n {
-        let entry = sorted[i];
-        let mut j = i;
-        while j > 0 && sorted[j - 1] > entry {
-            sorted[j] = sorted[j - 1];
-            j -= 1;
+        let (prev, entry) = (sorted[i - 1], sorted[i]);
+        let low = prev.min(entry);
+        (sorted[i - 1], sorted[i]) = (low, prev.max(entry));
+        moves += usize::from(entry < prev);
+        if i >= 2 && sorted[i - 2] > low {
+            let mut j = i - 1;
+            while j > 0 && sorted[j - 1] > low {
+                sorted[j] = sorted[j - 1];
+                j -= 1;
+            }
+            sorted[j] = low;
+            moves += i - 1 - j;
         }
-        sorted[j] = entry;
-        moves += i - j;
         if moves > 4 * n {
             // Crowded buckets.
             sorted.sort_unstable();
