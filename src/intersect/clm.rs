@@ -96,11 +96,11 @@
 //!   quadrilateral, then the chord's sample in the quadrilateral of z's sample
 //!   (below) unless the prefix test tried that one already: sample vertices already
 //!   read, no draw. Every quadrilateral test computes its signs in `f64` first and
-//!   tests exactly only a point they put inside. Then the drawn vertices below, and only then the last step's five
-//!   points, in O(1): when the violating point p failed on two points of the
-//!   other set, one on each side of it in x′, the segment from p to its set's frame
-//!   point meets their triangle with the other frame point
-//!   ([`LpWorkspace::straddle`](crate::lp::LpWorkspace::straddle): p or that point
+//!   tests exactly only a point they put inside. Then the drawn vertices below, and
+//!   only then the last step's five points, in O(1): when the violating point p
+//!   failed on two points of the other set, one on each side of it in x′, the
+//!   segment from p to its set's frame point meets their triangle with the other
+//!   frame point ([`LpWorkspace::straddle`](crate::lp::LpWorkspace::straddle): p or that point
 //!   inside, else two chords); when it failed on one point y of the other set and one
 //!   of its own, y usually lies in the triangle of p, that point and the previous
 //!   optimum's tangent point of p's set (or p's frame point)
@@ -1405,14 +1405,14 @@ fn next_points(sample: &[Point]) -> &[Point] {
     &sample[PREFIX.min(sample.len())..(PREFIX + NEXT).min(sample.len())]
 }
 
-/// A point of `a` (P's prefix) in `b`'s quadrilateral ([`Quad::spread`]), or of `b`
-/// (Q's prefix) in `a`'s, taken alternately: how many points were tested, and the
-/// point found with the polygon it is a vertex of. Each quadrilateral has sample vertices for
-/// corners, so it lies inside its polygon and a point in it is a vertex inside, an
-/// intersection with its certificate. O(|a| + |b|); each test computes `f64` signs,
-/// then (only for a point they put inside) exact orientations ([`Quad::contains`]). A
-/// miss (a point rounding puts outside, or on the chord's line) only leaves the query
-/// to the LP.
+/// A point of `a` (points of P's sample) in `qb` (a quadrilateral of Q's sample,
+/// [`Quad::spread`]), or of `b` (Q's) in `qa` (P's), taken alternately: how many points
+/// were tested, and the point found with the polygon it is a vertex of. Each
+/// quadrilateral has sample vertices for corners, so it lies inside its polygon and a
+/// point in it is a vertex inside, an intersection with its certificate. O(|a| + |b|);
+/// each test computes `f64` signs, then (only for a point they put inside) exact
+/// orientations ([`Quad::contains`]). A miss (a point rounding puts outside, or on the
+/// chord's line) only leaves the query to the LP.
 #[inline(never)]
 fn prefix_inside<K: Kernel>(
     k: K,
