@@ -1395,9 +1395,15 @@ const PREFIX: usize = 12;
 /// quadrilaterals when the prefix LP finds the prefixes' hulls disjoint.
 const NEXT: usize = 12;
 
-/// The first [`PREFIX`] points of a sample (fewer if it has fewer).
-fn prefix_points(sample: &[Point]) -> &[Point] {
+/// The first [`PREFIX`] entries of a sample's points or positions (fewer if it has
+/// fewer).
+fn prefix_of<T>(sample: &[T]) -> &[T] {
     &sample[..PREFIX.min(sample.len())]
+}
+
+/// The points of `polygon` at `positions`, as LPs and probe reports take them.
+fn arena<'a>(polygon: &'a LinkedPolygon, positions: &'a [u32]) -> ArenaPoints<'a> {
+    ArenaPoints { polygon, positions }
 }
 
 /// The [`NEXT`] points of a sample after its prefix (fewer if it has fewer).
@@ -1535,26 +1541,9 @@ fn quads_answer<K: Kernel, P: Probe, const CERT: bool>(
         probe.sample_quads(tested, None);
         return false;
     };
-    let rp = ArenaPoints {
-        polygon: p,
-        positions: &ws.rp,
-    };
-    let rq = ArenaPoints {
-        polygon: q,
-        positions: &ws.rq,
-    };
-    probe.samples(&rp, &rq);
+    probe.samples(&arena(p, &ws.rp), &arena(q, &ws.rq));
     if let Some((work, result)) = prefix_lp {
-        let (pa, pb) = (
-            ArenaPoints {
-                polygon: p,
-                positions: &ws.rp[..PREFIX.min(ws.rp.len())],
-            },
-            ArenaPoints {
-                polygon: q,
-                positions: &ws.rq[..PREFIX.min(ws.rq.len())],
-            },
-        );
+        let (pa, pb) = (arena(p, prefix_of(&ws.rp)), arena(q, prefix_of(&ws.rq)));
         probe.lp_call(&pa, &pb, work, &result);
     }
     let quad = if of == Which::P { &quads.1 } else { &quads.0 };
@@ -1632,7 +1621,7 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
     let prefix_lp = v.sample_walk && (rp_len > PREFIX || rq_len > PREFIX);
     // The prefixes' quadrilaterals (P's, Q's).
     let prefix_quads = (prefix_lp && v.prefix_quads).then(|| {
-        let (a, b) = (prefix_points(&ws.rp_points), prefix_points(&ws.rq_points));
+        let (a, b) = (prefix_of(&ws.rp_points), prefix_of(&ws.rq_points));
         (Quad::spread(a), Quad::spread(b))
     });
     // The prefix LP's work and result, once it ran.
@@ -1642,11 +1631,11 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         // A prefix vertex of one polygon in a quadrilateral of the other prefix's
         // points answers most intersecting queries before any LP.
         if let Some(quads) = &prefix_quads
-            && quads_answer::<K, P, CERT>(k, (p, q), prefix_points, quads, None, ws, probe)
+            && quads_answer::<K, P, CERT>(k, (p, q), prefix_of, quads, None, ws, probe)
         {
             return true;
         }
-        let (a, b) = (prefix_points(&ws.rp_points), prefix_points(&ws.rq_points));
+        let (a, b) = (prefix_of(&ws.rp_points), prefix_of(&ws.rq_points));
         // Distinct samples come in arena order: the LP shuffles them.
         let random = v.sampling == Sampling::FisherYates || independent;
         ws.lp.keep_order(random);
@@ -1655,14 +1644,7 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
         spent = ws.lp.work - before;
         prefix_lp_ran = Some((spent, meet));
         if meet == Ok(Separation::Intersecting) {
-            let rp = ArenaPoints {
-                polygon: p,
-                positions: &ws.rp,
-            };
-            let rq = ArenaPoints {
-                polygon: q,
-                positions: &ws.rq,
-            };
+            let (rp, rq) = (arena(p, &ws.rp), arena(q, &ws.rq));
             probe.samples(&rp, &rq);
             probe.lp_call(&rp, &rq, spent, &meet);
             if CERT {
