@@ -1665,9 +1665,9 @@ fn clm<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: bool>(
             draw_below(rng, poly.len() as u32, r - drawn, positions);
             points.extend(positions[drawn..].iter().map(|&i| poly.point_at(i as usize)));
         }
-        // The next points of each sample in the prefixes' quadrilaterals: most
-        // intersecting queries the prefix LP did not answer end here, before the
-        // samples are put in order.
+        // The next points of each sample in the prefixes' quadrilaterals: about half
+        // of the intersecting queries whose prefix hulls are disjoint end here, before
+        // the samples are put in order.
         if let Some(quads) = &prefix_quads
             && quads_answer::<K, P, CERT>(k, (p, q), next_points, quads, prefix_lp_ran, ws, probe)
         {
