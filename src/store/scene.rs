@@ -228,7 +228,7 @@ impl<K: Kernel> Scene<K> {
             costs: CostModel::default(),
             stats: PlannerStats::default(),
             workspace: QueryWorkspace::default(),
-            rng: crate::polygon::queries::fresh_rng(),
+            rng: crate::seeding::fresh_rng(),
             warm_starts: false,
             warm: WarmCache::default(),
             #[cfg(test)]

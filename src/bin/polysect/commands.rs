@@ -29,7 +29,7 @@ pub(crate) fn check(
 ) -> Result<(), Failure> {
     let mut rng = match seed {
         Some(seed) => SmallRng::seed_from_u64(seed),
-        None => SmallRng::from_rng(&mut rand::rng()),
+        None => polysect::seeding::fresh_rng(),
     };
     if certificate {
         // Under the fast kernel a certificate is checked exactly before it is printed
