@@ -61,6 +61,7 @@ pub mod polygon;
 pub mod protocol;
 #[cfg(feature = "protocol")]
 pub mod render;
+pub mod seeding;
 #[cfg(feature = "cli")]
 pub mod serve;
 pub mod store;

@@ -8,8 +8,8 @@
 use super::fallback::complete_linked;
 use super::{ArrayIntersection, Barba, Certificate, Derivation, Probe};
 use crate::kernel::{Exact, Kernel, Point};
-use crate::polygon::queries::fresh_rng;
 use crate::polygon::{ConvexPolygon, LinkedPolygon};
+use crate::seeding::fresh_rng;
 use rand::Rng;
 use rand::SeedableRng;
 use rand::rngs::SmallRng;

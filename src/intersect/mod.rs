@@ -45,7 +45,7 @@ mod linear_linked;
 mod linked;
 mod trace;
 
-pub(crate) use crate::polygon::queries::fresh_rng;
+pub(crate) use crate::seeding::fresh_rng;
 pub use barba::{Barba, BarbaVariant};
 pub use certificate::{Certificate, CertificateError, Derivation, Which, verify, verify_linked};
 pub use chazelle_dobkin::ChazelleDobkin;

@@ -36,7 +36,8 @@ pub use graham::{angular_order, graham_scan, pivot_index};
 pub use hull::{HullAlgorithm, convex_hull, hull_vertices};
 pub use line_query::{Chord, ChordEnd, LineQueryError, line_chord_linear};
 pub(crate) use linked::Identity;
-pub use linked::{LinkedPolygon, SampleWorkspace, VertexId};
+pub use linked::sampling::SampleWorkspace;
+pub use linked::{LinkedPolygon, VertexId};
 pub use simple::{SimplePolygon, SimplePolygonError};
 
 use crate::kernel::{Exact, Kernel, Orientation, Point};

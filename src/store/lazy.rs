@@ -34,7 +34,7 @@
 //! list, allocated at the polygon's first translation so that a polygon never translated
 //! costs its slot one pointer), whatever the number of translations.
 
-use super::planner::Arena;
+use super::cost::ArenaProfile;
 use crate::kernel::Point;
 use crate::polygon::LinkedPolygon;
 use std::sync::OnceLock;
@@ -169,8 +169,8 @@ impl LazyLinked {
     }
 
     /// The arena's size and order, for the cost model (translations change neither).
-    pub(super) fn arena(&self) -> Arena {
-        Arena::of(&self.base)
+    pub(super) fn arena(&self) -> ArenaProfile {
+        ArenaProfile::of(&self.base)
     }
 
     /// Heap bytes of the arena, of the list once allocated, and of the twin while one is

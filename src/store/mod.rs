@@ -71,10 +71,12 @@
 //! in input order (pairs sorted by id), independent of the thread count.
 
 mod broad;
+mod cost;
 #[cfg(feature = "geo-types")]
 mod interop;
 mod lazy;
 mod planner;
+mod query;
 mod route;
 mod scene;
 mod warm;
@@ -83,6 +85,6 @@ mod warm;
 pub mod workload;
 
 pub use broad::BoundingBox;
-pub use planner::{Arena, CostModel, PlannerStats, Strategy};
+pub use cost::{ArenaProfile, CostModel, PlannerStats, Strategy};
 pub use scene::{PolygonId, Scene, SceneError};
 pub use warm::WarmStats;

@@ -1,548 +1,271 @@
-//! The query planner's cost model, strategies and counters. The rule itself is in the
-//! module docs of [`store`](super); `Scene` applies it. This file knows the routes
-//! (`route.rs`, which it times) and nothing of the scene.
+//! Planning a batch of queries on a [`Scene`]: bounding boxes, the ski-rental choice of
+//! conversions, and the route of each pair (the rule is in the module docs of
+//! [`store`](super)); warm starts decide what they can first. The cost model it asks is
+//! `cost.rs`; answering the routes is `query.rs`.
 
-use super::route::{QueryWorkspace, barba_test, linear_array_test, linear_test, sampled_test};
-use crate::generate::{self, Family, Relation};
+use super::cost::Strategy;
+use super::route::Route;
+use super::scene::{PlanMark, PolygonId, Scene, SceneError};
+use super::warm::{self, Warm};
 use crate::kernel::Kernel;
-use crate::polygon::{ConvexPolygon, LinkedPolygon};
-use rand::SeedableRng;
-use rand::rngs::SmallRng;
-use std::time::Instant;
 
-/// How a scene answers `intersects` for polygons without valid snapshots.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum Strategy {
-    /// Always the sampled sublinear test on the linked polygons (snapshots are still
-    /// used when both happen to be valid).
-    Sampled,
-    /// Convert both polygons to arrays for every query and throw the arrays away.
-    Convert,
-    /// Convert on first use and keep the snapshot until the next edit.
-    Cached,
-    /// Decide per query from sizes, the measured costs of each route and the queries
-    /// since the last edit (the rule in the [module docs](super)).
-    #[default]
-    Planner,
+/// A planned batch: a route per pair (in input order), the polygons to convert first,
+/// and the estimated costs of the conversions and of the answers, in nanoseconds.
+pub(super) struct Plan {
+    pub(super) routes: Vec<Result<Route, SceneError>>,
+    /// The keys of each query's P and Q, beside its route ((0, 0) for an error).
+    pub(super) keys: Vec<(usize, usize)>,
+    pub(super) chosen: Vec<usize>,
+    pub(super) convert_ns: f64,
+    pub(super) answer_ns: f64,
 }
 
-impl Strategy {
-    /// Every strategy, for comparisons.
-    pub const ALL: [Strategy; 4] = [
-        Strategy::Sampled,
-        Strategy::Convert,
-        Strategy::Cached,
-        Strategy::Planner,
-    ];
-
-    /// The strategy's name, as the CLI and the benches print it.
-    pub fn name(self) -> &'static str {
-        match self {
-            Strategy::Sampled => "sampled",
-            Strategy::Convert => "convert",
-            Strategy::Cached => "cached",
-            Strategy::Planner => "planner",
-        }
-    }
-}
-
-/// The smallest size in the cost tables is 2^`MIN_LOG2` vertices.
-const MIN_LOG2: u32 = 2;
-/// The tables hold sizes 2^2 ..= 2^18; larger sizes are extrapolated.
-pub const COST_SIZES: usize = 17;
-
-/// Estimated costs, in nanoseconds, that drive the planner: one table per route,
-/// entry i for polygons of 2^(i + 2) vertices (2^2 ..= 2^18), measured by
-/// [`CostModel::calibrate`]. Between entries costs are interpolated linearly in the
-/// size; beyond the largest, extrapolated along the last segment's power law. Walks
-/// along the links (conversion, the linear test) are measured on arenas in boundary
-/// order and on shuffled arenas, and a polygon is priced between the two by its
-/// arena's disorder (inserts and removals since it was built in order).
-#[derive(Clone, Copy, Debug, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct CostModel {
-    /// Converting one linked polygon of that size to an array, shuffled arena.
-    pub convert_ns: [f64; COST_SIZES],
-    /// The same, arena in boundary order.
-    pub convert_ordered_ns: [f64; COST_SIZES],
-    /// The sampled test (Chazelle–Liu–Magen) on two linked polygons of that size
-    /// (shuffled arenas; its reads are random anyway).
-    pub sampled_ns: [f64; COST_SIZES],
-    /// The linear test walking two linked polygons of that size
-    /// ([`LinearLinked`](crate::intersect::LinearLinked)), shuffled arenas.
-    pub linear_ns: [f64; COST_SIZES],
-    /// The same, arenas in boundary order.
-    pub linear_ordered_ns: [f64; COST_SIZES],
-    /// The array test on two snapshots of that size: [`Linear`](crate::intersect::Linear)
-    /// up to `array_linear_max` vertices, Barba–Langerman above.
-    pub array_ns: [f64; COST_SIZES],
-    /// The largest size at which the linear array test beats Barba–Langerman; a pair
-    /// of snapshots with at most twice this many vertices in all is tested linearly.
-    pub array_linear_max: usize,
-    /// Summary, at 2^18 vertices: conversion per vertex (shuffled arena).
-    pub convert_ns_per_vertex: f64,
-    /// Summary: the median over the sizes of the sampled test's time per √n.
-    pub sampled_ns_per_sqrt_n: f64,
-    /// The largest size at which two fresh polygons (arenas in boundary order) are
-    /// converted on their first query (converting both costs less than what snapshots
-    /// save that query); 0 if none.
-    pub crossover: usize,
-}
-
-/// What the cost model needs to know of a linked polygon: its size and how far its
-/// arena is from boundary order (0 in order, 1 shuffled).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Arena {
-    /// Number of vertices.
-    pub vertices: usize,
-    /// How far the arena is from boundary order: 0 in order, 1 shuffled.
-    pub disorder: f64,
-}
-
-impl Arena {
-    /// The polygon's size and arena disorder. O(1).
-    pub fn of(polygon: &LinkedPolygon) -> Arena {
-        Arena {
-            vertices: polygon.len(),
-            disorder: polygon.arena_disorder(),
-        }
-    }
-
-    /// An arena in boundary order.
-    pub fn ordered(vertices: usize) -> Arena {
-        Arena {
-            vertices,
-            disorder: 0.0,
-        }
-    }
-}
-
-impl Default for CostModel {
-    /// `polysect calibrate` on the project's 2-core reference machine while other jobs
-    /// ran: the least of five runs entry by entry, made non-decreasing (docs/store.md).
-    fn default() -> Self {
-        CostModel::from_tables(DEFAULT_TABLES)
-    }
-}
-
-type Table = [f64; COST_SIZES];
-
-/// The tables of the default model, in the order of [`CostModel::from_tables`].
-const DEFAULT_TABLES: [Table; 6] = [
-    [
-        18.9, 24.1, 39.9, 72.4, 152.9, 324.5, 1150.2, 3125.5, 42785.0, 86472.0, 2.398e+05, 5.335e+05,
-        1.077e+06, 2.900e+06, 7.742e+06, 1.849e+07, 4.807e+07,
-    ],
-    [
-        14.8, 15.4, 17.7, 20.5, 27.7, 45.7, 187.7, 560.9, 1146.6, 2291.1, 4505.9, 8876.1, 17769.1, 35755.1,
-        1.014e+05, 2.115e+05, 4.699e+05,
-    ],
-    [
-        529.5, 643.7, 690.3, 781.4, 985.9, 1240.9, 1574.4, 1955.7, 2932.2, 3170.5, 4815.1, 4875.4, 6567.2,
-        7744.0, 10045.0, 13745.5, 24251.0,
-    ],
-    [
-        42.5, 87.1, 204.0, 551.2, 1136.0, 2277.5, 4771.4, 10551.2, 70315.4, 87000.8, 2.719e+05, 6.532e+05,
-        1.221e+06, 3.127e+06, 7.290e+06, 2.624e+07, 7.496e+07,
-    ],
-    [
-        34.7, 74.6, 173.6, 495.0, 1030.5, 2035.2, 3967.8, 8144.6, 17299.0, 33179.0, 63960.6, 1.312e+05,
-        3.402e+05, 7.798e+05, 1.042e+06, 6.753e+06, 1.151e+07,
-    ],
-    [
-        23.7, 57.5, 81.2, 108.7, 142.0, 156.2, 177.7, 213.3, 213.3, 217.1, 217.1, 217.1, 217.1, 217.1, 217.1,
-        217.1, 217.1,
-    ],
-];
-
-/// The size of table entry `i`.
-fn size_of(i: usize) -> usize {
-    1 << (i as u32 + MIN_LOG2)
-}
-
-/// Looks `n` up in `table`: linear interpolation in n between the entries of the
-/// neighbouring powers of two (no logarithm on the planner's path), the first entry
-/// below the smallest size, and beyond the largest the last segment's power law.
-fn lookup(table: &Table, n: usize) -> f64 {
-    let n = n.max(1);
-    let k = n.ilog2();
-    if k < MIN_LOG2 {
-        return table[0];
-    }
-    let i = (k - MIN_LOG2) as usize;
-    if i + 1 < COST_SIZES {
-        let f = (n - (1 << k)) as f64 / (1u64 << k) as f64;
-        return table[i] + f * (table[i + 1] - table[i]);
-    }
-    let (a, b) = (table[COST_SIZES - 2].max(1e-3), table[COST_SIZES - 1].max(1e-3));
-    let top = size_of(COST_SIZES - 1) as f64;
-    b * (n as f64 / top).powf((b / a).log2())
-}
-
-impl CostModel {
-    /// A model from its tables, in this order: conversion (shuffled, ordered), sampled,
-    /// linear walk (shuffled, ordered), array test; `array_linear_max` is 0 (Barba–Langerman
-    /// at every size), the summaries and the crossover are derived.
-    pub fn from_tables(tables: [[f64; COST_SIZES]; 6]) -> CostModel {
-        let [
-            convert_ns,
-            convert_ordered_ns,
-            sampled_ns,
-            linear_ns,
-            linear_ordered_ns,
-            array_ns,
-        ] = tables;
-        let mut model = CostModel {
-            convert_ns,
-            convert_ordered_ns,
-            sampled_ns,
-            linear_ns,
-            linear_ordered_ns,
-            array_ns,
-            array_linear_max: 0,
-            convert_ns_per_vertex: 0.0,
-            sampled_ns_per_sqrt_n: 0.0,
-            crossover: 0,
-        };
-        model.derive_summaries();
-        model
-    }
-
-    fn derive_summaries(&mut self) {
-        let last = COST_SIZES - 1;
-        self.convert_ns_per_vertex = self.convert_ns[last] / size_of(last) as f64;
-        let mut per_sqrt: Vec<f64> = (0..COST_SIZES)
-            .map(|i| self.sampled_ns[i] / (size_of(i) as f64).sqrt())
-            .collect();
-        self.sampled_ns_per_sqrt_n = median(&mut per_sqrt);
-        self.crossover = (0..COST_SIZES)
-            .map(size_of)
-            .take_while(|&n| {
-                let a = Arena::ordered(n);
-                2.0 * self.convert_cost(a) <= self.saving(a, a)
-            })
-            .last()
-            .unwrap_or(0);
-    }
-
-    /// Between the ordered and the shuffled table by the arena's disorder.
-    fn walk(ordered: &Table, shuffled: &Table, a: Arena) -> f64 {
-        let (o, s) = (lookup(ordered, a.vertices), lookup(shuffled, a.vertices));
-        o + a.disorder.clamp(0.0, 1.0) * (s - o).max(0.0)
-    }
-
-    /// Estimated cost of converting the polygon.
-    pub fn convert_cost(&self, a: Arena) -> f64 {
-        Self::walk(&self.convert_ordered_ns, &self.convert_ns, a)
-    }
-
-    /// Estimated cost of the sampled test on the two polygons (governed by the larger).
-    pub fn sampled_cost(&self, a: Arena, b: Arena) -> f64 {
-        lookup(&self.sampled_ns, a.vertices.max(b.vertices))
-    }
-
-    /// Estimated cost of the linear test walking the two polygons.
-    pub fn linear_cost(&self, a: Arena, b: Arena) -> f64 {
-        0.5 * (Self::walk(&self.linear_ordered_ns, &self.linear_ns, a)
-            + Self::walk(&self.linear_ordered_ns, &self.linear_ns, b))
-    }
-
-    /// Whether a pair of snapshots of `n` and `m` vertices is tested linearly rather
-    /// than by Barba–Langerman.
-    pub fn array_is_linear(&self, n: usize, m: usize) -> bool {
-        n + m <= 2 * self.array_linear_max
-    }
-
-    /// Estimated cost of the array test on snapshots of `n` and `m` vertices.
-    pub fn array_cost(&self, n: usize, m: usize) -> f64 {
-        if self.array_is_linear(n, m) {
-            lookup(&self.array_ns, (n + m) / 2)
-        } else {
-            lookup(&self.array_ns, n.max(m))
-        }
-    }
-
-    /// Whether the linear walk is the cheaper test on the two linked polygons
-    /// (otherwise the sampled test).
-    pub fn prefers_linear(&self, a: Arena, b: Arena) -> bool {
-        self.linear_cost(a, b) <= self.sampled_cost(a, b)
-    }
-
-    /// Estimated cost of the cheaper test on the two linked polygons.
-    pub fn linked_cost(&self, a: Arena, b: Arena) -> f64 {
-        self.linear_cost(a, b).min(self.sampled_cost(a, b))
-    }
-
-    /// What snapshots of both polygons save one query between them: the cheaper linked
-    /// test less the array test (never negative).
-    pub fn saving(&self, a: Arena, b: Arena) -> f64 {
-        (self.linked_cost(a, b) - self.array_cost(a.vertices, b.vertices)).max(0.0)
-    }
-
-    /// Measures the model on this machine, for sizes 2^2 ..= 2^18, on generated polygons
-    /// linked in boundary order and in shuffled arenas (as after a long edit history),
-    /// half of the pairs intersecting and half disjoint. At each size the polygons are
-    /// drawn from a pool of about 2^18 vertices in all, so that large sizes are measured
-    /// out of cache, as in a scene. Two passes over all sizes, seconds apart, each figure
-    /// the best of five short rounds (large sizes: one cold run), and the better pass kept
-    /// entry by entry, so a burst of other work on the machine spoils at most one pass;
-    /// then each table is smoothed (median of three neighbours) and made non-decreasing
-    /// in the size. Takes about ten seconds.
+impl<K: Kernel> Scene<K> {
+    /// Plans queries between live keys (`Err` entries are passed through): bounding
+    /// boxes, then the strategy; returns the routes and the keys to convert before
+    /// answering. O(1) per pair and per polygon involved (per-polygon marks), so a batch
+    /// is planned in linear time.
     ///
-    /// # Panics
-    /// On `wasm32-unknown-unknown`, which has no clock (`std::time::Instant`).
-    pub fn calibrate<K: Kernel>(kernel: K) -> CostModel {
-        let mut rng = SmallRng::seed_from_u64(0xca1b);
-        let mut tables = [[f64::INFINITY; COST_SIZES]; 7];
-        let mut ws = QueryWorkspace::default();
-        for _pass in 0..2 {
-            for i in 0..COST_SIZES {
-                let row = measure_size(kernel, size_of(i), &mut rng, &mut ws);
-                for (table, value) in tables.iter_mut().zip(row) {
-                    table[i] = table[i].min(value);
+    /// The planner knows every query of the batch before deciding: a polygon without a
+    /// snapshot is charged, per query, what its conversion would save that query (all of
+    /// it when the other polygon has or will have a snapshot, half when both lack one),
+    /// and is converted when [`Account::should_convert`] says so for the batch's total.
+    /// Polygons whose partners were chosen are then offered the other half once more.
+    pub(super) fn plan(&mut self, pairs: impl Iterator<Item = Result<(usize, usize), SceneError>>) -> Plan {
+        self.plan_warm(pairs, &mut [])
+    }
+
+    /// [`plan`](Self::plan) with the last frame's state of each pair (an empty slice
+    /// for none): a pair its warm start decides gets [`Route::Warm`] (or the linear walk)
+    /// and is left out of the planner's accounts; each state is left as this frame's
+    /// where planning decided it, `None` where the answer will.
+    pub(super) fn plan_warm(
+        &mut self,
+        pairs: impl Iterator<Item = Result<(usize, usize), SceneError>>,
+        warm: &mut [Option<Warm>],
+    ) -> Plan {
+        let mut routes: Vec<Result<Route, SceneError>> = Vec::with_capacity(pairs.size_hint().0);
+        let mut touched = Vec::new();
+        let mut keys = Vec::with_capacity(routes.capacity());
+        for (i, pair) in pairs.enumerate() {
+            keys.push(*pair.as_ref().unwrap_or(&(0, 0)));
+            let route = pair.map(|(a, b)| {
+                let decided = warm.get_mut(i).and_then(|w| self.warm_route(a, b, w));
+                decided.unwrap_or_else(|| self.plan_boxes(a, b, &mut touched))
+            });
+            routes.push(route);
+        }
+        let mut chosen = Vec::new();
+        match self.strategy {
+            Strategy::Sampled | Strategy::Convert => {}
+            Strategy::Cached => chosen.extend(touched.iter().copied()),
+            Strategy::Planner => {
+                self.choose(&touched, &mut chosen);
+                if !chosen.is_empty() {
+                    // A partner chosen now turns the half savings into whole ones.
+                    for k in &chosen {
+                        self.entries[*k].plan.convert = true;
+                    }
+                    for route in routes.iter().flatten() {
+                        if let Route::Sampled(a, b) = *route {
+                            for (k, other) in [(a, b), (b, a)] {
+                                let (ek, eo) = (&self.entries[k], &self.entries[other]);
+                                if !ek.will_have_snapshot() && eo.plan.convert && eo.snapshot.is_none() {
+                                    let half = 0.5 * self.saving(a, b);
+                                    self.entries[k].plan.known_ns += half;
+                                }
+                            }
+                        }
+                    }
+                    self.choose(&touched, &mut chosen);
                 }
             }
         }
-        for table in &mut tables {
-            monotone(table);
+        let (mut convert_ns, mut answer_ns) = (0.0, 0.0);
+        for k in &chosen {
+            self.entries[*k].plan.convert = true;
+            convert_ns += self.costs.convert_cost(self.entries[*k].polygon.arena());
         }
-        let [
-            convert,
-            convert_ordered,
-            sampled,
-            linear,
-            linear_ordered,
-            barba,
-            linear_array,
-        ] = tables;
-        let mut model =
-            CostModel::from_tables([convert, convert_ordered, sampled, linear, linear_ordered, barba]);
-        model.set_array_tables(&barba, &linear_array);
-        model
-    }
-
-    /// The array table is the cheaper of the two array tests at each size, and
-    /// `array_linear_max` the last size of the initial run where the linear one wins.
-    fn set_array_tables(&mut self, barba: &Table, linear: &Table) {
-        self.array_linear_max = (0..COST_SIZES)
-            .take_while(|&i| linear[i] < barba[i])
-            .last()
-            .map_or(0, size_of);
-        for i in 0..COST_SIZES {
-            self.array_ns[i] = if size_of(i) <= self.array_linear_max {
-                linear[i]
-            } else {
-                barba[i]
-            };
-        }
-        self.derive_summaries();
-    }
-}
-
-/// Times the routes at size n: conversion (per polygon; shuffled, then ordered arenas),
-/// sampled, linear on linked polygons (shuffled, ordered), Barba–Langerman and linear on
-/// arrays (per pair).
-fn measure_size<K: Kernel>(kernel: K, n: usize, rng: &mut SmallRng, ws: &mut QueryWorkspace) -> [f64; 7] {
-    let count = ((1usize << 17) / n).clamp(2, 128);
-    let arrays: Vec<(ConvexPolygon, ConvexPolygon)> = (0..count)
-        .map(|j| {
-            let relation = if j % 2 == 0 {
-                Relation::Disjoint
-            } else {
-                Relation::Intersecting
-            };
-            generate::pair(Family::NonUniform, n, relation, rng)
-        })
-        .collect();
-    let shuffled: Vec<(LinkedPolygon, LinkedPolygon)> = arrays
-        .iter()
-        .map(|(p, q)| {
-            (
-                LinkedPolygon::from_convex_shuffled(p, rng),
-                LinkedPolygon::from_convex_shuffled(q, rng),
-            )
-        })
-        .collect();
-    let ordered: Vec<(LinkedPolygon, LinkedPolygon)> = arrays
-        .iter()
-        .map(|(p, q)| (LinkedPolygon::from_convex(p), LinkedPolygon::from_convex(q)))
-        .collect();
-    let per_pair = |t: f64| t / count as f64;
-    let convert = |pairs: &[(LinkedPolygon, LinkedPolygon)]| {
-        per_pair(best_time(|| {
-            for (p, q) in pairs {
-                std::hint::black_box(p.to_convex());
-                std::hint::black_box(q.to_convex());
+        for route in routes.iter_mut().flatten() {
+            if let Route::Sampled(a, b) = *route {
+                let (r, cost) = self.finish_route(a, b);
+                *route = r;
+                answer_ns += cost;
             }
-        })) / 2.0
-    };
-    let linear = |pairs: &[(LinkedPolygon, LinkedPolygon)]| {
-        per_pair(best_time(|| {
-            for (p, q) in pairs {
-                std::hint::black_box(linear_test(kernel, p, q));
+        }
+        for k in touched {
+            self.entries[k].plan = PlanMark::default();
+        }
+        Plan {
+            routes,
+            keys,
+            chosen,
+            convert_ns,
+            answer_ns,
+        }
+    }
+
+    /// The warm start of pair (a, b), whose last-frame state is `w`: the route when it
+    /// decides the pair, with `w` set to this frame's state; `None` (and `w` cleared)
+    /// when the planner must. A kept certificate is checked (O(1) plus the climb); a pair
+    /// separated without one is walked linearly, which answers it and finds one.
+    fn warm_route(&mut self, a: usize, b: usize, w: &mut Option<Warm>) -> Option<Route> {
+        let state = w.take()?;
+        if matches!(state, Warm::Intersecting) {
+            return None;
+        }
+        self.entries[a].polygon.materialized();
+        self.entries[b].polygon.materialized();
+        let (p, q) = (self.entries[a].polygon.get(), self.entries[b].polygon.get());
+        let found = match state {
+            Warm::Intersecting => return None,
+            Warm::Certified { of, from, deep } => {
+                let kept = warm::check(self.kernel, p, q, of, from, deep);
+                let counter = match kept {
+                    Some(_) => &mut self.warm.stats.hits,
+                    None => &mut self.warm.stats.misses,
+                };
+                *counter += 1;
+                kept?
             }
-        }))
-    };
-    let sampled = per_pair(best_time(|| {
-        for (p, q) in &shuffled {
-            std::hint::black_box(sampled_test(kernel, p, q, ws, rng));
-        }
-    }));
-    let barba = per_pair(best_time(|| {
-        for (p, q) in &arrays {
-            std::hint::black_box(barba_test(kernel, p, q));
-        }
-    }));
-    let linear_array = per_pair(best_time(|| {
-        for (p, q) in &arrays {
-            std::hint::black_box(linear_array_test(kernel, p, q));
-        }
-    }));
-    [
-        convert(&shuffled),
-        convert(&ordered),
-        sampled,
-        linear(&shuffled),
-        linear(&ordered),
-        barba,
-        linear_array,
-    ]
-}
-
-/// Makes a measured table non-decreasing in the size, as every route's cost is, without
-/// letting one disturbed measurement move the others: each inner entry becomes the
-/// median of itself and its two neighbours (an isolated spike or dip is dropped), then
-/// each entry is raised to every earlier one.
-fn monotone(table: &mut Table) {
-    let measured = *table;
-    for i in 1..COST_SIZES - 1 {
-        let mut three = [measured[i - 1], measured[i], measured[i + 1]];
-        three.sort_by(f64::total_cmp);
-        table[i] = three[1];
-    }
-    for i in 1..COST_SIZES {
-        table[i] = table[i].max(table[i - 1]);
-    }
-}
-
-/// Times `f` in nanoseconds: once (which also warms the caches); if that took under
-/// 5 ms, five more rounds of repetitions filling about 0.3 ms each, and the
-/// best per-repetition time. Large sizes are thus measured once, cold, as a scene meets
-/// them, and calibration stays within a few seconds.
-fn best_time(mut f: impl FnMut()) -> f64 {
-    let start = Instant::now();
-    f();
-    let once = start.elapsed().as_nanos().max(1) as f64;
-    if once >= 5e6 {
-        return once;
-    }
-    let reps = ((3e5 / once) as usize).clamp(1, 1000);
-    (0..5)
-        .map(|_| {
-            let start = Instant::now();
-            for _ in 0..reps {
-                f();
+            Warm::Separated => {
+                self.warm.stats.fills += 1;
+                let Some(found) = warm::fill(self.kernel, p, q) else {
+                    // They met since: the answer is `true`, proved by the (certified)
+                    // linear walk again, only on this frame.
+                    *w = Some(Warm::Intersecting);
+                    return Some(Route::Linear(a, b));
+                };
+                found
             }
-            start.elapsed().as_nanos() as f64 / reps as f64
-        })
-        .fold(f64::INFINITY, f64::min)
-}
-
-fn median(v: &mut [f64]) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
-}
-
-/// A polygon's planner account since its last edit: the ski-rental rent and the history
-/// of queries between edits.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Account {
-    /// What the missing snapshot of this polygon has cost the queries since its last
-    /// edit (the saving a snapshot would have brought them), in nanoseconds.
-    rent_ns: f64,
-    /// Queries (past the bounding boxes) since the last edit.
-    queries_since_edit: u32,
-    /// Moving average of the number of queries between two edits (infinite until the
-    /// first edit: no history, plain ski rental).
-    queries_per_edit: f64,
-}
-
-impl Default for Account {
-    fn default() -> Self {
-        Account {
-            rent_ns: 0.0,
-            queries_since_edit: 0,
-            queries_per_edit: f64::INFINITY,
-        }
-    }
-}
-
-impl Account {
-    /// An edit: the snapshot is gone, the rent starts again, the history learns how many
-    /// queries came between the last two edits.
-    pub(crate) fn edited(&mut self) {
-        self.rent_ns = 0.0;
-        let q = self.queries_since_edit as f64;
-        self.queries_per_edit = if self.queries_per_edit.is_finite() {
-            0.5 * self.queries_per_edit + 0.5 * q
-        } else {
-            q
         };
-        self.queries_since_edit = 0;
+        *w = Some(found.warm);
+        Some(Route::Warm {
+            of: found.of,
+            from: found.from,
+            to: found.to,
+        })
     }
 
-    /// A query past the bounding boxes.
-    pub(crate) fn queried(&mut self) {
-        self.queries_since_edit = self.queries_since_edit.saturating_add(1);
-    }
-
-    /// A query answered without this polygon's snapshot: rent of `saving_ns`.
-    pub(crate) fn pay(&mut self, saving_ns: f64) {
-        self.rent_ns += saving_ns;
-    }
-
-    /// Whether to convert now. `known_ns` is what a snapshot of this polygon saves the
-    /// `known` queries being planned now (one query, or a batch's), `cost_ns` the
-    /// conversion.
-    ///
-    /// Ski rental, with the queries at hand counted: buy at once when they alone pay for
-    /// it; otherwise buy once the rent since the last edit plus their saving reaches the
-    /// price, unless the queries expected before the next edit (the average between
-    /// edits so far, less those already seen; as many again as already seen once past
-    /// the average) would not pay for it.
-    pub(crate) fn should_convert(&self, cost_ns: f64, known_ns: f64, known: u32) -> bool {
-        if known_ns >= cost_ns {
-            return true;
+    /// The box test; a live pair is left as `Sampled` for now, its polygons marked and
+    /// credited with the saving a snapshot would bring.
+    fn plan_boxes(&mut self, a: usize, b: usize, touched: &mut Vec<usize>) -> Route {
+        if a == b {
+            return Route::Known(true);
         }
-        if self.rent_ns + known_ns < cost_ns {
-            return false;
+        if !self.entries[a].bbox.overlaps(&self.entries[b].bbox) {
+            self.stats.box_rejects += 1;
+            return Route::Known(false);
         }
-        let seen = self.queries_since_edit as f64;
-        let expected_more = if self.queries_per_edit > seen {
-            self.queries_per_edit - seen
+        let saving = self.saving(a, b);
+        for (k, other) in [(a, b), (b, a)] {
+            let has_other = self.entries[other].snapshot.is_some();
+            let e = &mut self.entries[k];
+            e.account.queried();
+            if e.snapshot.is_none() {
+                if !e.plan.touched {
+                    e.plan.touched = true;
+                    touched.push(k);
+                }
+                e.plan.known_ns += if has_other { saving } else { 0.5 * saving };
+                e.plan.known += 1;
+            }
+        }
+        Route::Sampled(a, b)
+    }
+
+    /// Appends to `chosen` the touched polygons, not yet chosen, that the planner
+    /// converts.
+    fn choose(&self, touched: &[usize], chosen: &mut Vec<usize>) {
+        for &k in touched {
+            let e = &self.entries[k];
+            let cost = self.costs.convert_cost(e.polygon.arena());
+            if !e.plan.convert && e.account.should_convert(cost, e.plan.known_ns, e.plan.known) {
+                chosen.push(k);
+            }
+        }
+    }
+
+    /// What snapshots of both polygons would save one query between them.
+    fn saving(&self, a: usize, b: usize) -> f64 {
+        self.costs
+            .saving(self.entries[a].polygon.arena(), self.entries[b].polygon.arena())
+    }
+
+    /// The route of a live pair once conversions are chosen, and its estimated cost;
+    /// unconverted polygons pay their rent.
+    fn finish_route(&mut self, a: usize, b: usize) -> (Route, f64) {
+        let (pa, pb) = (self.entries[a].polygon.arena(), self.entries[b].polygon.arena());
+        let (na, nb) = (pa.vertices, pb.vertices);
+        let (ha, hb) = (
+            self.entries[a].will_have_snapshot(),
+            self.entries[b].will_have_snapshot(),
+        );
+        let linear_arrays = self.costs.array_is_linear(na, nb);
+        if ha && hb {
+            self.stats.array_tests += 1;
+            return (Route::Arrays(a, b, linear_arrays), self.costs.array_cost(na, nb));
+        }
+        if self.strategy == Strategy::Convert {
+            self.stats.throwaway_conversions += 2;
+            let cost =
+                self.costs.convert_cost(pa) + self.costs.convert_cost(pb) + self.costs.array_cost(na, nb);
+            return (Route::Throwaway(a, b, linear_arrays), cost);
+        }
+        let saving = self.costs.saving(pa, pb);
+        for (k, has_other) in [(a, hb), (b, ha)] {
+            if !self.entries[k].will_have_snapshot() {
+                self.entries[k]
+                    .account
+                    .pay(if has_other { saving } else { 0.5 * saving });
+            }
+        }
+        if self.strategy == Strategy::Planner && self.costs.prefers_linear(pa, pb) {
+            self.stats.linear_tests += 1;
+            return (Route::Linear(a, b), self.costs.linear_cost(pa, pb));
+        }
+        self.stats.sampled_tests += 1;
+        (Route::Sampled(a, b), self.costs.sampled_cost(pa, pb))
+    }
+
+    /// Plans a batch given by handles; a stale or foreign handle plans as its error.
+    pub(super) fn plan_pairs(&mut self, pairs: &[(PolygonId, PolygonId)]) -> Plan {
+        let keys = pairs.iter().map(|&(a, b)| Ok((self.key(a)?, self.key(b)?)));
+        let keys: Vec<Result<(usize, usize), SceneError>> = keys.collect();
+        self.plan(keys.into_iter())
+    }
+
+    /// The candidate pairs of a frame, their plan, and (with warm starts) each pair's
+    /// state as far as planning decided it.
+    pub(super) fn plan_frame(&mut self) -> (Vec<(usize, usize)>, Plan, Vec<Option<Warm>>) {
+        self.flush_broad_phase();
+        let candidates = self.broad.overlapping_pairs();
+        let mut warm = if self.warm_starts {
+            let entries = &self.entries;
+            self.warm.take(&candidates, |k| entries[k].generation)
         } else {
-            seen
+            Vec::new()
         };
-        known_ns + expected_more * (known_ns / known.max(1) as f64) >= cost_ns
+        let plan = self.plan_warm(candidates.iter().map(|&pair| Ok(pair)), &mut warm);
+        (candidates, plan, warm)
     }
-}
 
-/// What the planner did, for the demo table and the tests.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-pub struct PlannerStats {
-    /// Queries answered `false` by the bounding boxes alone.
-    pub box_rejects: u64,
-    /// Queries answered by an array test on two valid snapshots.
-    pub array_tests: u64,
-    /// Queries answered by the sampled test on linked polygons.
-    pub sampled_tests: u64,
-    /// Queries answered by the linear test walking both linked polygons.
-    pub linear_tests: u64,
-    /// Snapshots built (and kept).
-    pub conversions: u64,
-    /// Arrays built for one query and dropped (strategy `Convert`).
-    pub throwaway_conversions: u64,
-    /// Snapshots dropped by an edit.
-    pub invalidations: u64,
+    /// Keeps this frame's state of every candidate pair: what planning decided, else
+    /// what the answer was.
+    pub(super) fn keep_frame(
+        &mut self,
+        candidates: &[(usize, usize)],
+        warm: Vec<Option<Warm>>,
+        hits: impl Iterator<Item = bool>,
+    ) {
+        if !self.warm_starts {
+            return;
+        }
+        let states = warm
+            .into_iter()
+            .zip(hits)
+            .map(|(w, hit)| w.unwrap_or(if hit { Warm::Intersecting } else { Warm::Separated }));
+        let entries = &self.entries;
+        self.warm.keep(candidates, states, |k| entries[k].generation);
+    }
 }

@@ -1,20 +1,16 @@
-//! [`Scene`]: the store of editable polygons and its query planner.
+//! [`Scene`]: the store of editable polygons: handles, errors, the per-polygon entries
+//! and the edits. Planning is in `planner.rs`, answering in `query.rs`, both more
+//! methods of [`Scene`].
 
 use super::broad::{BoundingBox, BroadPhase};
+use super::cost::{Account, CostModel, PlannerStats, Strategy};
 use super::lazy::LazyLinked;
-use super::planner::{Account, CostModel, PlannerStats, Strategy};
-use super::route::{
-    QueryWorkspace, Route, array_certified, array_test, linear_certified, linear_test, sampled_certified,
-    sampled_test,
-};
-use super::warm::{self, Warm, WarmCache, WarmStats};
-use crate::intersect::{Certificate, Which};
+use super::route::QueryWorkspace;
+use super::warm::{WarmCache, WarmStats};
 use crate::kernel::{Exact, Kernel, Point};
 use crate::polygon::{ConvexPolygon, EditError, Identity, LinkedPolygon, PolygonError, VertexId};
+use rand::SeedableRng;
 use rand::rngs::SmallRng;
-use rand::{RngCore, SeedableRng};
-#[cfg(feature = "parallel")]
-use rayon::prelude::*;
 use slab::Slab;
 use std::fmt;
 
@@ -109,59 +105,43 @@ impl From<PolygonError> for SceneError {
 }
 
 #[derive(Clone, Debug)]
-struct Entry {
+pub(super) struct Entry {
     /// The linked polygon; translations may wait in it until it is read (`lazy.rs`).
-    polygon: LazyLinked,
-    generation: u64,
-    bbox: BoundingBox,
+    pub(super) polygon: LazyLinked,
+    pub(super) generation: u64,
+    pub(super) bbox: BoundingBox,
     /// False after an edit that may have shrunk the true box; the stored box still
     /// contains the polygon.
-    bbox_tight: bool,
+    pub(super) bbox_tight: bool,
     /// Bumped at every edit.
-    version: u64,
+    pub(super) version: u64,
     /// The array form, present only while the polygon is unchanged since it was built.
-    snapshot: Option<ConvexPolygon>,
+    pub(super) snapshot: Option<ConvexPolygon>,
     /// The planner's ski-rental account.
-    account: Account,
+    pub(super) account: Account,
     /// A translation whose rounding moves no coordinate by this much or more keeps the
     /// polygon strictly convex (0: unknown); see `Scene::translate`.
-    rounding_margin: f64,
+    pub(super) rounding_margin: f64,
     /// A power of two of which every coordinate is an integer multiple (`grid_of`);
     /// translations on this grid that cannot round are proved exact in O(1).
-    grid: f64,
+    pub(super) grid: f64,
     /// Scratch of the plan being made: chosen for conversion, and what a snapshot would
     /// save the planned queries (and how many) that involve this polygon.
-    plan: PlanMark,
+    pub(super) plan: PlanMark,
 }
-
-/// A planned batch: a route per pair (in input order), the polygons to convert first,
-/// and the estimated costs of the conversions and of the answers, in nanoseconds.
-struct Plan {
-    routes: Vec<Result<Route, SceneError>>,
-    /// The keys of each query's P and Q, beside its route ((0, 0) for an error).
-    keys: Vec<(usize, usize)>,
-    chosen: Vec<usize>,
-    convert_ns: f64,
-    answer_ns: f64,
-}
-
-/// Conversions, or answers, run on other threads too only when there are several and
-/// their estimated cost reaches this: handing work to other threads costs microseconds,
-/// and far more when the machine is busy (the caller waits for a worker to wake up).
-const PARALLEL_MIN_NS: f64 = 1e6;
 
 /// Per-polygon marks of one plan, so that planning a batch is O(1) per pair; every
 /// field is back at its default when a plan ends.
 #[derive(Clone, Copy, Debug, Default)]
-struct PlanMark {
-    convert: bool,
-    touched: bool,
-    known_ns: f64,
-    known: u32,
+pub(super) struct PlanMark {
+    pub(super) convert: bool,
+    pub(super) touched: bool,
+    pub(super) known_ns: f64,
+    pub(super) known: u32,
 }
 
 impl Entry {
-    fn edited(&mut self, stats: &mut PlannerStats) {
+    pub(super) fn edited(&mut self, stats: &mut PlannerStats) {
         self.version += 1;
         self.account.edited();
         self.rounding_margin = 0.0;
@@ -171,7 +151,7 @@ impl Entry {
     }
 
     /// Has a snapshot, or will have one before the plan is answered.
-    fn will_have_snapshot(&self) -> bool {
+    pub(super) fn will_have_snapshot(&self) -> bool {
         self.snapshot.is_some() || self.plan.convert
     }
 }
@@ -204,22 +184,22 @@ impl Entry {
 #[derive(Clone, Debug)]
 pub struct Scene<K: Kernel = Exact> {
     /// Fresh for every scene and every clone: handles name polygons of this scene only.
-    identity: Identity,
-    kernel: K,
-    entries: Slab<Entry>,
-    next_generation: u64,
-    broad: BroadPhase,
-    strategy: Strategy,
-    costs: CostModel,
-    stats: PlannerStats,
-    workspace: QueryWorkspace,
-    rng: SmallRng,
+    pub(super) identity: Identity,
+    pub(super) kernel: K,
+    pub(super) entries: Slab<Entry>,
+    pub(super) next_generation: u64,
+    pub(super) broad: BroadPhase,
+    pub(super) strategy: Strategy,
+    pub(super) costs: CostModel,
+    pub(super) stats: PlannerStats,
+    pub(super) workspace: QueryWorkspace,
+    pub(super) rng: SmallRng,
     /// Warm starts across frames: on/off, and the last frame's pairs.
-    warm_starts: bool,
-    warm: WarmCache,
+    pub(super) warm_starts: bool,
+    pub(super) warm: WarmCache,
     /// Translations proved exact by the grid (tests only).
     #[cfg(test)]
-    exact_skips: u64,
+    pub(super) exact_skips: u64,
 }
 
 impl Default for Scene<Exact> {
@@ -248,7 +228,7 @@ impl<K: Kernel> Scene<K> {
             costs: CostModel::default(),
             stats: PlannerStats::default(),
             workspace: QueryWorkspace::default(),
-            rng: crate::polygon::queries::fresh_rng(),
+            rng: crate::seeding::fresh_rng(),
             warm_starts: false,
             warm: WarmCache::default(),
             #[cfg(test)]
@@ -426,7 +406,7 @@ impl<K: Kernel> Scene<K> {
     }
 
     #[inline]
-    fn key(&self, id: PolygonId) -> Result<usize, SceneError> {
+    pub(super) fn key(&self, id: PolygonId) -> Result<usize, SceneError> {
         if id.scene != self.identity.get() {
             return Err(SceneError::ForeignPolygon(id));
         }
@@ -436,7 +416,7 @@ impl<K: Kernel> Scene<K> {
         }
     }
 
-    fn id_of(&self, key: usize) -> PolygonId {
+    pub(super) fn id_of(&self, key: usize) -> PolygonId {
         PolygonId {
             scene: self.identity.get(),
             key: key as u32,
@@ -660,12 +640,12 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Builds and keeps the snapshot; the walk also makes the box tight again.
-    fn convert(&mut self, key: usize) {
+    pub(super) fn convert(&mut self, key: usize) {
         let snapshot = self.entries[key].polygon.materialized().to_convex();
         self.install_snapshot(key, snapshot);
     }
 
-    fn install_snapshot(&mut self, key: usize, snapshot: ConvexPolygon) {
+    pub(super) fn install_snapshot(&mut self, key: usize, snapshot: ConvexPolygon) {
         let e = &mut self.entries[key];
         if !e.bbox_tight {
             let (min, max) = snapshot.bounding_box();
@@ -677,560 +657,9 @@ impl<K: Kernel> Scene<K> {
         self.stats.conversions += 1;
     }
 
-    /// Plans queries between live keys (`Err` entries are passed through): bounding
-    /// boxes, then the strategy; returns the routes and the keys to convert before
-    /// answering. O(1) per pair and per polygon involved (per-polygon marks), so a batch
-    /// is planned in linear time.
-    ///
-    /// The planner knows every query of the batch before deciding: a polygon without a
-    /// snapshot is charged, per query, what its conversion would save that query (all of
-    /// it when the other polygon has or will have a snapshot, half when both lack one),
-    /// and is converted when [`Account::should_convert`] says so for the batch's total.
-    /// Polygons whose partners were chosen are then offered the other half once more.
-    fn plan(&mut self, pairs: impl Iterator<Item = Result<(usize, usize), SceneError>>) -> Plan {
-        self.plan_warm(pairs, &mut [])
-    }
-
-    /// [`plan`](Self::plan) with the last frame's state of each pair (an empty slice
-    /// for none): a pair its warm start decides gets [`Route::Warm`] (or the linear walk)
-    /// and is left out of the planner's accounts; each state is left as this frame's
-    /// where planning decided it, `None` where the answer will.
-    fn plan_warm(
-        &mut self,
-        pairs: impl Iterator<Item = Result<(usize, usize), SceneError>>,
-        warm: &mut [Option<Warm>],
-    ) -> Plan {
-        let mut routes: Vec<Result<Route, SceneError>> = Vec::with_capacity(pairs.size_hint().0);
-        let mut touched = Vec::new();
-        let mut keys = Vec::with_capacity(routes.capacity());
-        for (i, pair) in pairs.enumerate() {
-            keys.push(*pair.as_ref().unwrap_or(&(0, 0)));
-            let route = pair.map(|(a, b)| {
-                let decided = warm.get_mut(i).and_then(|w| self.warm_route(a, b, w));
-                decided.unwrap_or_else(|| self.plan_boxes(a, b, &mut touched))
-            });
-            routes.push(route);
-        }
-        let mut chosen = Vec::new();
-        match self.strategy {
-            Strategy::Sampled | Strategy::Convert => {}
-            Strategy::Cached => chosen.extend(touched.iter().copied()),
-            Strategy::Planner => {
-                self.choose(&touched, &mut chosen);
-                if !chosen.is_empty() {
-                    // A partner chosen now turns the half savings into whole ones.
-                    for k in &chosen {
-                        self.entries[*k].plan.convert = true;
-                    }
-                    for route in routes.iter().flatten() {
-                        if let Route::Sampled(a, b) = *route {
-                            for (k, other) in [(a, b), (b, a)] {
-                                let (ek, eo) = (&self.entries[k], &self.entries[other]);
-                                if !ek.will_have_snapshot() && eo.plan.convert && eo.snapshot.is_none() {
-                                    let half = 0.5 * self.saving(a, b);
-                                    self.entries[k].plan.known_ns += half;
-                                }
-                            }
-                        }
-                    }
-                    self.choose(&touched, &mut chosen);
-                }
-            }
-        }
-        let (mut convert_ns, mut answer_ns) = (0.0, 0.0);
-        for k in &chosen {
-            self.entries[*k].plan.convert = true;
-            convert_ns += self.costs.convert_cost(self.entries[*k].polygon.arena());
-        }
-        for route in routes.iter_mut().flatten() {
-            if let Route::Sampled(a, b) = *route {
-                let (r, cost) = self.finish_route(a, b);
-                *route = r;
-                answer_ns += cost;
-            }
-        }
-        for k in touched {
-            self.entries[k].plan = PlanMark::default();
-        }
-        Plan {
-            routes,
-            keys,
-            chosen,
-            convert_ns,
-            answer_ns,
-        }
-    }
-
-    /// The warm start of pair (a, b), whose last-frame state is `w`: the route when it
-    /// decides the pair, with `w` set to this frame's state; `None` (and `w` cleared)
-    /// when the planner must. A kept certificate is checked (O(1) plus the climb); a pair
-    /// separated without one is walked linearly, which answers it and finds one.
-    fn warm_route(&mut self, a: usize, b: usize, w: &mut Option<Warm>) -> Option<Route> {
-        let state = w.take()?;
-        if matches!(state, Warm::Intersecting) {
-            return None;
-        }
-        self.entries[a].polygon.materialized();
-        self.entries[b].polygon.materialized();
-        let (p, q) = (self.entries[a].polygon.get(), self.entries[b].polygon.get());
-        let found = match state {
-            Warm::Intersecting => return None,
-            Warm::Certified { of, from, deep } => {
-                let kept = warm::check(self.kernel, p, q, of, from, deep);
-                let counter = match kept {
-                    Some(_) => &mut self.warm.stats.hits,
-                    None => &mut self.warm.stats.misses,
-                };
-                *counter += 1;
-                kept?
-            }
-            Warm::Separated => {
-                self.warm.stats.fills += 1;
-                let Some(found) = warm::fill(self.kernel, p, q) else {
-                    // They met since: the answer is `true`, proved by the (certified)
-                    // linear walk again, only on this frame.
-                    *w = Some(Warm::Intersecting);
-                    return Some(Route::Linear(a, b));
-                };
-                found
-            }
-        };
-        *w = Some(found.warm);
-        Some(Route::Warm {
-            of: found.of,
-            from: found.from,
-            to: found.to,
-        })
-    }
-
-    /// The box test; a live pair is left as `Sampled` for now, its polygons marked and
-    /// credited with the saving a snapshot would bring.
-    fn plan_boxes(&mut self, a: usize, b: usize, touched: &mut Vec<usize>) -> Route {
-        if a == b {
-            return Route::Known(true);
-        }
-        if !self.entries[a].bbox.overlaps(&self.entries[b].bbox) {
-            self.stats.box_rejects += 1;
-            return Route::Known(false);
-        }
-        let saving = self.saving(a, b);
-        for (k, other) in [(a, b), (b, a)] {
-            let has_other = self.entries[other].snapshot.is_some();
-            let e = &mut self.entries[k];
-            e.account.queried();
-            if e.snapshot.is_none() {
-                if !e.plan.touched {
-                    e.plan.touched = true;
-                    touched.push(k);
-                }
-                e.plan.known_ns += if has_other { saving } else { 0.5 * saving };
-                e.plan.known += 1;
-            }
-        }
-        Route::Sampled(a, b)
-    }
-
-    /// Appends to `chosen` the touched polygons, not yet chosen, that the planner
-    /// converts.
-    fn choose(&self, touched: &[usize], chosen: &mut Vec<usize>) {
-        for &k in touched {
-            let e = &self.entries[k];
-            let cost = self.costs.convert_cost(e.polygon.arena());
-            if !e.plan.convert && e.account.should_convert(cost, e.plan.known_ns, e.plan.known) {
-                chosen.push(k);
-            }
-        }
-    }
-
-    /// What snapshots of both polygons would save one query between them.
-    fn saving(&self, a: usize, b: usize) -> f64 {
-        self.costs
-            .saving(self.entries[a].polygon.arena(), self.entries[b].polygon.arena())
-    }
-
-    /// The route of a live pair once conversions are chosen, and its estimated cost;
-    /// unconverted polygons pay their rent.
-    fn finish_route(&mut self, a: usize, b: usize) -> (Route, f64) {
-        let (pa, pb) = (self.entries[a].polygon.arena(), self.entries[b].polygon.arena());
-        let (na, nb) = (pa.vertices, pb.vertices);
-        let (ha, hb) = (
-            self.entries[a].will_have_snapshot(),
-            self.entries[b].will_have_snapshot(),
-        );
-        let linear_arrays = self.costs.array_is_linear(na, nb);
-        if ha && hb {
-            self.stats.array_tests += 1;
-            return (Route::Arrays(a, b, linear_arrays), self.costs.array_cost(na, nb));
-        }
-        if self.strategy == Strategy::Convert {
-            self.stats.throwaway_conversions += 2;
-            let cost =
-                self.costs.convert_cost(pa) + self.costs.convert_cost(pb) + self.costs.array_cost(na, nb);
-            return (Route::Throwaway(a, b, linear_arrays), cost);
-        }
-        let saving = self.costs.saving(pa, pb);
-        for (k, has_other) in [(a, hb), (b, ha)] {
-            if !self.entries[k].will_have_snapshot() {
-                self.entries[k]
-                    .account
-                    .pay(if has_other { saving } else { 0.5 * saving });
-            }
-        }
-        if self.strategy == Strategy::Planner && self.costs.prefers_linear(pa, pb) {
-            self.stats.linear_tests += 1;
-            return (Route::Linear(a, b), self.costs.linear_cost(pa, pb));
-        }
-        self.stats.sampled_tests += 1;
-        (Route::Sampled(a, b), self.costs.sampled_cost(pa, pb))
-    }
-
-    /// Answers one planned route; `seed` seeds the sampled test's generator (per pair, so
-    /// answers and times never depend on the order or the thread).
-    fn answer(&self, route: Route, ws: &mut QueryWorkspace, seed: u64) -> bool {
-        let e = |k: usize| &self.entries[k];
-        let snapshot = |k: usize| e(k).snapshot.as_ref().expect("planned snapshot");
-        match route {
-            Route::Known(v) => v,
-            Route::Warm { .. } => false,
-            Route::Arrays(a, b, linear) => array_test(self.kernel, snapshot(a), snapshot(b), linear),
-            Route::Linear(a, b) => linear_test(self.kernel, e(a).polygon.get(), e(b).polygon.get()),
-            Route::Sampled(a, b) => {
-                let mut rng = SmallRng::seed_from_u64(seed);
-                sampled_test(self.kernel, e(a).polygon.get(), e(b).polygon.get(), ws, &mut rng)
-            }
-            Route::Throwaway(a, b, linear) => array_test(
-                self.kernel,
-                &e(a).polygon.get().to_convex(),
-                &e(b).polygon.get().to_convex(),
-                linear,
-            ),
-        }
-    }
-
-    /// The certificate of a planned query between keys `a` and `b` (the query's P and
-    /// Q): the certified call of the route's test, with the scene's kernel. A pair
-    /// rejected by its bounding boxes is known to be disjoint exactly, so its separating
-    /// edge is searched with the exact kernel (the array test when both snapshots are
-    /// valid, else the sampled test); a polygon against itself is proved by its first
-    /// vertex.
-    fn answer_certified(
-        &self,
-        route: Route,
-        (a, b): (usize, usize),
-        ws: &mut QueryWorkspace,
-        seed: u64,
-    ) -> Certificate {
-        let e = |k: usize| &self.entries[k];
-        let snapshot = |k: usize| e(k).snapshot.as_ref().expect("planned snapshot");
-        match route {
-            Route::Known(true) => {
-                let point = e(a).polygon.get().point_at(0);
-                Certificate::VertexInside { of: Which::P, point }
-            }
-            Route::Known(false) => match (&e(a).snapshot, &e(b).snapshot) {
-                (Some(p), Some(q)) => array_certified(Exact, p, q, false),
-                _ => {
-                    let mut rng = SmallRng::seed_from_u64(seed);
-                    sampled_certified(Exact, e(a).polygon.get(), e(b).polygon.get(), ws, &mut rng)
-                }
-            },
-            Route::Warm { of, from, to } => Certificate::Separated { of, from, to },
-            Route::Arrays(a, b, linear) => array_certified(self.kernel, snapshot(a), snapshot(b), linear),
-            Route::Linear(a, b) => linear_certified(self.kernel, e(a).polygon.get(), e(b).polygon.get()),
-            Route::Sampled(a, b) => {
-                let mut rng = SmallRng::seed_from_u64(seed);
-                sampled_certified(self.kernel, e(a).polygon.get(), e(b).polygon.get(), ws, &mut rng)
-            }
-            Route::Throwaway(a, b, linear) => array_certified(
-                self.kernel,
-                &e(a).polygon.get().to_convex(),
-                &e(b).polygon.get().to_convex(),
-                linear,
-            ),
-        }
-    }
-
-    /// Whether polygons `a` and `b` intersect (closed sets: touching counts).
-    ///
-    /// # Errors
-    /// `StalePolygon`, `ForeignPolygon` for either handle.
-    pub fn intersects(&mut self, a: PolygonId, b: PolygonId) -> Result<bool, SceneError> {
-        self.query(a, b, |s, route, _, ws, seed| s.answer(route, ws, seed))
-    }
-
-    /// [`intersects`](Self::intersects) with a [`Certificate`] of the answer (`a` is the
-    /// certificate's P, `b` its Q; the answer is [`Certificate::intersects`]), planned
-    /// exactly as `intersects` plans: the same strategy, conversions and counters, and
-    /// the certified call of the test the plan chose. The certificate names vertices of
-    /// the polygons as they are now; [`verify_linked`](crate::intersect::verify_linked)
-    /// checks it exactly.
-    ///
-    /// # Errors
-    /// `StalePolygon`, `ForeignPolygon` for either handle.
-    ///
-    /// # Precision
-    /// Under the exact kernel the certificate always verifies; under the fast kernel it
-    /// may not, exactly when the fast answer may be wrong (docs/certificates.md).
-    ///
-    /// ```
-    /// use polysect::store::Scene;
-    /// use polysect::intersect::verify_linked;
-    /// let mut scene = Scene::new();
-    /// let a = scene.insert_points([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
-    /// let b = scene.insert_points([[2.0, 1.0], [4.0, 0.0], [4.0, 3.0]])?;
-    /// let c = scene.intersects_certified(a, b)?;
-    /// assert!(c.intersects()); // (2, 1) lies on a's edge
-    /// assert_eq!(verify_linked(scene.polygon(a)?, scene.polygon(b)?, &c), Ok(()));
-    /// # Ok::<(), Box<dyn std::error::Error>>(())
-    /// ```
-    pub fn intersects_certified(&mut self, a: PolygonId, b: PolygonId) -> Result<Certificate, SceneError> {
-        self.query(a, b, |s, route, keys, ws, seed| {
-            s.answer_certified(route, keys, ws, seed)
-        })
-    }
-
-    /// Plans one query, builds the conversions it chose and answers it with `answer`.
-    fn query<T>(
-        &mut self,
-        a: PolygonId,
-        b: PolygonId,
-        answer: impl FnOnce(&Self, Route, (usize, usize), &mut QueryWorkspace, u64) -> T,
-    ) -> Result<T, SceneError> {
-        let (ka, kb) = (self.key(a)?, self.key(b)?);
-        let mut plan = self.plan(std::iter::once(Ok((ka, kb))));
-        for k in plan.chosen {
-            self.convert(k);
-        }
-        let route = plan.routes.pop().expect("one route")?;
-        let mut ws = std::mem::take(&mut self.workspace);
-        let seed = self.rng.next_u64();
-        let answer = answer(self, route, (ka, kb), &mut ws, seed);
-        self.workspace = ws;
-        Ok(answer)
-    }
-
-    /// Answers many queries: planned together (the planner sees the whole batch before
-    /// choosing conversions), then conversions built and pairs answered, each in
-    /// parallel (with the `parallel` feature) when there are several and their estimated
-    /// cost (at least 1 ms) pays for handing work to other threads. Results are in input order and do not depend on the number of threads.
-    /// A pair with a stale or foreign handle gets that error in its place; the other
-    /// pairs are answered.
-    pub fn intersects_batch(&mut self, pairs: &[(PolygonId, PolygonId)]) -> Vec<Result<bool, SceneError>> {
-        let plan = self.plan_pairs(pairs);
-        self.run_plan(plan)
-    }
-
-    /// [`intersects_batch`](Self::intersects_batch) with certificates, as
-    /// [`intersects_certified`](Self::intersects_certified) gives them (in each pair, the
-    /// first polygon is the certificate's P).
-    pub fn intersects_batch_certified(
-        &mut self,
-        pairs: &[(PolygonId, PolygonId)],
-    ) -> Vec<Result<Certificate, SceneError>> {
-        let plan = self.plan_pairs(pairs);
-        self.run_plan_certified(plan)
-    }
-
-    /// Plans a batch given by handles; a stale or foreign handle plans as its error.
-    fn plan_pairs(&mut self, pairs: &[(PolygonId, PolygonId)]) -> Plan {
-        let keys = pairs.iter().map(|&(a, b)| Ok((self.key(a)?, self.key(b)?)));
-        let keys: Vec<Result<(usize, usize), SceneError>> = keys.collect();
-        self.plan(keys.into_iter())
-    }
-
-    fn run_plan(&mut self, plan: Plan) -> Vec<Result<bool, SceneError>> {
-        self.run_plan_with(plan, |s, route, _, ws, seed| s.answer(route, ws, seed))
-    }
-
-    fn run_plan_certified(&mut self, plan: Plan) -> Vec<Result<Certificate, SceneError>> {
-        self.run_plan_with(plan, |s, route, keys, ws, seed| {
-            s.answer_certified(route, keys, ws, seed)
-        })
-    }
-
-    /// Converts the chosen polygons and answers the routes; the sampled test of route `i`
-    /// is seeded from one draw of the scene's generator and `i`, so answers do not
-    /// depend on the number of threads.
-    #[cfg_attr(not(feature = "parallel"), allow(unused_variables))]
-    fn run_plan_with<T: Send>(
-        &mut self,
-        plan: Plan,
-        answer: impl Fn(&Self, Route, (usize, usize), &mut QueryWorkspace, u64) -> T + Sync,
-    ) -> Vec<Result<T, SceneError>> {
-        let base: u64 = self.rng.next_u64();
-        // Without the `parallel` feature everything runs on the calling thread.
-        #[cfg(feature = "parallel")]
-        let threads = rayon::current_num_threads() > 1;
-        #[cfg(not(feature = "parallel"))]
-        let threads = false;
-        let parallel_convert = threads && plan.chosen.len() > 1 && plan.convert_ns >= PARALLEL_MIN_NS;
-        let parallel = threads && plan.routes.len() > 64 && plan.answer_ns >= PARALLEL_MIN_NS;
-        self.convert_all(plan.chosen, parallel_convert);
-        let mut ws = std::mem::take(&mut self.workspace);
-        let this = &*self;
-        let keys = &plan.keys;
-        let answer = |ws: &mut QueryWorkspace, (i, route): (usize, &Result<Route, SceneError>)| {
-            let route = route.clone()?;
-            let seed = base ^ (i as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15);
-            Ok(answer(this, route, keys[i], ws, seed))
-        };
-        let answers = match () {
-            #[cfg(feature = "parallel")]
-            () if parallel => plan
-                .routes
-                .par_iter()
-                .enumerate()
-                .with_min_len(64)
-                .map_init(QueryWorkspace::default, answer)
-                .collect(),
-            () => plan
-                .routes
-                .iter()
-                .enumerate()
-                .map(|r| answer(&mut ws, r))
-                .collect(),
-        };
-        self.workspace = ws;
-        answers
-    }
-
-    #[cfg_attr(not(feature = "parallel"), allow(unused_variables))]
-    fn convert_all(&mut self, mut keys: Vec<usize>, parallel: bool) {
-        keys.sort_unstable();
-        keys.dedup();
-        for &k in &keys {
-            self.entries[k].polygon.materialized();
-        }
-        let convert = |&k: &usize| (k, self.entries[k].polygon.get().to_convex());
-        let snapshots: Vec<(usize, ConvexPolygon)> = match () {
-            #[cfg(feature = "parallel")]
-            () if parallel => keys.par_iter().with_min_len(16).map(convert).collect(),
-            () => keys.iter().map(convert).collect(),
-        };
-        for (k, s) in snapshots {
-            self.install_snapshot(k, s);
-        }
-    }
-
-    fn flush_broad_phase(&mut self) {
+    pub(super) fn flush_broad_phase(&mut self) {
         let entries = &self.entries;
         self.broad.flush(|k| entries.get(k).map(|e| e.bbox));
-    }
-
-    /// All polygons other than `a` that intersect it, in slot order.
-    ///
-    /// # Errors
-    /// `StalePolygon`, `ForeignPolygon`.
-    pub fn intersecting(&mut self, a: PolygonId) -> Result<Vec<PolygonId>, SceneError> {
-        let ka = self.key(a)?;
-        self.flush_broad_phase();
-        let mut candidates: Vec<usize> = self
-            .broad
-            .overlapping(&self.entries[ka].bbox)
-            .filter(|&k| k != ka)
-            .collect();
-        candidates.sort_unstable();
-        let plan = self.plan(candidates.iter().map(|&k| Ok((ka, k))));
-        let answers = self.run_plan(plan);
-        Ok(candidates
-            .into_iter()
-            .zip(answers)
-            .filter(|(_, hit)| matches!(hit, Ok(true)))
-            .map(|(k, _)| self.id_of(k))
-            .collect())
-    }
-
-    /// All intersecting pairs `(a, b)` with `a` before `b` in slot order, sorted.
-    ///
-    /// With warm starts ([`set_warm_starts`](Self::set_warm_starts), off by default), a
-    /// pair found separated by the last call is first checked against the separating
-    /// edge found then; the answer is the same, only its cost differs.
-    pub fn intersecting_pairs(&mut self) -> Vec<(PolygonId, PolygonId)> {
-        let (candidates, plan, warm) = self.plan_frame();
-        let answers = self.run_plan(plan);
-        self.keep_frame(
-            &candidates,
-            warm,
-            answers.iter().map(|hit| matches!(hit, Ok(true))),
-        );
-        candidates
-            .into_iter()
-            .zip(answers)
-            .filter(|(_, hit)| matches!(hit, Ok(true)))
-            .map(|((a, b), _)| (self.id_of(a), self.id_of(b)))
-            .collect()
-    }
-
-    /// The candidate pairs of a frame, their plan, and (with warm starts) each pair's
-    /// state as far as planning decided it.
-    fn plan_frame(&mut self) -> (Vec<(usize, usize)>, Plan, Vec<Option<Warm>>) {
-        self.flush_broad_phase();
-        let candidates = self.broad.overlapping_pairs();
-        let mut warm = if self.warm_starts {
-            let entries = &self.entries;
-            self.warm.take(&candidates, |k| entries[k].generation)
-        } else {
-            Vec::new()
-        };
-        let plan = self.plan_warm(candidates.iter().map(|&pair| Ok(pair)), &mut warm);
-        (candidates, plan, warm)
-    }
-
-    /// Keeps this frame's state of every candidate pair: what planning decided, else
-    /// what the answer was.
-    fn keep_frame(
-        &mut self,
-        candidates: &[(usize, usize)],
-        warm: Vec<Option<Warm>>,
-        hits: impl Iterator<Item = bool>,
-    ) {
-        if !self.warm_starts {
-            return;
-        }
-        let states = warm
-            .into_iter()
-            .zip(hits)
-            .map(|(w, hit)| w.unwrap_or(if hit { Warm::Intersecting } else { Warm::Separated }));
-        let entries = &self.entries;
-        self.warm.keep(candidates, states, |k| entries[k].generation);
-    }
-
-    /// [`intersecting_pairs`](Self::intersecting_pairs), each with the certificate of
-    /// its intersection (`a` is the certificate's P). Pairs the broad phase rejects get
-    /// none: they are not in the answer.
-    pub fn intersecting_pairs_certified(&mut self) -> Vec<(PolygonId, PolygonId, Certificate)> {
-        self.candidate_pairs_certified()
-            .into_iter()
-            .filter_map(|(a, b, c)| Some((a, b, c.ok().filter(Certificate::intersects)?)))
-            .collect()
-    }
-
-    /// Every candidate pair (boxes overlap) with the certificate of its answer, in one
-    /// planned pass: an intersection witness, or for a pair found disjoint its separating
-    /// edge (`a` is the certificate's P). What a caller needs that keeps separating
-    /// edges for later contacts without asking the disjoint pairs a second time.
-    pub fn candidate_pairs_certified(
-        &mut self,
-    ) -> Vec<(PolygonId, PolygonId, Result<Certificate, SceneError>)> {
-        let (candidates, plan, warm) = self.plan_frame();
-        let answers = self.run_plan_certified(plan);
-        let hits = answers.iter().map(|c| matches!(c, Ok(c) if c.intersects()));
-        self.keep_frame(&candidates, warm, hits);
-        candidates
-            .into_iter()
-            .zip(answers)
-            .map(|((a, b), c)| (self.id_of(a), self.id_of(b), c))
-            .collect()
-    }
-
-    /// Pairs of polygons whose bounding boxes overlap (the broad phase's candidates).
-    pub fn candidate_pairs(&mut self) -> Vec<(PolygonId, PolygonId)> {
-        self.flush_broad_phase();
-        self.broad
-            .overlapping_pairs()
-            .into_iter()
-            .map(|(a, b)| (self.id_of(a), self.id_of(b)))
-            .collect()
     }
 
     /// Checks every invariant: each polygon's own, boxes contain their polygons (and equal
@@ -1305,195 +734,4 @@ fn grid_of(p: Point) -> f64 {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::generate::regular_polygon;
-    use rand::Rng;
-
-    /// The scene skips the convexity check of a translation when the margin kept from
-    /// the last check proves rounding harmless. Against a copy translated with the full
-    /// check every time, on polygons whose vertices are a few ulps apart (where rounding
-    /// does break convexity) and on ordinary ones: the same acceptances, the same
-    /// refusals, the same coordinates, and skips actually taken.
-    fn snapped(points: &[Point], bits: i32) -> Vec<Point> {
-        let g = 2f64.powi(-bits);
-        let snap = |x: f64| (x / g).round() * g;
-        let pts: Vec<Point> = points.iter().map(|p| Point::new(snap(p.x), snap(p.y))).collect();
-        crate::polygon::convex_hull(&pts).unwrap().into_vertices()
-    }
-
-    /// `grid_of` is the largest power of two dividing both coordinates.
-    #[test]
-    fn grid_of_is_the_largest_dividing_power_of_two() {
-        let mut rng = SmallRng::seed_from_u64(0x9e1d);
-        assert_eq!(grid_of(Point::new(0.0, 0.0)), f64::INFINITY);
-        assert_eq!(grid_of(Point::new(3.0, 0.0)), 1.0);
-        assert_eq!(grid_of(Point::new(0.75, -6.0)), 0.25);
-        assert_eq!(grid_of(Point::new(f64::from_bits(1), 1.0)), f64::from_bits(1));
-        assert_eq!(grid_of(Point::new(f64::MAX, 0.0)), 2f64.powi(971));
-        assert_eq!(grid_of(Point::new(f64::MIN_POSITIVE, 0.0)), f64::MIN_POSITIVE);
-        for _ in 0..10_000 {
-            let x = f64::from_bits(rng.random::<u64>() >> 1) * if rng.random_bool(0.5) { 1.0 } else { -1.0 };
-            if !x.is_finite() || x == 0.0 {
-                continue;
-            }
-            let g = grid_of(Point::new(x, 0.0));
-            assert!(
-                g.is_finite() && g > 0.0 && g.to_bits() & ((1u64 << 52) - 1) == 0 || g < f64::MIN_POSITIVE
-            );
-            // x / g is an odd integer (exact: dividing by a power of two, no underflow
-            // below g itself).
-            let q = x / g;
-            assert_eq!(q, q.trunc(), "{x:e}");
-            assert_eq!(q.abs() % 2.0, 1.0, "{x:e}");
-        }
-    }
-
-    #[test]
-    fn skipped_translation_checks_agree_with_full_checks() {
-        let mut rng = SmallRng::seed_from_u64(0x7a11);
-        let shapes: Vec<Vec<Point>> = vec![
-            // A triangle a few ulps wide near 2^20.
-            vec![
-                Point::new(1048576.0, 1048576.0),
-                Point::new(1048576.0 + 4.0 * 2.3283064365386963e-10, 1048576.0),
-                Point::new(1048576.0, 1048576.0 + 3.0 * 2.3283064365386963e-10),
-            ],
-            // Nearly flat turns: the hull of a fine regular polygon far from the origin.
-            crate::polygon::convex_hull(
-                &regular_polygon(4096, 1e-3)
-                    .vertices()
-                    .iter()
-                    .map(|p| Point::new(p.x + 1e8, p.y - 3e7))
-                    .collect::<Vec<_>>(),
-            )
-            .unwrap()
-            .into_vertices(),
-            regular_polygon(16, 1.0).into_vertices(),
-            regular_polygon(256, 5.0).into_vertices(),
-            // On a grid of 2^-20 (dyadic translations are then often exact).
-            snapped(regular_polygon(64, 3.0).vertices(), 20),
-            snapped(regular_polygon(1024, 0.5).vertices(), 30),
-        ];
-        let mut skipped = 0;
-        let mut refused = 0;
-        let mut exact_skips = 0;
-        for (s, shape) in shapes.iter().enumerate() {
-            let mut scene = Scene::new();
-            let id = scene.insert_points(shape.iter().copied()).unwrap();
-            let mut copy = scene.polygon(id).unwrap().clone();
-            // Half the runs with a snapshot (checked on the array), half without.
-            if s % 2 == 0 {
-                scene.set_strategy(Strategy::Cached);
-                let other = scene.insert_points(shape.iter().copied()).unwrap();
-                scene.intersects(id, other).unwrap();
-                assert!(scene.has_snapshot(id).unwrap());
-            }
-            for step in 0..3000 {
-                let scale = [1e-12, 1e-6, 1.0, 1e3, 1e7][rng.random_range(0..5)];
-                // The grid shapes keep to dyadic vectors (one other would lose the grid).
-                let (dx, dy) = if s < 4 && rng.random_bool(0.5) {
-                    (rng.random_range(-scale..scale), rng.random_range(-scale..scale))
-                } else {
-                    // Dyadic: k · 2^-j, exact or rounding depending on j and the size.
-                    let j = match s {
-                        4 => rng.random_range(10..=20),
-                        5 => rng.random_range(20..=30),
-                        _ => rng.random_range(-10..60),
-                    };
-                    let mut d = || rng.random_range(-(1i64 << 20)..(1i64 << 20)) as f64 * 2f64.powi(-j);
-                    (d(), d())
-                };
-                let key = scene.key(id).unwrap();
-                let margin_before = scene.entries[key].rounding_margin;
-                let got = scene.translate(id, dx, dy);
-                let want = copy.translate(dx, dy);
-                assert_eq!(
-                    got,
-                    want.clone().map_err(|e| SceneError::Edit(id, e)),
-                    "shape {s} step {step}"
-                );
-                if want.is_err() {
-                    refused += 1;
-                } else if margin_before > 0.0 && scene.entries[key].rounding_margin < margin_before {
-                    skipped += 1;
-                }
-                let ours: Vec<Point> = scene.polygon(id).unwrap().iter().map(|(_, p)| p).collect();
-                let theirs: Vec<Point> = copy.iter().map(|(_, p)| p).collect();
-                assert_eq!(ours, theirs, "shape {s} step {step}");
-                if step % 500 == 0 {
-                    scene.debug_validate().unwrap();
-                }
-            }
-            scene.debug_validate().unwrap();
-            exact_skips += scene.exact_skips;
-        }
-        assert!(skipped > 1000, "{skipped} checks skipped");
-        assert!(
-            exact_skips > 500,
-            "{exact_skips} translations proved exact by the grid"
-        );
-        assert!(refused > 10, "{refused} translations refused");
-    }
-
-    /// Translations of a polygon wait (up to the list's length) while only its snapshot
-    /// is read, and every reader of the linked polygon sees them applied: shared reads
-    /// through a twin, edits and conversions in place; the coordinates are eager
-    /// translation's, bit for bit.
-    #[test]
-    fn translations_wait_until_the_linked_polygon_is_read() {
-        use super::super::lazy::MAX_PENDING;
-        let mut scene = Scene::new();
-        scene.set_strategy(Strategy::Cached);
-        let a = scene.insert(LinkedPolygon::from_convex(&regular_polygon(64, 1.0)));
-        let b = scene.insert(LinkedPolygon::from_convex(&regular_polygon(32, 0.5)));
-        let mut eager = scene.polygon(a).unwrap().clone();
-        assert!(scene.intersects(a, b).unwrap());
-        assert!(scene.has_snapshot(a).unwrap());
-        let key = scene.key(a).unwrap();
-        let pending = |s: &Scene| s.entries[key].polygon.pending();
-        let coords = |p: &LinkedPolygon| -> Vec<(u64, u64)> {
-            p.iter().map(|(_, q)| (q.x.to_bits(), q.y.to_bits())).collect()
-        };
-        let mut max_seen = 0;
-        for step in 0..3 * MAX_PENDING + 1 {
-            let (dx, dy) = (0.01 + step as f64 * 1e-4, -0.007);
-            scene.translate(a, dx, dy).unwrap();
-            eager.translate(dx, dy).unwrap();
-            max_seen = max_seen.max(pending(&scene));
-            // Only the snapshot is read by the array test.
-            scene.intersects(a, b).unwrap();
-            assert_eq!(scene.stats().array_tests as usize, step + 2);
-        }
-        assert_eq!(
-            max_seen, MAX_PENDING,
-            "translations wait, and no more than the list holds"
-        );
-        assert!(pending(&scene) > 0);
-        // A shared read: the twin, with handles valid on the polygon.
-        let first = scene.polygon(a).unwrap().first();
-        assert_eq!(coords(scene.polygon(a).unwrap()), coords(&eager));
-        assert!(pending(&scene) > 0);
-        // An edit: applied in place first (the old point is the translated one).
-        let p = scene.polygon(a).unwrap().point(first).unwrap();
-        assert_eq!(
-            scene.move_vertex(a, first, p).unwrap(),
-            eager.point(eager.first()).unwrap()
-        );
-        assert_eq!(pending(&scene), 0);
-        assert_eq!(coords(scene.polygon(a).unwrap()), coords(&eager));
-        // A translation without a snapshot waits too; a conversion applies it.
-        assert!(!scene.has_snapshot(a).unwrap());
-        scene.translate(a, 0.25, 0.5).unwrap();
-        eager.translate(0.25, 0.5).unwrap();
-        assert_eq!(pending(&scene), 1);
-        scene.convert(key);
-        assert_eq!(pending(&scene), 0);
-        assert_eq!(coords(scene.polygon(a).unwrap()), coords(&eager));
-        scene.debug_validate().unwrap();
-        // Removal returns the translated polygon.
-        scene.translate(a, -3.0, 1.0 / 3.0).unwrap();
-        eager.translate(-3.0, 1.0 / 3.0).unwrap();
-        assert_eq!(coords(&scene.remove(a).unwrap()), coords(&eager));
-    }
-}
+mod tests;

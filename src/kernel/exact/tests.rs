@@ -1,5 +1,12 @@
+use super::dyadic::*;
+use super::interval::*;
+use super::out_of_line::*;
+use super::semi_static::*;
+use super::static_filter::*;
 use super::*;
-use crate::kernel::Fast;
+use crate::kernel::{
+    CrossPoly, CrossProductsPoly, DotPoly, Fast, Kernel, Orientation, Point, Polynomial, Ring, Sign,
+};
 use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};
 

@@ -46,9 +46,10 @@
 //! [`Exact`], for every finite input; under [`Fast`](crate::Fast) a point within
 //! rounding distance of the boundary may be misjudged.
 
-use super::{fresh_rng, sample_count};
+use super::sample_count;
 use crate::kernel::{Exact, Kernel, Orientation, Point, Sign, point_on_segment};
 use crate::polygon::{ConvexPolygon, LinkedPolygon, SimplePolygon};
+use crate::seeding::fresh_rng;
 use rand::Rng;
 
 /// The answer once the exit edge v→w of the ray a→x is known (module docs).

@@ -42,9 +42,10 @@
 //! dot products differ in the last bit or would overflow in floating point. Under
 //! [`Fast`](crate::Fast) a near-tie may pick the other vertex.
 
-use super::{fresh_rng, sample_count};
+use super::sample_count;
 use crate::kernel::{Exact, Kernel, Orientation, Point, Sign};
 use crate::polygon::{ConvexPolygon, LinkedPolygon, VertexId};
+use crate::seeding::fresh_rng;
 use rand::Rng;
 
 const ORIGIN: Point = Point::new(0.0, 0.0);

@@ -54,29 +54,6 @@ mod area;
 mod contains;
 mod extreme;
 
-use rand::SeedableRng;
-use rand::rngs::SmallRng;
-
-/// A generator for one query or one session, seeded from the thread-local generator
-/// (itself seeded from the operating system): the sample is unknown to whoever chose
-/// the input (docs/design.md, "Randomness").
-#[cfg(feature = "os-rng")]
-pub(crate) fn fresh_rng() -> SmallRng {
-    SmallRng::from_rng(&mut rand::rng())
-}
-
-/// Without the `os-rng` feature (e.g. on `wasm32-unknown-unknown`) there is no entropy
-/// source: the n-th unseeded generator of the process is seeded with n (0, 1, 2, ...).
-/// Successive queries and scenes still draw different samples, but the sequence is the
-/// same in every run, so whoever knows it can build slow inputs (docs/design.md,
-/// "Randomness"); pass a seed drawn from a real entropy source where that matters.
-#[cfg(not(feature = "os-rng"))]
-pub(crate) fn fresh_rng() -> SmallRng {
-    use std::sync::atomic::{AtomicU64, Ordering};
-    static NEXT: AtomicU64 = AtomicU64::new(0);
-    SmallRng::seed_from_u64(NEXT.fetch_add(1, Ordering::Relaxed))
-}
-
 /// The number of vertices a sampled query draws from a polygon of `n` vertices: ⌈√n⌉.
 pub(crate) fn sample_count(n: usize) -> usize {
     (n as f64).sqrt().ceil() as usize
