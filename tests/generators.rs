@@ -286,3 +286,87 @@ fn convex_generators_never_panic() {
         failures.join("\n")
     );
 }
+
+/// Given semi-axes: what cannot be drawn (zero, NaN, infinite, below
+/// `MIN_AXIS`, above `MAX_AXIS`) is an error, everything else a valid polygon, and
+/// every call returns within a deadline. Each call runs on its own thread so that a
+/// generator that never returns fails the test instead of hanging it.
+#[test]
+fn ellipse_generators_with_hostile_axes_return_in_bounded_time() {
+    use polysect::generate::{
+        MAX_AXIS, MAX_AXIS_RATIO, MIN_AXIS, try_ellipse_polygon_axes, try_pair_with_axes,
+    };
+    use std::sync::mpsc;
+    use std::time::Duration;
+
+    let hostile = [
+        (0.0, 0.0),
+        (f64::NAN, 1.0),
+        (f64::INFINITY, 1.0),
+        (5e-324, 5e-324),
+        (1e-30, 1e-30),
+        (1e-100, 1e-100),
+        (1.0, 1e-300),
+        (-1.0, 1.0),
+        (1.0, f64::MAX),
+        (1e300, 1.0),
+        (1.0, MIN_AXIS / 2.0),
+        (MAX_AXIS * 2.0, MAX_AXIS),
+        (1.0, 1.0 / MAX_AXIS_RATIO / 2.0),
+    ];
+    let drawable = [
+        (1.0, 0.1),
+        (MIN_AXIS, MIN_AXIS),
+        (1.0, MIN_AXIS),
+        (1e-6, 1e-6),
+        (MAX_AXIS, MAX_AXIS),
+        (MAX_AXIS, MAX_AXIS / MAX_AXIS_RATIO),
+    ];
+    let families = [Family::Ellipse, Family::Rotated, Family::NonUniform];
+    let relations = [Relation::Any, Relation::Intersecting, Relation::Disjoint];
+    let mut failures = Vec::new();
+    for (axes, must_draw) in hostile
+        .iter()
+        .map(|&ab| (ab, false))
+        .chain(drawable.iter().map(|&ab| (ab, true)))
+    {
+        let (tx, rx) = mpsc::channel();
+        std::thread::spawn(move || {
+            let mut rng = SmallRng::seed_from_u64(SEED);
+            let mut out = Vec::new();
+            for rotate in [false, true] {
+                let r = try_ellipse_polygon_axes(&mut rng, 64, &Density::Uniform, rotate, Some(axes));
+                out.push((format!("polygon rotate={rotate}"), r.map(|p| vec![p])));
+            }
+            for family in families {
+                for relation in relations {
+                    let r = try_pair_with_axes(family, 64, relation, Some(axes), &mut rng);
+                    out.push((format!("pair {family} {relation:?}"), r.map(|(p, q)| vec![p, q])));
+                }
+            }
+            let _ = tx.send(out);
+        });
+        let Ok(out) = rx.recv_timeout(Duration::from_secs(20)) else {
+            failures.push(format!("axes {axes:?}: no answer within 20 s"));
+            continue;
+        };
+        for (what, r) in out {
+            match r {
+                Ok(polys) if must_draw => {
+                    for p in &polys {
+                        check_convex(&format!("axes {axes:?} {what}"), p, &mut failures);
+                    }
+                }
+                Ok(_) => failures.push(format!("axes {axes:?} {what}: drew what cannot be drawn")),
+                Err(e) if must_draw => failures.push(format!("axes {axes:?} {what}: refused: {e}")),
+                Err(_) => {}
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} failures:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}

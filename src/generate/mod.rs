@@ -18,7 +18,7 @@
 pub mod hard;
 pub mod simple;
 
-pub use simple::GenerateError;
+pub use simple::{GenerateError, MAX_ATTEMPTS};
 
 use crate::intersect::{ArrayIntersection, Linear};
 use crate::kernel::Point;
@@ -232,10 +232,9 @@ pub fn try_ellipse_polygon<R: Rng + ?Sized>(
 
 /// [`ellipse_polygon`] with the semi-axes `(a, b)` given instead of drawn (the thesis's
 /// Figure 4.1 squashes the unit circle with a = 1, b = 0.1); `None` draws them.
-/// Axes should be finite and positive (the CLI checks them).
 ///
 /// # Panics
-/// When `n` exceeds [`MAX_VERTICES`]; [`try_ellipse_polygon_axes`] returns an error.
+/// When [`try_ellipse_polygon_axes`] refuses the parameters.
 #[track_caller]
 pub fn ellipse_polygon_axes<R: Rng + ?Sized>(
     rng: &mut R,
@@ -247,10 +246,46 @@ pub fn ellipse_polygon_axes<R: Rng + ?Sized>(
     try_ellipse_polygon_axes(rng, n, density, rotate, axes).unwrap_or_else(|e| panic!("{e}"))
 }
 
-/// [`ellipse_polygon_axes`], refusing more than [`MAX_VERTICES`] vertices.
+/// The smallest semi-axis an ellipse generator accepts: 2^-40. The polygons are
+/// translated by up to 1, where the spacing of doubles is 2^-53, so an axis this short
+/// still spans 2^13 rounding steps; much shorter ones round every point onto a line.
+pub const MIN_AXIS: f64 = 9.094947017729282e-13;
+
+/// The largest semi-axis an ellipse generator accepts: 2^1000, so that rotating,
+/// translating and separating the polygons stays far from overflow.
+pub const MAX_AXIS: f64 = 1.0715086071862673e301;
+
+/// The largest ratio of the longer semi-axis to the shorter: 2^40. Moving a polygon
+/// by its long axis rounds coordinates to steps of 2^-53 of that length, which must
+/// stay far below the short axis.
+pub const MAX_AXIS_RATIO: f64 = 1099511627776.0;
+
+/// Refuses semi-axes outside [[`MIN_AXIS`], [`MAX_AXIS`]] (NaN included) or further
+/// apart than [`MAX_AXIS_RATIO`].
+fn check_axes(axes: Option<(f64, f64)>) -> Result<(), GenerateError> {
+    let Some((a, b)) = axes else { return Ok(()) };
+    let ok = |v: f64| (MIN_AXIS..=MAX_AXIS).contains(&v);
+    if !(ok(a) && ok(b)) {
+        return Err(GenerateError::InvalidParameters(format!(
+            "ellipse semi-axes ({a:e}, {b:e}) must lie in [{MIN_AXIS:e}, {MAX_AXIS:e}]"
+        )));
+    }
+    if a.max(b) / a.min(b) > MAX_AXIS_RATIO {
+        return Err(GenerateError::InvalidParameters(format!(
+            "ellipse semi-axes ({a:e}, {b:e}) differ by more than a factor {MAX_AXIS_RATIO:e}"
+        )));
+    }
+    Ok(())
+}
+
+/// [`ellipse_polygon_axes`], refusing what cannot be drawn. Each attempt is O(n log n)
+/// (the hull); at most [`MAX_ATTEMPTS`] attempts are made.
 ///
 /// # Errors
-/// [`GenerateError::InvalidParameters`] when `n` exceeds [`MAX_VERTICES`].
+/// [`GenerateError::InvalidParameters`] when `n` exceeds [`MAX_VERTICES`], an axis
+/// lies outside [[`MIN_AXIS`], [`MAX_AXIS`]] (zero, NaN and infinities included) or
+/// the axes differ by more than [`MAX_AXIS_RATIO`];
+/// [`GenerateError::GaveUp`] when [`MAX_ATTEMPTS`] draws in a row rounded to no area.
 pub fn try_ellipse_polygon_axes<R: Rng + ?Sized>(
     rng: &mut R,
     n: usize,
@@ -259,8 +294,9 @@ pub fn try_ellipse_polygon_axes<R: Rng + ?Sized>(
     axes: Option<(f64, f64)>,
 ) -> Result<ConvexPolygon, GenerateError> {
     check_size(n)?;
+    check_axes(axes)?;
     let n = n.max(3);
-    loop {
+    for _ in 0..MAX_ATTEMPTS {
         let (a, b) = match axes {
             Some(ab) => ab,
             None => (rng.random_range(0.05..=1.0), rng.random_range(0.05..=1.0)),
@@ -279,6 +315,9 @@ pub fn try_ellipse_polygon_axes<R: Rng + ?Sized>(
             return Ok(h);
         }
     }
+    Err(GenerateError::GaveUp {
+        attempts: MAX_ATTEMPTS,
+    })
 }
 
 /// A regular n-gon of the given radius centred at the origin, first vertex at angle 0
@@ -358,17 +397,50 @@ pub fn pair<R: Rng + ?Sized>(
 /// [`pair`], refusing more than [`MAX_VERTICES`] vertices.
 ///
 /// # Errors
-/// [`GenerateError::InvalidParameters`] when `n` exceeds [`MAX_VERTICES`].
+/// [`GenerateError::InvalidParameters`] when `n` exceeds [`MAX_VERTICES`];
+/// [`GenerateError::GaveUp`] when an ellipse family's draws keep rounding to no area
+/// (see [`try_ellipse_polygon_axes`]).
 pub fn try_pair<R: Rng + ?Sized>(
     family: Family,
     n: usize,
     relation: Relation,
     rng: &mut R,
 ) -> Result<(ConvexPolygon, ConvexPolygon), GenerateError> {
+    try_pair_with_axes(family, n, relation, None, rng)
+}
+
+/// [`pair`] for the ellipse families with both polygons' semi-axes fixed to `axes`
+/// (`None`: drawn as usual); other families ignore `axes`.
+///
+/// # Panics
+/// When [`try_pair_with_axes`] refuses the parameters.
+#[track_caller]
+pub fn pair_with_axes<R: Rng + ?Sized>(
+    family: Family,
+    n: usize,
+    relation: Relation,
+    axes: Option<(f64, f64)>,
+    rng: &mut R,
+) -> (ConvexPolygon, ConvexPolygon) {
+    try_pair_with_axes(family, n, relation, axes, rng).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// [`pair_with_axes`], refusing what cannot be drawn; every family makes a bounded
+/// number of attempts.
+///
+/// # Errors
+/// As [`try_ellipse_polygon_axes`] (the axes are checked for the ellipse families only).
+pub fn try_pair_with_axes<R: Rng + ?Sized>(
+    family: Family,
+    n: usize,
+    relation: Relation,
+    axes: Option<(f64, f64)>,
+    rng: &mut R,
+) -> Result<(ConvexPolygon, ConvexPolygon), GenerateError> {
     check_size(n)?;
     Ok(match family {
         Family::Ellipse | Family::Rotated | Family::NonUniform => {
-            ellipse_pair(family, n, relation, None, rng)
+            ellipse_pair(family, n, relation, axes, rng)?
         }
         Family::SharedVertex | Family::VertexOnEdge | Family::SharedEdge | Family::OverlappingEdges => {
             touching_pair(family, n, relation, rng)
@@ -378,43 +450,26 @@ pub fn try_pair<R: Rng + ?Sized>(
     })
 }
 
-/// [`pair`] for the ellipse families with both polygons' semi-axes fixed to `axes`
-/// (`None`: drawn as usual); other families ignore `axes`.
-pub fn pair_with_axes<R: Rng + ?Sized>(
-    family: Family,
-    n: usize,
-    relation: Relation,
-    axes: Option<(f64, f64)>,
-    rng: &mut R,
-) -> (ConvexPolygon, ConvexPolygon) {
-    match family {
-        Family::Ellipse | Family::Rotated | Family::NonUniform => {
-            ellipse_pair(family, n, relation, axes, rng)
-        }
-        _ => pair(family, n, relation, rng),
-    }
-}
-
 fn ellipse_polygon_of(
     family: Family,
     n: usize,
     axes: Option<(f64, f64)>,
     rng: &mut (impl Rng + ?Sized),
-) -> ConvexPolygon {
-    match family {
-        Family::Ellipse => ellipse_polygon_axes(rng, n, &Density::Uniform, false, axes),
+) -> Result<ConvexPolygon, GenerateError> {
+    Ok(match family {
+        Family::Ellipse => try_ellipse_polygon_axes(rng, n, &Density::Uniform, false, axes)?,
         Family::Rotated => {
-            let p = ellipse_polygon_axes(rng, n, &Density::Uniform, true, axes);
+            let p = try_ellipse_polygon_axes(rng, n, &Density::Uniform, true, axes)?;
             let start = rng.random_range(0..p.len());
             p.rotated(start)
         }
         _ => {
             let d = Density::random(rng);
-            let p = ellipse_polygon_axes(rng, n, &d, true, axes);
+            let p = try_ellipse_polygon_axes(rng, n, &d, true, axes)?;
             let start = rng.random_range(0..p.len());
             p.rotated(start)
         }
-    }
+    })
 }
 
 fn ellipse_pair<R: Rng + ?Sized>(
@@ -423,34 +478,45 @@ fn ellipse_pair<R: Rng + ?Sized>(
     relation: Relation,
     axes: Option<(f64, f64)>,
     rng: &mut R,
-) -> (ConvexPolygon, ConvexPolygon) {
-    let p = ellipse_polygon_of(family, n, axes, rng);
-    let q = ellipse_polygon_of(family, n, axes, rng);
-    match relation {
-        Relation::Any => (p, q),
-        Relation::Intersecting => {
-            // Move a random interior point of Q onto a random interior point of P.
-            let (a, b) = (interior_point(&p, rng), interior_point(&q, rng));
-            let q = translate(&q, a.x - b.x, a.y - b.y);
-            (p, q)
-        }
-        Relation::Disjoint => {
-            // Push Q along a random direction u beyond P's extent in u, by a small gap.
-            loop {
+) -> Result<(ConvexPolygon, ConvexPolygon), GenerateError> {
+    check_axes(axes)?;
+    let p = ellipse_polygon_of(family, n, axes, rng)?;
+    let q = ellipse_polygon_of(family, n, axes, rng)?;
+    // The separating gap grows with the axes, or rounding at large coordinates eats it.
+    let scale = axes.map_or(1.0, |(a, b)| a.max(b).max(1.0));
+    // Each steering draw is redrawn when rounding spoils it, at most MAX_ATTEMPTS times.
+    for _ in 0..MAX_ATTEMPTS {
+        match relation {
+            Relation::Any => return Ok((p, q)),
+            Relation::Intersecting => {
+                // Move a random interior point of Q onto a random interior point of P.
+                let (a, b) = (interior_point(&p, rng), interior_point(&q, rng));
+                if let Some(moved) = translate(&q, a.x - b.x, a.y - b.y)
+                    && Linear.intersects(&p, &moved)
+                {
+                    return Ok((p, moved));
+                }
+            }
+            Relation::Disjoint => {
+                // Push Q along a random direction u beyond P's extent in u, by a small gap.
                 let t: f64 = rng.random_range(0.0..TAU);
                 let (ux, uy) = (t.cos(), t.sin());
                 let dot = |v: &Point| v.x * ux + v.y * uy;
                 let p_max = p.vertices().iter().map(dot).fold(f64::MIN, f64::max);
                 let q_min = q.vertices().iter().map(dot).fold(f64::MAX, f64::min);
-                let gap = rng.random_range(1e-9..0.05);
+                let gap = rng.random_range(1e-9..0.05) * scale;
                 let shift = p_max - q_min + gap;
-                let moved = translate(&q, shift * ux, shift * uy);
-                if !Linear.intersects(&p, &moved) {
-                    return (p, moved);
+                if let Some(moved) = translate(&q, shift * ux, shift * uy)
+                    && !Linear.intersects(&p, &moved)
+                {
+                    return Ok((p, moved));
                 }
             }
         }
     }
+    Err(GenerateError::GaveUp {
+        attempts: MAX_ATTEMPTS,
+    })
 }
 
 /// A random point inside `p`: a random convex combination of three vertices.
@@ -471,13 +537,15 @@ fn interior_point<R: Rng + ?Sized>(p: &ConvexPolygon, rng: &mut R) -> Point {
     Point::new(x, y)
 }
 
-fn translate(p: &ConvexPolygon, dx: f64, dy: f64) -> ConvexPolygon {
+/// `p` moved by (dx, dy); `None` when rounding leaves no area (a far move of a tiny
+/// polygon).
+fn translate(p: &ConvexPolygon, dx: f64, dy: f64) -> Option<ConvexPolygon> {
     let moved = p.vertices().iter().map(|v| Point::new(v.x + dx, v.y + dy));
     let pts: Vec<Point> = moved.collect();
     // Rounding can merge or straighten vertices; the hull keeps the result valid.
     ConvexPolygon::new(pts.iter().copied())
         .or_else(|_| convex_hull(&pts))
-        .expect("a translated polygon keeps its area")
+        .ok()
 }
 
 /// A convex polygon on integer coordinates with about `n` vertices: the hull of
@@ -588,7 +656,8 @@ fn nested_pair<R: Rng + ?Sized>(n: usize, relation: Relation, rng: &mut R) -> (C
         Relation::Disjoint => true,
     };
     if apart {
-        inner = translate(&inner, 2.0 * outer_radius + 1.0, 0.0);
+        // Integer-sized moves of a unit polygon keep its area.
+        inner = translate(&inner, 2.0 * outer_radius + 1.0, 0.0).expect("a moved unit polygon has area");
     }
     if rng.random_bool(0.5) {
         (outer, inner)

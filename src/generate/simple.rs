@@ -236,7 +236,8 @@ pub enum GenerateError {
     /// [`MAX_VERTICES`] vertices, an empty or non-finite range, samples that would
     /// overflow, a grid with too few points, a radius that is zero or not finite).
     InvalidParameters(String),
-    /// [`MAX_ATTEMPTS`] point sets in a row gave degenerate constructions.
+    /// [`MAX_ATTEMPTS`] point sets in a row gave degenerate constructions (for the
+    /// ellipse families: rounded to no area, or spoiled the steering).
     GaveUp {
         /// How many point sets (or draws) were tried.
         attempts: usize,
@@ -250,7 +251,7 @@ impl fmt::Display for GenerateError {
             GenerateError::GaveUp { attempts } => {
                 write!(
                     f,
-                    "no simple polygon after {attempts} attempts (too many collinear points?)"
+                    "no polygon after {attempts} attempts (the points round together or are collinear)"
                 )
             }
         }

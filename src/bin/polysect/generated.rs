@@ -35,11 +35,8 @@ pub(crate) fn gen_pairs(
     };
     let mut out = BufWriter::new(io::stdout().lock());
     for i in 0..count {
-        let (p, q) = match axes {
-            None => generate::try_pair(family, n, relation, &mut rng)
-                .map_err(|e| io::Error::new(io::ErrorKind::InvalidInput, e))?,
-            Some(_) => generate::pair_with_axes(family, n, relation, axes, &mut rng),
-        };
+        let (p, q) = generate::try_pair_with_axes(family, n, relation, axes, &mut rng)
+            .map_err(|e| io::Error::new(io::ErrorKind::InvalidInput, e))?;
         let expected = Algorithm::Linear.intersects(Precision::Exact, &p, &q);
         let mut write_order = |poly: &ConvexPolygon| {
             let mut v = poly.vertices().to_vec();
