@@ -209,13 +209,27 @@ impl<R: Read, W: Write> Channel<R, W> {
     }
 
     /// Writes one reply line: `{"id": <id>, <body>}` (the id first when the line had one).
-    fn reply(&mut self, body: &str) -> io::Result<()> {
+    pub(crate) fn reply(&mut self, body: &str) -> io::Result<()> {
         match &self.id {
             Some(id) => writeln!(self.out, "{{\"id\": {id}, {body}}}")?,
             None => writeln!(self.out, "{{{body}}}")?,
         }
         self.dirty = true;
         Ok(())
+    }
+
+    /// A reply whose body `write` produces piece by piece, for answers too large to
+    /// hold. The replies before it are flushed first: computing this one may take
+    /// long, and a reply once computed must not wait in a buffer for it.
+    pub(crate) fn reply_streamed(&mut self, write: impl FnOnce(&mut W) -> io::Result<()>) -> io::Result<()> {
+        self.flush()?;
+        match &self.id {
+            Some(id) => write!(self.out, "{{\"id\": {id}, ")?,
+            None => write!(self.out, "{{")?,
+        }
+        self.dirty = true;
+        write(&mut self.out)?;
+        writeln!(self.out, "}}")
     }
 
     /// `message` located on the current line: `line N[, column C]: message`.
@@ -237,6 +251,19 @@ impl<R: Read, W: Write> Channel<R, W> {
 /// message, and returns whether to go on. Stops at the end of the input or at an I/O
 /// error.
 pub(crate) fn each_line<R: Read, W: Write, T>(
+    ch: &mut Channel<R, W>,
+    mut parse: impl FnMut(&mut Channel<R, W>) -> Result<T, Stop>,
+    mut each: impl FnMut(&mut Channel<R, W>, Result<T, String>) -> io::Result<bool>,
+) -> io::Result<()> {
+    let result = each_line_unflushed(ch, &mut parse, &mut each);
+    if result.is_err() {
+        // The replies already written are still delivered when the input or a reply fails.
+        let _ = ch.flush();
+    }
+    result
+}
+
+fn each_line_unflushed<R: Read, W: Write, T>(
     ch: &mut Channel<R, W>,
     mut parse: impl FnMut(&mut Channel<R, W>) -> Result<T, Stop>,
     mut each: impl FnMut(&mut Channel<R, W>, Result<T, String>) -> io::Result<bool>,

@@ -20,7 +20,7 @@
 //! edits work); the session's kernel `K` decides queries only.
 
 use super::json::shown;
-use super::line::{Channel, Stop, json_string, serve};
+use super::line::{Channel, Stop, each_line, json_string};
 use super::{certified_answer_json, write_point};
 use crate::intersect::proven_linked;
 use crate::kernel::{Exact, Kernel, Point};
@@ -193,13 +193,27 @@ impl<K: Kernel> SceneSession<K> {
         let mut ch = Channel::new(input, output);
         ch.set_line_number(self.lines);
         let mut lines = self.lines;
-        let result = serve(
+        let result = each_line(
             &mut ch,
             |ch| {
                 lines += 1;
                 parse_op(ch)
             },
-            |l| self.apply(l),
+            |ch, parsed| {
+                // `pairs` streams its reply: its size is the answer's, not the scene's.
+                if let Ok(OpLine { op: Some(op), .. }) = &parsed
+                    && op == "pairs"
+                {
+                    ch.reply_streamed(|out| self.write_pairs(out))?;
+                    return Ok(true);
+                }
+                let body = match parsed.and_then(|l| self.apply(l).map_err(|m| ch.located(None, &m))) {
+                    Ok(body) => body,
+                    Err(text) => format!("\"error\": {}", json_string(&text)),
+                };
+                ch.reply(&body)?;
+                Ok(true)
+            },
         );
         self.lines = lines;
         result
@@ -370,7 +384,13 @@ impl<K: Kernel> SceneSession<K> {
                 let b = l.b.ok_or_else(|| need("b"))?;
                 self.intersects(&a, &b)
             }
-            "pairs" => Ok(self.pairs()),
+            "pairs" => {
+                // Answered by `write_pairs` as the pairs are found.
+                let mut out = Vec::new();
+                self.write_pairs(&mut out)
+                    .map_err(|e| format!("internal error: {e}"))?;
+                String::from_utf8(out).map_err(|e| format!("internal error: {e}"))
+            }
             "vertices" => self.vertices(&l.name.ok_or_else(|| need("name"))?),
             other => Err(format!("unknown op {} (valid: {OPS})", quoted(other))),
         }
@@ -456,26 +476,34 @@ impl<K: Kernel> SceneSession<K> {
         Ok(format!("\"intersects\": {hit}"))
     }
 
-    fn pairs(&mut self) -> String {
-        let mut pairs: Vec<(&str, &str)> = self
-            .scene
-            .intersecting_pairs()
-            .into_iter()
-            .filter_map(|(a, b)| {
-                let (a, b) = (self.names.get(&a)?.as_str(), self.names.get(&b)?.as_str());
-                Some(if a <= b { (a, b) } else { (b, a) })
-            })
+    /// Writes `"pairs": [...]` as the pairs are found: names in each pair in string
+    /// order, pairs sorted. Memory: the names' order plus one polygon's candidates at a
+    /// time (`Scene::intersecting_pairs_ordered`), whatever the number of pairs.
+    fn write_pairs<W: Write>(&mut self, out: &mut W) -> io::Result<()> {
+        let mut order: Vec<(&str, PolygonId)> = self
+            .polygons
+            .iter()
+            .map(|(name, n)| (name.as_str(), n.id))
             .collect();
-        pairs.sort_unstable();
-        let mut body = String::from("\"pairs\": [");
-        for (i, (a, b)) in pairs.iter().enumerate() {
-            if i > 0 {
-                body.push(',');
+        order.sort_unstable_by(|x, y| x.0.cmp(y.0));
+        let ids: Vec<PolygonId> = order.iter().map(|&(_, id)| id).collect();
+        let names = &self.names;
+        out.write_all(b"\"pairs\": [")?;
+        let mut first = true;
+        self.scene.intersecting_pairs_ordered(&ids, |a, later| {
+            let Some(a) = names.get(&a) else {
+                return Ok::<(), io::Error>(());
+            };
+            let a = json_string(a);
+            for b in later {
+                let Some(b) = names.get(b) else { continue };
+                let sep = if first { "" } else { "," };
+                first = false;
+                write!(out, "{sep}[{a},{}]", json_string(b))?;
             }
-            let _ = write!(body, "[{},{}]", json_string(a), json_string(b));
-        }
-        body.push(']');
-        body
+            Ok(())
+        })?;
+        out.write_all(b"]")
     }
 
     fn vertices(&self, name: &str) -> Result<String, String> {
@@ -569,5 +597,142 @@ mod tests {
             ids_of(&[[1., 0.], [0., 0.], [0., 2.], [2., 2.], [2., 0.], [1., 0.]]),
             [1, 4, 3, 2]
         );
+    }
+
+    /// The reply `pairs` gave before it streamed: every pair at once from the scene's
+    /// sweep, mapped to names, sorted.
+    fn pairs_reply_held(session: &mut SceneSession) -> String {
+        let mut pairs: Vec<(String, String)> = session
+            .scene
+            .intersecting_pairs()
+            .into_iter()
+            .map(|(a, b)| {
+                let (a, b) = (session.names[&a].clone(), session.names[&b].clone());
+                if a <= b { (a, b) } else { (b, a) }
+            })
+            .collect();
+        pairs.sort_unstable();
+        let body: Vec<String> = pairs
+            .iter()
+            .map(|(a, b)| format!("[{},{}]", json_string(a), json_string(b)))
+            .collect();
+        format!("{{\"pairs\": [{}]}}", body.join(","))
+    }
+
+    #[test]
+    fn streamed_pairs_equal_the_held_reply_byte_for_byte() {
+        use rand::rngs::SmallRng;
+        use rand::{Rng, SeedableRng};
+        let mut rng = SmallRng::seed_from_u64(0x5ca1e);
+        for round in 0..20 {
+            let mut session = SceneSession::new(SceneOptions {
+                seed: Some(round),
+                ..SceneOptions::default()
+            });
+            let count = rng.random_range(0..40);
+            for i in 0..count {
+                // Names whose string order differs from insertion order, some escaped.
+                let name = match i % 3 {
+                    0 => format!("p{}", count - i),
+                    1 => format!("\\\"{i}"),
+                    _ => format!("é{i}"),
+                };
+                let (cx, cy) = (rng.random_range(-4.0..4.0), rng.random_range(-4.0..4.0));
+                let r: f64 = rng.random_range(0.1..3.0);
+                let line = format!(
+                    r#"{{"op":"add","name":{},"points":[[{},{}],[{},{}],[{},{}],[{},{}]]}}"#,
+                    json_string(&name),
+                    cx - r,
+                    cy,
+                    cx,
+                    cy - r,
+                    cx + r,
+                    cy,
+                    cx,
+                    cy + r
+                );
+                assert_eq!(session.answer_line(line.as_bytes()), r#"{"ok": true}"#);
+                if i % 5 == 4 {
+                    let by = format!(
+                        r#"{{"op":"translate","name":{},"by":[1.5,-0.5]}}"#,
+                        json_string(&name)
+                    );
+                    session.answer_line(by.as_bytes());
+                }
+            }
+            let want = pairs_reply_held(&mut session);
+            assert_eq!(session.answer_line(br#"{"op":"pairs"}"#), want, "round {round}");
+            let with_id = session.answer_line(br#"{"id":[7],"op":"pairs"}"#);
+            assert_eq!(with_id, want.replacen('{', r#"{"id": [7], "#, 1));
+        }
+    }
+
+    /// A writer that records what it had received at each flush.
+    #[derive(Default)]
+    struct FlushRecorder {
+        got: Vec<u8>,
+        at_flush: Vec<String>,
+    }
+
+    impl Write for FlushRecorder {
+        fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+            self.got.extend_from_slice(buf);
+            Ok(buf.len())
+        }
+        fn flush(&mut self) -> io::Result<()> {
+            self.at_flush.push(String::from_utf8(self.got.clone()).unwrap());
+            Ok(())
+        }
+    }
+
+    #[test]
+    fn replies_before_a_pairs_line_are_flushed_before_it_is_computed() {
+        // All three lines arrive in one read, so no read flushes between them: only the
+        // `pairs` line's own flush can deliver the first two replies before it is answered.
+        let input = br#"{"op":"add","name":"a","points":[[0,0],[1,0],[0,1]]}
+{"op":"add","name":"b","points":[[0,0],[1,0],[0,1]]}
+{"op":"pairs"}
+"#;
+        let mut out = FlushRecorder::default();
+        let mut session = SceneSession::new(SceneOptions::default());
+        session.run(&input[..], &mut out).unwrap();
+        let two = "{\"ok\": true}\n{\"ok\": true}\n";
+        assert_eq!(
+            out.at_flush.first().map(String::as_str),
+            Some(two),
+            "{:?}",
+            out.at_flush
+        );
+        assert_eq!(
+            String::from_utf8(out.got).unwrap(),
+            format!("{two}{{\"pairs\": [[\"a\",\"b\"]]}}\n")
+        );
+    }
+
+    /// A reader that fails after its first block.
+    struct BreaksAfter<'a>(Option<&'a [u8]>);
+
+    impl Read for BreaksAfter<'_> {
+        fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+            match self.0.take() {
+                Some(b) => {
+                    buf[..b.len()].copy_from_slice(b);
+                    Ok(b.len())
+                }
+                None => Err(io::Error::other("connection reset")),
+            }
+        }
+    }
+
+    #[test]
+    fn replies_are_flushed_when_the_input_fails() {
+        let input = br#"{"op":"add","name":"a","points":[[0,0],[1,0],[0,1]]}
+{"op":"add","name":"a","points":[[0,0],[1,0],[0,1]]}
+"#;
+        let mut out = FlushRecorder::default();
+        let mut session = SceneSession::new(SceneOptions::default());
+        assert!(session.run(BreaksAfter(Some(&input[..])), &mut out).is_err());
+        let last = out.at_flush.last().cloned().unwrap_or_default();
+        assert_eq!(last.lines().count(), 2, "{last}");
     }
 }

@@ -75,6 +75,7 @@ mod cost;
 #[cfg(feature = "geo-types")]
 mod interop;
 mod lazy;
+mod ordered;
 mod planner;
 mod query;
 mod route;

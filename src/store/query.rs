@@ -169,7 +169,7 @@ impl<K: Kernel> Scene<K> {
         self.run_plan_certified(plan)
     }
 
-    fn run_plan(&mut self, plan: Plan) -> Vec<Result<bool, SceneError>> {
+    pub(super) fn run_plan(&mut self, plan: Plan) -> Vec<Result<bool, SceneError>> {
         self.run_plan_with(plan, |s, route, _, ws, seed| s.answer(route, ws, seed))
     }
 
