@@ -84,7 +84,7 @@ mod warm;
 #[doc(hidden)]
 pub mod workload;
 
-pub use broad::BoundingBox;
+pub use crate::kernel::BoundingBox;
 pub use cost::{ArenaProfile, COST_SIZES, CostModel, PlannerStats, Strategy};
 pub use scene::{PolygonId, Scene, SceneError};
 pub use warm::WarmStats;
