@@ -19,8 +19,8 @@ fn pairs(n: usize, dist: f64) -> Vec<(ConvexPolygon, ConvexPolygon, bool)> {
             let q = p
                 .map(|v| Point::new(v.x + dist * angle.cos(), v.y + dist * angle.sin()))
                 .unwrap()
-                .rotated(i * n / 7);
-            let p = p.rotated(i * n / 5);
+                .starting_at(i * n / 7);
+            let p = p.starting_at(i * n / 5);
             let want = Linear.intersects(&p, &q);
             (p, q, want)
         })

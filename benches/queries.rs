@@ -39,7 +39,7 @@ fn case(log2: u32) -> Case {
     let mut rng = SmallRng::seed_from_u64(SEED ^ u64::from(log2));
     let array = ellipse_polygon(&mut rng, 1 << log2, &Density::Uniform, true);
     let linked = LinkedPolygon::from_convex_shuffled(&array, &mut rng);
-    let (lo, hi) = array.bounding_box();
+    let polysect::BoundingBox { min: lo, max: hi } = array.bounding_box();
     let points = (0..QUERIES)
         .map(|_| {
             let x = Point::new(rng.random_range(lo.x..hi.x), rng.random_range(lo.y..hi.y));

@@ -279,13 +279,12 @@ impl Mirror {
             .iter()
             .map(|p| ConvexPolygon::from_ccw_unchecked(p.clone()))
             .collect();
-        let boxes: Vec<(Point, Point)> = polys.iter().map(|p| p.bounding_box()).collect();
+        let boxes: Vec<polysect::BoundingBox> = polys.iter().map(|p| p.bounding_box()).collect();
         let mut count = 0;
         for i in 0..polys.len() {
             for j in i + 1..polys.len() {
                 let (a, b) = (boxes[i], boxes[j]);
-                let overlap = a.0.x <= b.1.x && b.0.x <= a.1.x && a.0.y <= b.1.y && b.0.y <= a.1.y;
-                if overlap && Linear.intersects(&polys[i], &polys[j]) {
+                if a.overlaps(&b) && Linear.intersects(&polys[i], &polys[j]) {
                     count += 1;
                 }
             }

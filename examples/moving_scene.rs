@@ -27,11 +27,11 @@ fn main() -> Result<(), polysect::store::SceneError> {
     }
 
     for step in 0..10 {
-        // Move every polygon (an O(n) translation of its linked list).
+        // Move every polygon (a translation: snapshots move at once, linked lists when read).
         for &(id, dx, dy) in &moving {
             scene.translate(id, dx, dy)?;
         }
-        // The R-tree finds candidate pairs by bounding box; the planner then picks, per
+        // Sort and sweep over bounding boxes finds candidate pairs; the planner then picks, per
         // pair, the sampled test on the linked lists or an array test on snapshots.
         let pairs = scene.intersecting_pairs();
         // Name polygons by their index in `moving`, each pair in increasing order.

@@ -38,6 +38,23 @@
 //! assert!(Clm.intersects(&lp, &lq));
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
+//!
+//! A [`store::Scene`] holds many editable polygons and answers which of them meet; it
+//! chooses per query between the sampled test and array snapshots:
+//!
+//! ```
+//! use polysect::store::Scene;
+//!
+//! let mut scene = Scene::new();
+//! let square = scene.insert_points([[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]])?;
+//! let tri = scene.insert_points([[5.0, 1.0], [7.0, 1.0], [6.0, 3.0]])?;
+//! assert!(!scene.intersects(square, tri)?);
+//! scene.translate(tri, -1.0, 0.0)?; // now it touches the square: that counts
+//! assert!(scene.intersects(square, tri)?);
+//! assert_eq!(scene.intersecting_pairs(), vec![(square, tri)]);
+//! assert_eq!(scene.intersecting(tri)?, vec![square]);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 #![forbid(unsafe_code)]
 #![warn(missing_docs, clippy::missing_errors_doc, clippy::missing_panics_doc)]
 #![cfg_attr(docsrs, feature(doc_cfg))]
@@ -71,7 +88,7 @@ pub mod store;
 #[cfg(doctest)]
 pub struct ReadmeDoctests;
 
-pub use kernel::{Exact, ExactWithin, Fast, Kernel, Orientation, Point, Precision, Sign};
+pub use kernel::{BoundingBox, Exact, ExactWithin, Fast, Kernel, Orientation, Point, Precision, Sign};
 
 /// The `rand` crate (0.9) whose types appear in this crate's signatures: sampled
 /// queries take any `R: rand::Rng`, and [`LinkedPolygon::from_convex_shuffled`] a

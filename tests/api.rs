@@ -152,3 +152,40 @@ fn point_arithmetic_and_the_rand_re_export() {
     let p = LinkedPolygon::from_convex_shuffled(&square, &mut rng);
     assert!(p.contains_point_with(polysect::Exact, a + Point::new(0.0, 3.0), &mut rng));
 }
+
+/// One box type: the array polygon, the linked polygon and the scene give the same
+/// `BoundingBox`, and it follows an edit.
+#[test]
+fn one_bounding_box_type_everywhere() {
+    use polysect::BoundingBox;
+    let p = ConvexPolygon::new([[1.0, -2.0], [5.0, 0.0], [3.0, 4.0], [-1.0, 1.0]]).unwrap();
+    let want = BoundingBox::new(Point::new(-1.0, -2.0), Point::new(5.0, 4.0));
+    let from_array: BoundingBox = p.bounding_box();
+    let linked = LinkedPolygon::from_convex(&p);
+    let from_linked: BoundingBox = linked.bounding_box();
+    let mut scene = Scene::new();
+    let id = scene.insert(linked);
+    let from_scene: polysect::store::BoundingBox = scene.bounding_box(id).unwrap();
+    assert_eq!([from_array, from_linked, from_scene], [want; 3]);
+    assert_eq!(BoundingBox::of(p.vertices().iter().copied()), Some(want));
+    let mut linked = LinkedPolygon::from_convex(&p);
+    let v = linked.first();
+    linked.move_vertex(v, Point::new(1.0, -3.0)).unwrap();
+    assert_eq!(linked.bounding_box().min, Point::new(-1.0, -3.0));
+    assert!(want.contains_point([5.0, 4.0]) && !want.contains_point([5.0, 4.5]));
+}
+
+/// `Point` measures and operators a user reaches for, and the honest name of
+/// `ConvexPolygon::rotated`.
+#[test]
+fn point_arithmetic_and_starting_at() {
+    let (a, b) = (Point::new(3.0, 0.0), Point::new(0.0, 4.0));
+    assert_eq!(a.distance(b), 5.0);
+    assert_eq!((b - a).length(), 5.0);
+    assert_eq!((a.dot(b), a.cross(b)), (0.0, 12.0));
+    assert_eq!(0.5 * (a + b), Point::new(1.5, 2.0));
+    let p = ConvexPolygon::new([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]]).unwrap();
+    let q = p.starting_at(2);
+    assert_eq!(q.vertices()[0], Point::new(2.0, 2.0));
+    assert_eq!((q.area(), q.bounding_box()), (p.area(), p.bounding_box()));
+}

@@ -69,8 +69,8 @@ fn check_refs(p: &ConvexPolygon, q: &ConvexPolygon, family: &str, what: &str, fa
 fn shifted(pair: &Pair, rng: &mut SmallRng) -> Pair {
     let (p, q) = pair;
     (
-        p.rotated(rng.random_range(0..p.len())),
-        q.rotated(rng.random_range(0..q.len())),
+        p.starting_at(rng.random_range(0..p.len())),
+        q.starting_at(rng.random_range(0..q.len())),
     )
 }
 
@@ -142,7 +142,7 @@ fn touching_containment_identical_nested() {
             &mut fast,
         );
         check(
-            &(p.clone(), p.rotated(i)),
+            &(p.clone(), p.starting_at(i)),
             "identical",
             &format!("identical rotated n={n}"),
             &mut fast,
@@ -156,7 +156,7 @@ fn touching_containment_identical_nested() {
         let f = [0.5, 0.9, 0.999][i % 3];
         if let Ok(inner) = p.map(|v| Point::new(c.x + f * (v.x - c.x), c.y + f * (v.y - c.y))) {
             check(
-                &(p.clone(), inner.rotated(i)),
+                &(p.clone(), inner.starting_at(i)),
                 "containment",
                 &format!("contained n={n}"),
                 &mut fast,
@@ -212,7 +212,7 @@ fn touching_containment_identical_nested() {
         }
         let smaller = generate::regular_polygon(n, r * 0.999);
         check(
-            &(outer.clone(), smaller.rotated(n / 3)),
+            &(outer.clone(), smaller.starting_at(n / 3)),
             "nested-n-gon",
             &format!("inner n-gon {n}"),
             &mut fast,

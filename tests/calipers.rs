@@ -52,7 +52,7 @@ fn check_polygon(p: &ConvexPolygon, what: &str) {
     let mut rng = SmallRng::seed_from_u64(p.len() as u64);
     let starts = [0, 1, p.len() / 2, p.len() - 1];
     for s in starts {
-        let r = p.rotated(s);
+        let r = p.starting_at(s);
         let d = farthest_pair(&r);
         assert_eq!(
             compare_distances(d.0, d.1, slow.0, slow.1),

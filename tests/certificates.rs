@@ -207,8 +207,8 @@ fn random_size(rng: &mut SmallRng) -> usize {
 
 fn shifted(pair: &Pair, rng: &mut SmallRng) -> Pair {
     (
-        pair.0.rotated(rng.random_range(0..pair.0.len())),
-        pair.1.rotated(rng.random_range(0..pair.1.len())),
+        pair.0.starting_at(rng.random_range(0..pair.0.len())),
+        pair.1.starting_at(rng.random_range(0..pair.1.len())),
     )
 }
 
@@ -297,7 +297,7 @@ fn containment_identical_and_small_against_large() {
         let n = [3, 4, 6, 10, 50, 500][i % 6];
         let (p, _) = generate::pair(Family::Ellipse, n, Relation::Any, &mut h.rng);
         h.check(
-            &(p.clone(), p.rotated(i)),
+            &(p.clone(), p.starting_at(i)),
             "identical",
             &format!("identical n={n}"),
         );
@@ -309,7 +309,7 @@ fn containment_identical_and_small_against_large() {
         let f = [0.5, 0.9, 0.999][i % 3];
         if let Ok(inner) = p.map(|v| Point::new(c.x + f * (v.x - c.x), c.y + f * (v.y - c.y))) {
             h.check(
-                &(p.clone(), inner.rotated(i)),
+                &(p.clone(), inner.starting_at(i)),
                 "containment",
                 &format!("contained n={n}"),
             );

@@ -54,18 +54,24 @@ fn check_pair(pair: &Pair, rng: &mut SmallRng, what: &str) -> (u32, u32) {
         acc.1 += r.1;
     };
     let (rp, rq) = (
-        p.rotated(rng.random_range(0..p.len())),
-        q.rotated(rng.random_range(0..q.len())),
+        p.starting_at(rng.random_range(0..p.len())),
+        q.starting_at(rng.random_range(0..q.len())),
     );
     add(&mut acc, check(&rp, &rq, &format!("{what} random starts")));
     if p.len() <= 8 {
         for s in 1..p.len() {
-            add(&mut acc, check(&p.rotated(s), q, &format!("{what} p start {s}")));
+            add(
+                &mut acc,
+                check(&p.starting_at(s), q, &format!("{what} p start {s}")),
+            );
         }
     }
     if q.len() <= 8 {
         for s in 1..q.len() {
-            add(&mut acc, check(p, &q.rotated(s), &format!("{what} q start {s}")));
+            add(
+                &mut acc,
+                check(p, &q.starting_at(s), &format!("{what} q start {s}")),
+            );
         }
     }
     acc
@@ -131,8 +137,8 @@ fn touching_families_at_every_start() {
             for s in 0..pair.0.len() {
                 for t in 0..pair.1.len().min(4) {
                     let r = check(
-                        &pair.0.rotated(s),
-                        &pair.1.rotated(t),
+                        &pair.0.starting_at(s),
+                        &pair.1.starting_at(t),
                         &format!("{family} n={n} s={s} t={t}"),
                     );
                     wrong += r.0;
@@ -163,16 +169,16 @@ fn containment_identity_and_nesting() {
                 (&inner, &inner),
                 (&outer, &outer),
             ] {
-                check(&a.rotated(s), b, &format!("nested/identical n={n} s={s}"));
+                check(&a.starting_at(s), b, &format!("nested/identical n={n} s={s}"));
             }
         }
         // Identical polygons at random starts, and a tiny polygon deep inside.
         let (p, _) = generate::pair(Family::NonUniform, n, Relation::Any, &mut rng);
-        check(&p, &p.rotated(rng.random_range(0..p.len())), "identical");
+        check(&p, &p.starting_at(rng.random_range(0..p.len())), "identical");
         let tiny = ConvexPolygon::new([[0.0, 0.0], [1e-9, 0.0], [0.0, 1e-9]]).unwrap();
         check(&outer, &tiny, "tiny inside");
         for s in 0..3 {
-            check(&tiny.rotated(s), &outer, "tiny inside (pivot in tiny)");
+            check(&tiny.starting_at(s), &outer, "tiny inside (pivot in tiny)");
         }
     }
     for i in 0..200 {
@@ -205,12 +211,16 @@ fn triangles_against_large_polygons() {
             ])
             .unwrap();
             let s = rng.random_range(0..n);
-            let p = if i % 2 == 0 { poly.rotated(s) } else { poly.clone() };
+            let p = if i % 2 == 0 {
+                poly.starting_at(s)
+            } else {
+                poly.clone()
+            };
             check(&p, &tri, &format!("triangle vs {n}-gon #{i} r={r}"));
             for t in 1..3 {
                 check(
                     &p,
-                    &tri.rotated(t),
+                    &tri.starting_at(t),
                     &format!("triangle vs {n}-gon #{i} r={r} t={t}"),
                 );
             }
@@ -279,7 +289,7 @@ fn extremes_scaled_offset_and_one_ulp() {
                 let (p, q) =
                     generate::pair(Family::OneUlpGap, n, relation, &mut SmallRng::seed_from_u64(seed));
                 for s in [0, 1, p.len() / 2] {
-                    let p = p.rotated(s);
+                    let p = p.starting_at(s);
                     assert_eq!(ChazelleDobkin.intersects(&p, &q), want, "one ulp n={n}");
                     assert_eq!(ChazelleDobkin.intersects(&q, &p), want, "one ulp swapped n={n}");
                 }
@@ -300,8 +310,8 @@ fn iterations_grow_like_log_n() {
         let dist = [1.9, 2.1, 2.0, 1.0][i % 4];
         let (dx, dy) = (dist * angle.cos(), dist * angle.sin());
         let q = p.map(|v| Point::new(v.x + dx, v.y + dy)).unwrap();
-        let q = q.rotated(rng.random_range(0..n));
-        let p = p.rotated(rng.random_range(0..n));
+        let q = q.starting_at(rng.random_range(0..n));
+        let p = p.starting_at(rng.random_range(0..n));
         let mut it = Iterations::default();
         let got = ChazelleDobkin.intersects_probed(Exact, &p, &q, &mut it);
         assert_eq!(got, Linear.intersects(&p, &q), "2^20 pair #{i}");
@@ -332,7 +342,7 @@ fn lattice_hulls_at_every_pivot() {
         let q = lattice_poly(&mut rng, size);
         let want = truth(&p, &q);
         for s in 0..p.len() {
-            let ps = p.rotated(s);
+            let ps = p.starting_at(s);
             assert_eq!(
                 ChazelleDobkin.intersects(&ps, &q),
                 want,

@@ -382,3 +382,23 @@ fn render_writes_svg_only() {
     assert!(std::fs::read_to_string(&upper).unwrap().starts_with("<svg"));
     let _ = std::fs::remove_file(&upper);
 }
+
+/// `calibrate > costs.json` is JSON and nothing else, its tables labelled by size, and
+/// it loads back as the `CostModel` that `Scene::set_costs` takes; the talk is on
+/// standard error.
+#[test]
+fn calibrate_writes_only_json_on_stdout() {
+    let (code, out, err) = run(&["calibrate"], b"");
+    assert_eq!(code, 0, "{err}");
+    let value: serde_json::Value = serde_json::from_str(&out).expect("stdout is one JSON value");
+    let sizes: Vec<usize> = serde_json::from_value(value["sizes"].clone()).expect("sizes");
+    assert_eq!(sizes, polysect::store::CostModel::sizes());
+    let costs: polysect::store::CostModel = serde_json::from_str(&out).expect("a CostModel");
+    assert!(costs.convert_ns.iter().all(|c| c.is_finite() && *c > 0.0));
+    let mut scene = polysect::store::Scene::new();
+    scene.set_costs(costs);
+    assert_eq!(scene.costs(), costs);
+    assert!(err.contains(&costs.summary()), "{err}");
+    assert!(err.contains("set_costs"), "{err}");
+    assert!(!err.contains("at most 0 vertices"), "{err}");
+}

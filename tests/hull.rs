@@ -75,7 +75,7 @@ fn check(points: &[Point], what: &str) {
         (Ok(gp), Ok(mp)) => {
             assert_eq!(gp.vertices(), &g[..], "{what}");
             let s = mp.vertices().iter().position(|&v| v == g[0]).unwrap();
-            assert_eq!(mp.rotated(s).vertices(), &g[..], "{what}");
+            assert_eq!(mp.starting_at(s).vertices(), &g[..], "{what}");
         }
         (Err(a), Err(b)) => {
             assert_eq!(a, b, "{what}");

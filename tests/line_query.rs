@@ -106,7 +106,7 @@ fn grid_polygon(rng: &mut SmallRng, span: i32) -> ConvexPolygon {
             .collect();
         if let Ok(h) = convex_hull(&pts) {
             let start = rng.random_range(0..h.len());
-            return h.rotated(start);
+            return h.starting_at(start);
         }
     }
 }
@@ -158,7 +158,7 @@ fn large_polygons_and_random_lines() {
         let n = 1 << rng.random_range(2..13);
         let family = [Family::Ellipse, Family::Rotated, Family::NonUniform][round % 3];
         let (p, _) = pair(family, n, Relation::Any, &mut rng);
-        let (lo, hi) = p.bounding_box();
+        let polysect::BoundingBox { min: lo, max: hi } = p.bounding_box();
         let pick = |rng: &mut SmallRng| {
             Point::new(
                 rng.random_range(lo.x - 1.0..hi.x + 1.0),

@@ -236,7 +236,7 @@ type PointMap = Box<dyn Fn(Point) -> Point>;
 /// The same polygon moved to the edges of the f64 range: offset 2^50, scaled by
 /// 2^±1000, scaled to reach f64::MAX, and scaled into the subnormals.
 fn extremes_of(p: &ConvexPolygon) -> Vec<(String, ConvexPolygon)> {
-    let (lo, hi) = p.bounding_box();
+    let polysect::BoundingBox { min: lo, max: hi } = p.bounding_box();
     let extent = (hi.x - lo.x)
         .max(hi.y - lo.y)
         .max(hi.x.abs())
@@ -294,7 +294,7 @@ fn probe_points(p: &ConvexPolygon, rng: &mut SmallRng) -> Vec<Point> {
         let mid = Point::new(a.x / 2.0 + b.x / 2.0, a.y / 2.0 + b.y / 2.0);
         out.extend(nudge(mid));
     }
-    let (lo, hi) = p.bounding_box();
+    let polysect::BoundingBox { min: lo, max: hi } = p.bounding_box();
     let (w, h) = ((hi.x / 2.0 - lo.x / 2.0) * 2.0, (hi.y / 2.0 - lo.y / 2.0) * 2.0);
     for _ in 0..200 {
         let (s, t): (f64, f64) = (rng.random_range(-0.2..1.2), rng.random_range(-0.2..1.2));
@@ -531,7 +531,7 @@ fn extreme_vertex_equals_brute_force_on_every_family_and_at_the_extremes() {
         for (what, p) in family_polygons(&mut rng) {
             check_extreme(&p, &what, &mut rng);
             for start in [1, p.len() / 2, p.len() - 1] {
-                check_extreme(&p.rotated(start), &format!("{what} from {start}"), &mut rng);
+                check_extreme(&p.starting_at(start), &format!("{what} from {start}"), &mut rng);
             }
             for (how, q) in extremes_of(&p) {
                 check_extreme(&q, &format!("{what}, {how}"), &mut rng);
@@ -698,7 +698,7 @@ fn every_query_answers_the_same_from_any_start_vertex() {
         let points = probe_points(&p, &mut rng);
         let dirs = probe_directions(&p, &mut rng);
         for start in 0..p.len().min(9) {
-            let r = p.rotated(start);
+            let r = p.starting_at(start);
             for &x in &points {
                 assert_eq!(r.contains_point(x), p.contains_point(x), "{what} start {start}");
             }
@@ -725,7 +725,7 @@ struct Counting;
 impl Kernel for Counting {
     const NAME: &'static str = "counting";
     type Within = Counting;
-    fn within(self, _boxes: [(Point, Point); 2]) -> Counting {
+    fn within(self, _boxes: [polysect::BoundingBox; 2]) -> Counting {
         self
     }
     fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
@@ -746,7 +746,7 @@ fn sampled_queries_do_sublinear_work() {
     for log2 in [10u32, 14, 18] {
         let p = generate::ellipse_polygon(&mut rng, 1 << log2, &generate::Density::Uniform, true);
         let linked = shuffled(&p, &mut rng);
-        let (lo, hi) = p.bounding_box();
+        let polysect::BoundingBox { min: lo, max: hi } = p.bounding_box();
         let queries = 400;
         PREDICATES.store(0, AtomicOrdering::Relaxed);
         for _ in 0..queries {

@@ -82,8 +82,8 @@ fn on_every_family(seed: u64, check: fn(&ConvexPolygon, &ConvexPolygon, &str)) {
             let (p, q) = generate::pair(family, n, relation, &mut rng);
             let (p, q) = if i % 2 == 0 {
                 (
-                    p.rotated(rng.random_range(0..p.len())),
-                    q.rotated(rng.random_range(0..q.len())),
+                    p.starting_at(rng.random_range(0..p.len())),
+                    q.starting_at(rng.random_range(0..q.len())),
                 )
             } else {
                 (p, q)

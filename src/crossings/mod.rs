@@ -17,7 +17,7 @@
 //! one pair of edges and is reported by its two endpoints only.
 //! [`Touching::Exclude`] keeps only the proper crossings and the overlap ends: a pair
 //! of edges whose single common point is an endpoint of one of them contributes
-//! nothing (the crossings report's intent; docs/crossings.md has the decision).
+//! nothing (docs/crossings.md has the decision).
 //!
 //! # Algorithms
 //! n and m are the polygons' sizes, k = n + m, c the number of reported points.
@@ -66,8 +66,7 @@ pub enum Touching {
     /// Every point where the boundaries meet (the default).
     #[default]
     Include,
-    /// Only proper crossings and the ends of collinear overlaps, as the crossings report
-    /// intends: a pair of edges whose only common point is an endpoint of one of
+    /// Only proper crossings and the ends of collinear overlaps: a pair of edges whose only common point is an endpoint of one of
     /// them contributes nothing (see the [module docs](self)).
     Exclude,
 }

@@ -204,8 +204,7 @@ pub(crate) fn run(config: &Config) -> io::Result<Report> {
                 series.push(Series::new(format!("{alg}, {symbol} = {param}"), pts));
             }
         }
-        let title =
-            format!("crossings of two random polygons, {dist} points (the crossings report, Fig. 6.1)");
+        let title = format!("crossings of two random polygons, {dist} points");
         let chart = Chart {
             title: &title,
             x_label: "n = m (vertices per polygon)",

@@ -461,13 +461,13 @@ fn ellipse_polygon_of(
         Family::Rotated => {
             let p = try_ellipse_polygon_axes(rng, n, &Density::Uniform, true, axes)?;
             let start = rng.random_range(0..p.len());
-            p.rotated(start)
+            p.starting_at(start)
         }
         _ => {
             let d = Density::random(rng);
             let p = try_ellipse_polygon_axes(rng, n, &d, true, axes)?;
             let start = rng.random_range(0..p.len());
-            p.rotated(start)
+            p.starting_at(start)
         }
     })
 }
@@ -638,7 +638,7 @@ fn touching_pair<R: Rng + ?Sized>(
         .collect();
     let q = convex_hull(&q_pts).expect("the lattice image has area");
     let (sp, sq) = (rng.random_range(0..p.len()), rng.random_range(0..q.len()));
-    (p.rotated(sp), q.rotated(sq))
+    (p.starting_at(sp), q.starting_at(sq))
 }
 
 fn nested_pair<R: Rng + ?Sized>(n: usize, relation: Relation, rng: &mut R) -> (ConvexPolygon, ConvexPolygon) {

@@ -698,7 +698,8 @@ fn short_edges(p: &ConvexPolygon, q: &ConvexPolygon) -> f64 {
 fn union_side(p: &ConvexPolygon, q: &ConvexPolygon) -> f64 {
     let max = |a: f64, b: f64| if a > b { a } else { b };
     let min = |a: f64, b: f64| if a < b { a } else { b };
-    let ((lo0, hi0), (lo1, hi1)) = (p.bounding_box(), q.bounding_box());
+    let (bp, bq) = (p.bounding_box(), q.bounding_box());
+    let ((lo0, hi0), (lo1, hi1)) = ((bp.min, bp.max), (bq.min, bq.max));
     let wx = max(hi0.x, hi1.x) - min(lo0.x, lo1.x);
     let wy = max(hi0.y, hi1.y) - min(lo0.y, lo1.y);
     max(wx, wy)
@@ -998,7 +999,7 @@ mod tests {
         assert_eq!(pencil(Exact, sq.vertices(), Point::new(0.0, 0.0)), None);
         // Every start vertex, every outside point on a grid: the block is exactly the visible edges.
         for start in 0..4 {
-            let r = sq.rotated(start);
+            let r = sq.starting_at(start);
             let v = r.vertices();
             for x in -4..=8 {
                 for y in -4..=8 {
@@ -1049,9 +1050,9 @@ mod tests {
         for (q, want) in cases {
             let q = poly(q);
             for s in 0..sq.len() {
-                let p = sq.rotated(s);
+                let p = sq.starting_at(s);
                 for t in 0..q.len() {
-                    let qq = q.rotated(t);
+                    let qq = q.starting_at(t);
                     assert_eq!(ChazelleDobkin.intersects(&p, &qq), *want, "{p:?} {qq:?}");
                     assert_eq!(ChazelleDobkin.intersects(&qq, &p), *want, "{qq:?} {p:?}");
                     assert_eq!(brute_force(Exact, &p, &qq), *want);
@@ -1089,7 +1090,7 @@ mod tests {
         for t in tris.iter().step_by(3) {
             for o in &others {
                 for s in 0..o.len() {
-                    let o = o.rotated(s);
+                    let o = o.starting_at(s);
                     let want = Linear.intersects(t, &o);
                     assert_eq!(ChazelleDobkin.intersects(t, &o), want, "{t:?} {o:?}");
                     assert_eq!(ChazelleDobkin.intersects(&o, t), want, "{o:?} {t:?}");

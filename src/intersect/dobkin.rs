@@ -1211,7 +1211,7 @@ mod tests {
         for (a, b) in [(p, q), (q, p)] {
             for i in 0..starts(a) {
                 for j in 0..starts(b) {
-                    let (a, b) = (a.rotated(i), b.rotated(j));
+                    let (a, b) = (a.starting_at(i), b.starting_at(j));
                     let want = crate::intersect::Linear.intersects(&a, &b);
                     match Dobkin.derive_probed(Exact, &a, &b, &mut ()) {
                         Derivation::Certified(c) => {
@@ -1274,8 +1274,8 @@ mod tests {
             for i in 0..24 {
                 let n = [3, 4, 5, 7, 12, 40, 300][i % 7];
                 let (p, q) = generate::pair(family, n, Relation::Any, &mut rng);
-                let (lo, hi) = p.bounding_box();
-                let width = hi.x - lo.x;
+                let b = p.bounding_box();
+                let width = b.max.x - b.min.x;
                 let dx = rng.random_range(-1.0..1.0) * width;
                 let Some(q) = stacked(&p, &q, dx) else { continue };
                 let what = format!("{family} n={n} #{i}");

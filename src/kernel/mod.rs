@@ -23,11 +23,13 @@
 //! Predicates return three-way answers ([`Orientation`], [`Sign`]); a zero is a
 //! real answer (collinear, parallel, perpendicular), never an error.
 
+mod bbox;
 pub mod exact;
 #[cfg(feature = "serde")]
 mod point_serde;
 mod segment;
 
+pub use bbox::BoundingBox;
 pub use exact::{Exact, ExactWithin};
 pub use segment::{SegmentContact, point_on_segment, segment_contact, segments_intersect};
 
@@ -60,6 +62,35 @@ impl Point {
     #[inline]
     pub fn is_finite(self) -> bool {
         self.x.is_finite() && self.y.is_finite()
+    }
+
+    /// The dot product `x·ox + y·oy`, rounded: a measurement, not a predicate (use
+    /// [`Kernel::dot`] for an exact sign).
+    #[inline]
+    pub fn dot(self, o: Point) -> f64 {
+        self.x * o.x + self.y * o.y
+    }
+
+    /// The cross product `x·oy − y·ox` (the z component of the 3D cross product),
+    /// rounded: positive when `o` is counter-clockwise of `self`. For an exact sign use
+    /// [`Kernel::orient`] or [`Kernel::cross`].
+    #[inline]
+    pub fn cross(self, o: Point) -> f64 {
+        self.x * o.y - self.y * o.x
+    }
+
+    /// The Euclidean length of the vector, `hypot(x, y)` (no overflow or underflow in
+    /// the intermediate square; within about an ulp of the exact value).
+    #[inline]
+    pub fn length(self) -> f64 {
+        self.x.hypot(self.y)
+    }
+
+    /// The Euclidean distance to `o`: `(o - self).length()`; the difference is rounded
+    /// first, so the result is exact up to those roundings and hypot's.
+    #[inline]
+    pub fn distance(self, o: Point) -> f64 {
+        (o - self).length()
     }
 
     /// Lexicographic order: by x, then by y. Exact (no arithmetic).
@@ -236,7 +267,7 @@ pub trait Kernel: Copy + Clone + Default + fmt::Debug + Send + Sync + 'static {
     /// assert_eq!(k.orient(v[0], v[1], v[2]), Orientation::Ccw);
     /// # Ok::<(), polysect::PolygonError>(())
     /// ```
-    fn within(self, boxes: [(Point, Point); 2]) -> Self::Within;
+    fn within(self, boxes: [BoundingBox; 2]) -> Self::Within;
 
     /// The same predicates for calls whose coordinate differences, as computed in
     /// `f64`, are all at most `w` in magnitude: for `cross(a, b, c, d)` and
@@ -265,7 +296,7 @@ pub trait Kernel: Copy + Clone + Default + fmt::Debug + Send + Sync + 'static {
     /// ```
     #[inline]
     fn within_differences(self, w: f64) -> Self::Within {
-        let side = (Point::new(0.0, 0.0), Point::new(w, w));
+        let side = BoundingBox::new(Point::new(0.0, 0.0), Point::new(w, w));
         self.within([side, side])
     }
 
@@ -507,7 +538,7 @@ impl<K: Kernel> Kernel for ShortEdges<K> {
     type Within = ShortEdges<K::Within>;
 
     #[inline]
-    fn within(self, boxes: [(Point, Point); 2]) -> Self::Within {
+    fn within(self, boxes: [BoundingBox; 2]) -> Self::Within {
         ShortEdges(self.0.within(boxes))
     }
 
@@ -581,7 +612,7 @@ impl Kernel for Fast {
     type Within = Fast;
 
     #[inline]
-    fn within(self, _boxes: [(Point, Point); 2]) -> Fast {
+    fn within(self, _boxes: [BoundingBox; 2]) -> Fast {
         self
     }
 
@@ -654,6 +685,17 @@ impl FromStr for Precision {
 /// assert_eq!(a - b, Point::new(0.5, 3.0));
 /// assert_eq!(-a, Point::new(-1.0, -2.0));
 /// assert_eq!(a * 2.0, Point::new(2.0, 4.0));
+/// assert_eq!(2.0 * a, a * 2.0);
+/// assert_eq!(a / 2.0, Point::new(0.5, 1.0));
+/// let mut c = a;
+/// c += b;
+/// c -= a;
+/// c *= 4.0;
+/// c /= 2.0;
+/// assert_eq!(c, Point::new(1.0, -2.0));
+/// assert_eq!((a.dot(b), a.cross(b)), (-1.5, -2.0));
+/// assert_eq!(Point::new(3.0, 4.0).length(), 5.0);
+/// assert_eq!(Point::new(1.0, 1.0).distance(Point::new(4.0, 5.0)), 5.0);
 /// assert_eq!(a.to_string(), "(1, 2)");
 /// ```
 impl Add for Point {
@@ -689,6 +731,52 @@ impl Mul<f64> for Point {
     }
 }
 
+/// Scaling by a number from the left: `s * p` is `p * s`.
+impl Mul<Point> for f64 {
+    type Output = Point;
+    #[inline]
+    fn mul(self, p: Point) -> Point {
+        p * self
+    }
+}
+
+/// Division by a number: `p / s` divides both coordinates by `s` (rounded).
+impl std::ops::Div<f64> for Point {
+    type Output = Point;
+    #[inline]
+    fn div(self, s: f64) -> Point {
+        Point::new(self.x / s, self.y / s)
+    }
+}
+
+impl std::ops::AddAssign for Point {
+    #[inline]
+    fn add_assign(&mut self, o: Point) {
+        *self = *self + o;
+    }
+}
+
+impl std::ops::SubAssign for Point {
+    #[inline]
+    fn sub_assign(&mut self, o: Point) {
+        *self = *self - o;
+    }
+}
+
+impl std::ops::MulAssign<f64> for Point {
+    #[inline]
+    fn mul_assign(&mut self, s: f64) {
+        *self = *self * s;
+    }
+}
+
+impl std::ops::DivAssign<f64> for Point {
+    #[inline]
+    fn div_assign(&mut self, s: f64) {
+        *self = *self / s;
+    }
+}
+
 /// `(x, y)`, each coordinate in the shortest form that parses back to the same `f64`:
 /// plain decimals between 10^-5 and 10^16 (`(4.5, 2)`), scientific notation beyond
 /// (`(1.7976931348623157e308, 5e-324)`), so huge and tiny values stay short. A
@@ -710,6 +798,17 @@ impl fmt::Display for Point {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn point_measures_stay_finite_at_the_extremes() {
+        let big = Point::new(1e300, 1e300);
+        assert_eq!(big.length(), 1e300 * 2f64.sqrt());
+        let tiny = Point::new(3e-320, 4e-320);
+        assert!((tiny.length() - 5e-320).abs() <= 1e-323);
+        assert_eq!(Point::new(-2.0, 0.0).distance(Point::new(2.0, 3.0)), 5.0);
+        // Counter-clockwise is positive, as for `orient`.
+        assert!(Point::new(1.0, 0.0).cross(Point::new(0.0, 1.0)) > 0.0);
+    }
+
     use super::*;
 
     #[test]
@@ -771,7 +870,7 @@ mod tests {
             let boxed = |p: Point, q: Point, r: Point| {
                 let lo = Point::new(p.x.min(q.x).min(r.x), p.y.min(q.y).min(r.y));
                 let hi = Point::new(p.x.max(q.x).max(r.x), p.y.max(q.y).max(r.y));
-                (lo, hi)
+                BoundingBox::new(lo, hi)
             };
             let k = Exact.within([boxed(a, b, c), boxed(a, b, c)]);
             assert_eq!(k.orient_line(&line, c), want, "{a} {b} {c}");

@@ -3,7 +3,7 @@
 use super::hull::hull_indices;
 use super::{InputIndex, PolygonError, Prefilter, distinct_indices};
 use crate::kernel::exact::area_sign_of;
-use crate::kernel::{Exact, Kernel, Orientation, Point, Sign};
+use crate::kernel::{BoundingBox, Exact, Kernel, Orientation, Point, Sign};
 use std::sync::OnceLock;
 
 /// A convex polygon with at least three vertices, stored counter-clockwise with
@@ -22,7 +22,7 @@ pub struct ConvexPolygon {
     vertices: Vec<Point>,
     /// The bounding box `(min, max)`, kept with the vertices so that a query can hand
     /// the exact kernel a per-query error bound in O(1) ([`Kernel::within`]).
-    bbox: (Point, Point),
+    bbox: BoundingBox,
     /// [`ConvexPolygon::edge_extent`]: computed by [`ConvexPolygon::new`], whose checks
     /// cost far more, and otherwise by the first call that asks for it (only the exact
     /// kernel's linear test does), so that a conversion does not pay the pass: it would
@@ -104,8 +104,17 @@ impl ConvexPolygon {
         self.vertices
     }
 
-    /// The same polygon with the array rotated to start at vertex `start`.
-    pub fn rotated(&self, start: usize) -> ConvexPolygon {
+    /// The same polygon (the same region, nothing moves) with its vertex list starting
+    /// at vertex `start` (counted cyclically). O(n).
+    ///
+    /// ```
+    /// use polysect::{ConvexPolygon, Point};
+    /// let p = ConvexPolygon::new([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])?;
+    /// assert_eq!(p.starting_at(1).vertices()[0], Point::new(1.0, 0.0));
+    /// assert_eq!(p.starting_at(1).area(), p.area());
+    /// # Ok::<(), polysect::PolygonError>(())
+    /// ```
+    pub fn starting_at(&self, start: usize) -> ConvexPolygon {
         let mut v = self.vertices.clone();
         let n = v.len();
         v.rotate_left(start % n);
@@ -114,6 +123,13 @@ impl ConvexPolygon {
             bbox: self.bbox,
             edge_extent: self.edge_extent.clone(),
         }
+    }
+
+    /// The old name of [`starting_at`](Self::starting_at): it renumbers the vertices and
+    /// does not rotate the polygon in the plane.
+    #[deprecated(note = "renamed `starting_at`: it renumbers the vertices, the polygon does not turn")]
+    pub fn rotated(&self, start: usize) -> ConvexPolygon {
+        self.starting_at(start)
     }
 
     /// The polygon with every vertex mapped by `f`, validated again (an affine map
@@ -137,14 +153,14 @@ impl ConvexPolygon {
         for p in &mut self.vertices {
             *p = Point::new(p.x + dx, p.y + dy);
         }
-        let (lo, hi) = self.bbox;
-        self.bbox = (Point::new(lo.x + dx, lo.y + dy), Point::new(hi.x + dx, hi.y + dy));
+        let BoundingBox { min: lo, max: hi } = self.bbox;
+        self.bbox = BoundingBox::new(Point::new(lo.x + dx, lo.y + dy), Point::new(hi.x + dx, hi.y + dy));
         self.edge_extent = OnceLock::new();
     }
 
-    /// Axis-aligned bounding box `(min, max)`. O(1): computed at construction.
+    /// The axis-aligned bounding box. O(1): computed at construction.
     #[inline]
-    pub fn bounding_box(&self) -> (Point, Point) {
+    pub fn bounding_box(&self) -> BoundingBox {
         self.bbox
     }
 
@@ -217,13 +233,13 @@ impl TryFrom<Vec<Point>> for ConvexPolygon {
     }
 }
 
-/// The bounding box `(min, max)` of a list (a zero box at the origin for an empty
+/// The bounding box of a list (a zero box at the origin for an empty
 /// one, which no polygon has). Plain comparisons rather than `f64::min`/`max`, whose
 /// NaN handling costs instructions that finite vertices do not need (CLM computes the
 /// boxes of its LPs' points with it: 14 instructions fewer per LP constraint at 2^12).
-pub(crate) fn box_of(vertices: &[Point]) -> (Point, Point) {
+pub(crate) fn box_of(vertices: &[Point]) -> BoundingBox {
     let Some(&first) = vertices.first() else {
-        return (Point::default(), Point::default());
+        return BoundingBox::new(Point::default(), Point::default());
     };
     let (mut lo, mut hi) = (first, first);
     for p in &vertices[1..] {
@@ -232,7 +248,7 @@ pub(crate) fn box_of(vertices: &[Point]) -> (Point, Point) {
         hi.x = if p.x > hi.x { p.x } else { hi.x };
         hi.y = if p.y > hi.y { p.y } else { hi.y };
     }
-    (lo, hi)
+    BoundingBox::new(lo, hi)
 }
 
 /// [`ConvexPolygon::edge_extent`] of the closed chain `vertices` (0 for fewer than two).
@@ -409,8 +425,11 @@ mod tests {
             let unit = |b: u64| (b % 2001) as f64 / 1000.0 - 1.0;
             let (dx, dy) = (unit(seed) * scale, unit(seed >> 20) * scale);
             p.translate_unchecked(dx, dy);
-            let (lo, hi) = box_of(p.vertices());
-            assert_eq!(p.bounding_box(), (lo, hi), "step {step} by ({dx}, {dy})");
+            assert_eq!(
+                p.bounding_box(),
+                box_of(p.vertices()),
+                "step {step} by ({dx}, {dy})"
+            );
             // The extent kept with the polygon is the one of its vertices now, and the
             // unchecked construction computes the same when first asked.
             let fresh = ConvexPolygon::from_ccw_unchecked(p.vertices().to_vec());
@@ -433,7 +452,10 @@ mod tests {
         cw_list.reverse();
         let cw = poly(&cw_list).unwrap();
         assert_eq!(cw.vertices()[0], Point::new(0., 1.));
-        assert_eq!(cw.rotated(1).vertices(), ccw.vertices());
+        assert_eq!(cw.starting_at(1).vertices(), ccw.vertices());
+        #[allow(deprecated)]
+        let old_name = cw.rotated(1);
+        assert_eq!(old_name, cw.starting_at(1));
         for p in [&ccw, &cw] {
             p.debug_validate().unwrap();
         }

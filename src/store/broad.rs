@@ -22,54 +22,7 @@
 //!
 //! Every comparison is between input coordinates (exact); touching boxes overlap.
 
-use crate::kernel::Point;
-
-/// A closed axis-aligned box. `overlaps` and `grow` use comparisons only (exact).
-#[derive(Clone, Copy, Debug, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub struct BoundingBox {
-    /// The lower-left corner: the smallest x and the smallest y.
-    pub min: Point,
-    /// The upper-right corner: the largest x and the largest y.
-    pub max: Point,
-}
-
-impl BoundingBox {
-    /// The box of a non-empty point set.
-    pub fn of(points: impl IntoIterator<Item = Point>) -> Option<BoundingBox> {
-        let mut it = points.into_iter();
-        let first = it.next()?;
-        let mut b = BoundingBox {
-            min: first,
-            max: first,
-        };
-        for p in it {
-            b.grow(p);
-        }
-        Some(b)
-    }
-
-    /// Extends the box to contain `p`.
-    #[inline]
-    pub fn grow(&mut self, p: Point) {
-        self.min.x = self.min.x.min(p.x);
-        self.min.y = self.min.y.min(p.y);
-        self.max.x = self.max.x.max(p.x);
-        self.max.y = self.max.y.max(p.y);
-    }
-
-    /// True when the closed boxes share a point.
-    #[inline]
-    pub fn overlaps(&self, o: &BoundingBox) -> bool {
-        self.min.x <= o.max.x && o.min.x <= self.max.x && self.min.y <= o.max.y && o.min.y <= self.max.y
-    }
-
-    /// True when `p` lies on the box's boundary (removing or moving it may shrink the box).
-    #[inline]
-    pub fn touches_boundary(&self, p: Point) -> bool {
-        p.x == self.min.x || p.x == self.max.x || p.y == self.min.y || p.y == self.max.y
-    }
-}
+use crate::kernel::BoundingBox;
 
 /// One box in sweep order.
 #[derive(Clone, Copy, Debug)]
@@ -296,6 +249,7 @@ fn insertion_sort(v: &mut [Slab], budget: usize) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::kernel::Point;
     use rand::rngs::SmallRng;
     use rand::{Rng, SeedableRng};
 

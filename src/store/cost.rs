@@ -180,6 +180,31 @@ fn lookup(table: &Table, n: usize) -> f64 {
 }
 
 impl CostModel {
+    /// The polygon sizes (vertices) the tables are indexed by: entry i of every table is
+    /// for `sizes()[i]` = 2^(i + 2) vertices.
+    pub fn sizes() -> [usize; COST_SIZES] {
+        std::array::from_fn(size_of)
+    }
+
+    /// What the model makes the planner do, in one or two plain sentences (what
+    /// `polysect calibrate` prints on standard error beside the JSON).
+    pub fn summary(&self) -> String {
+        let first = if self.crossover == 0 {
+            "No polygon is converted to an array on its first query".to_string()
+        } else {
+            format!(
+                "Polygons of at most {} vertices are converted to arrays on their first query",
+                self.crossover
+            )
+        };
+        format!(
+            "{first}; larger ones once their sampled queries since the last edit have cost as \
+             much as converting them ({:.1} ns per vertex to convert, {:.1} ns times the square \
+             root of the size per sampled query).",
+            self.convert_ns_per_vertex, self.sampled_ns_per_sqrt_n
+        )
+    }
+
     /// A model from its tables, in this order: conversion (shuffled, ordered), sampled,
     /// linear walk (shuffled, ordered), array test; `array_linear_max` is 0 (Barba–Langerman
     /// at every size), the summaries and the crossover are derived.
@@ -545,4 +570,29 @@ pub struct PlannerStats {
     pub throwaway_conversions: u64,
     /// Snapshots dropped by an edit.
     pub invalidations: u64,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes_label_the_tables_and_the_summary_reads_plainly() {
+        let sizes = CostModel::sizes();
+        assert_eq!((sizes[0], sizes[COST_SIZES - 1]), (4, 1 << 18));
+        assert!(sizes.windows(2).all(|w| w[1] == 2 * w[0]));
+        let mut model = CostModel {
+            crossover: 64,
+            ..CostModel::default()
+        };
+        let text = model.summary();
+        assert!(
+            text.starts_with("Polygons of at most 64 vertices are converted"),
+            "{text}"
+        );
+        model.crossover = 0;
+        let text = model.summary();
+        assert!(text.starts_with("No polygon is converted"), "{text}");
+        assert!(!text.contains("at most 0"), "{text}");
+    }
 }

@@ -20,8 +20,8 @@
 //!    cost without snapshots, less the array test) when the other polygon has a
 //!    snapshot, half of it when neither has one.
 //! 3. A polygon is converted when the queries being planned alone pay for its
-//!    conversion, or (ski rental) when the rent it has paid since its last edit plus
-//!    their saving reaches the price, unless the queries expected before its next edit
+//!    conversion, or when what its missing snapshot has cost the queries since its
+//!    last edit plus their saving reaches the price of converting it, unless the queries expected before its next edit
 //!    would not pay for it. Polygons whose partners were just chosen are offered the
 //!    other half of the saving once more.
 //! 4. Pairs with two snapshots get an array test (the linear one for small pairs,
@@ -29,8 +29,8 @@
 //!    the linked polygons by the cost tables: the linear walk
 //!    ([`LinearLinked`](crate::intersect::LinearLinked)) for small polygons, the
 //!    sublinear sampled test (Chazelle–Liu–Magen) for large ones; each unconverted
-//!    polygon pays its share of the saving as rent. An edit drops the snapshot and
-//!    clears the rent; a translation keeps both.
+//!    polygon adds its share of the saving to what its missing snapshot has cost. An
+//!    edit drops the snapshot and that sum; a translation keeps both.
 //!
 //! Charging each polygon what *its* conversion saves is what makes a triangle moved
 //! before every query against a large polygon holding its snapshot convert at once
@@ -85,7 +85,7 @@ mod warm;
 #[doc(hidden)]
 pub mod workload;
 
-pub use broad::BoundingBox;
-pub use cost::{ArenaProfile, CostModel, PlannerStats, Strategy};
+pub use crate::kernel::BoundingBox;
+pub use cost::{ArenaProfile, COST_SIZES, CostModel, PlannerStats, Strategy};
 pub use scene::{PolygonId, Scene, SceneError};
 pub use warm::WarmStats;

@@ -2,11 +2,12 @@
 //! and the edits. Planning is in `planner.rs`, answering in `query.rs`, both more
 //! methods of [`Scene`].
 
-use super::broad::{BoundingBox, BroadPhase};
+use super::broad::BroadPhase;
 use super::cost::{Account, CostModel, PlannerStats, Strategy};
 use super::lazy::LazyLinked;
 use super::route::QueryWorkspace;
 use super::warm::{WarmCache, WarmStats};
+use crate::kernel::BoundingBox;
 use crate::kernel::{Exact, Kernel, Point};
 use crate::polygon::{ConvexPolygon, EditError, Identity, LinkedPolygon, PolygonError, VertexId};
 use rand::SeedableRng;
@@ -648,8 +649,7 @@ impl<K: Kernel> Scene<K> {
     pub(super) fn install_snapshot(&mut self, key: usize, snapshot: ConvexPolygon) {
         let e = &mut self.entries[key];
         if !e.bbox_tight {
-            let (min, max) = snapshot.bounding_box();
-            e.bbox = BoundingBox { min, max };
+            e.bbox = snapshot.bounding_box();
             e.bbox_tight = true;
             self.broad.mark(key);
         }

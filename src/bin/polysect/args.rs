@@ -96,7 +96,7 @@ pub(crate) enum Command {
         #[arg(long, default_value = "exact", value_parser = parse_precision)]
         precision: Precision,
         /// include: every point where the boundaries meet; exclude: only proper
-        /// crossings and the ends of collinear overlaps (the crossings report).
+        /// crossings and the ends of collinear overlaps.
         #[arg(long, default_value = "include", value_parser = parse_touching)]
         touching: Touching,
     },

@@ -223,24 +223,42 @@ pub(crate) fn serve(bind: IpAddr, port: u16) -> io::Result<()> {
     finished.recv().unwrap_or(Ok(()))
 }
 
+/// The JSON `calibrate` writes: the sizes the tables are indexed by, then the model's
+/// fields (so the whole object deserialises as a `CostModel`, the extra field ignored).
+#[derive(serde::Serialize)]
+struct Calibrated<'a> {
+    sizes: [usize; polysect::store::COST_SIZES],
+    #[serde(flatten)]
+    costs: &'a polysect::store::CostModel,
+}
+
+/// `calibrate`: the measured model as JSON on standard output, nothing else; progress and
+/// the summary on standard error.
 pub(crate) fn calibrate() -> io::Result<()> {
+    use polysect::store::CostModel;
     let _ = writeln!(
         io::stderr(),
-        "measuring conversion and sampled-query costs (a few seconds)..."
+        "measuring conversion and sampled-query costs (about ten seconds)..."
     );
-    let costs = polysect::store::CostModel::calibrate(polysect::Exact);
+    let costs = CostModel::calibrate(polysect::Exact);
+    let json = Calibrated {
+        sizes: CostModel::sizes(),
+        costs: &costs,
+    };
     let mut out = io::stdout().lock();
     writeln!(
         out,
         "{}",
-        serde_json::to_string_pretty(&costs).expect("serialisable")
+        serde_json::to_string_pretty(&json).map_err(io::Error::other)?
     )?;
-    writeln!(
-        out,
-        "Polygons of at most {} vertices are converted at once; larger ones after their sampled\n\
-         queries since the last edit cost as much as converting them ({:.1} ns/vertex vs {:.1} ns·√n per query).",
-        costs.crossover, costs.convert_ns_per_vertex, costs.sampled_ns_per_sqrt_n
-    )
+    out.flush()?;
+    let _ = writeln!(
+        io::stderr(),
+        "{}\nEntry i of each table is for polygons of sizes[i] vertices, times in ns. Use it with \
+         scene.set_costs(serde_json::from_str::<CostModel>(&text)?) (feature `serde`).",
+        costs.summary()
+    );
+    Ok(())
 }
 
 /// `bench --protocol thesis`: the thesis's chapter 4 protocol (see

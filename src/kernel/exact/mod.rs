@@ -89,7 +89,7 @@ pub use interval::Interval;
 pub use out_of_line::in_adaptive_range;
 pub use semi_static::ExactWithin;
 
-use super::{DirectedLine, Kernel, Orientation, Point, Polynomial, Sign};
+use super::{BoundingBox, DirectedLine, Kernel, Orientation, Point, Polynomial, Sign};
 
 /// Exact predicates for every finite input; the default kernel. See the module docs
 /// for the layers.
@@ -102,7 +102,7 @@ impl Kernel for Exact {
     type Within = ExactWithin;
 
     #[inline]
-    fn within(self, boxes: [(Point, Point); 2]) -> ExactWithin {
+    fn within(self, boxes: [BoundingBox; 2]) -> ExactWithin {
         ExactWithin::new(boxes)
     }
 

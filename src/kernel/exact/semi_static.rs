@@ -7,7 +7,7 @@ use super::static_filter::{
     ORIENT_ERR, certain, cross_products, cross_products_from_differences, dot_products, factor_differences,
     nonzero_sign, orient_products,
 };
-use crate::kernel::{DirectedLine, Kernel, Orientation, Point, Polynomial, Sign};
+use crate::kernel::{BoundingBox, DirectedLine, Kernel, Orientation, Point, Polynomial, Sign};
 
 /// The exact kernel for one query whose points lie in known boxes ([`Kernel::within`]):
 /// [`Exact`](super::Exact) behind a *semi-static* filter.
@@ -64,19 +64,20 @@ impl Default for ExactWithin {
 }
 
 impl ExactWithin {
-    /// The kernel for queries on points inside the union of `boxes` (each `(min, max)`).
+    /// The kernel for queries on points inside the union of `boxes` .
     /// Boxes with non-finite corners give infinite bounds (every call goes to [`Exact`](super::Exact)).
     ///
     /// ```
-    /// use polysect::{ExactWithin, Kernel, Orientation, Point};
-    /// let b = (Point::new(0.0, 0.0), Point::new(1.0, 1.0));
+    /// use polysect::{BoundingBox, ExactWithin, Kernel, Orientation, Point};
+    /// let b = BoundingBox::new(Point::new(0.0, 0.0), Point::new(1.0, 1.0));
     /// let k = ExactWithin::new([b, b]);
     /// let (o, x, y) = (Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(0.0, 1.0));
     /// assert_eq!(k.orient(o, x, y), Orientation::Ccw);
     /// assert_eq!(k.orient(o, x, Point::new(0.5, 0.0)), Orientation::Collinear);
     /// ```
     #[inline]
-    pub fn new([(lo0, hi0), (lo1, hi1)]: [(Point, Point); 2]) -> ExactWithin {
+    pub fn new([b0, b1]: [BoundingBox; 2]) -> ExactWithin {
+        let ((lo0, hi0), (lo1, hi1)) = ((b0.min, b0.max), (b1.min, b1.max));
         // The union's side per coordinate, max(hi) − min(lo): rounding is monotonic, so
         // it is the largest computed difference of a corner's coordinate and another's
         // (as before this took all four), hence of two points in the boxes. The plain
@@ -107,7 +108,7 @@ impl ExactWithin {
     /// side in place of the (much shorter) longest edge.
     ///
     /// ```
-    /// use polysect::{ExactWithin, Kernel, Orientation, Point};
+    /// use polysect::{BoundingBox, ExactWithin, Kernel, Orientation, Point};
     /// let k = ExactWithin::for_differences(1.0);
     /// // Two unit edges, 2^40 apart: the boxes' bound would be 2^80 times larger.
     /// let (a, b) = (Point::new(0.0, 0.0), Point::new(1.0, 0.0));
@@ -184,7 +185,7 @@ impl Kernel for ExactWithin {
     type Within = ExactWithin;
 
     #[inline]
-    fn within(self, boxes: [(Point, Point); 2]) -> ExactWithin {
+    fn within(self, boxes: [BoundingBox; 2]) -> ExactWithin {
         ExactWithin::new(boxes)
     }
 

@@ -613,6 +613,11 @@ fn subnormal_differences_beside_f64_max() {
     }
 }
 
+/// [`ExactWithin::new`] on boxes written `(min, max)`.
+fn ew(boxes: [(Point, Point); 2]) -> ExactWithin {
+    ExactWithin::new(boxes.map(|(lo, hi)| crate::BoundingBox::new(lo, hi)))
+}
+
 /// The box `(min, max)` of some points.
 fn box_of(points: &[Point]) -> (Point, Point) {
     let (mut lo, mut hi) = (points[0], points[0]);
@@ -678,7 +683,7 @@ fn semi_static_filter_at_its_bound() {
             continue;
         }
 
-        let k3 = ExactWithin::new([box_of(&[a, b]), box_of(&[c])]);
+        let k3 = ew([box_of(&[a, b]), box_of(&[c])]);
         let (l, r) = orient_products(a, b, c);
         let want = sign_slow(&OrientPoly(a, b, c));
         let got = k3.orient(a, b, c);
@@ -687,7 +692,7 @@ fn semi_static_filter_at_its_bound() {
         });
         assert_eq!(k3.orient_of(&a, &b, &c), got, "orient_of {a:?} {b:?} {c:?}");
 
-        let k4 = ExactWithin::new([box_of(&[a, b]), box_of(&[c, d1])]);
+        let k4 = ew([box_of(&[a, b]), box_of(&[c, d1])]);
         let (l, r) = cross_products(a, b, c, d1);
         let want = sign_slow(&CrossPoly(a, b, c, d1));
         let got = k4.cross(a, b, c, d1);
@@ -695,7 +700,7 @@ fn semi_static_filter_at_its_bound() {
             format!("cross {a:?} {b:?} {c:?} {d1:?}")
         });
 
-        let k4 = ExactWithin::new([box_of(&[a, b]), box_of(&[c, d2])]);
+        let k4 = ew([box_of(&[a, b]), box_of(&[c, d2])]);
         let (l, r) = dot_products(a, b, c, d2);
         let want = sign_slow(&DotPoly(a, b, c, d2));
         check(2, l + r, k4.two, k4.dot(a, b, c, d2), want, &|| {
@@ -703,7 +708,7 @@ fn semi_static_filter_at_its_bound() {
         });
 
         let factors = line_meet_factors([a, b, c3, d3, e2, f3]);
-        let k6 = ExactWithin::new([box_of(&[a, b, c3]), box_of(&[d3, e2, f3])]);
+        let k6 = ew([box_of(&[a, b, c3]), box_of(&[d3, e2, f3])]);
         let cr = |[ux, uy, vx, vy]: [f64; 4]| ux * vy - uy * vx;
         let [g0, g1, g2, g3] = factors.map(factor_differences);
         let s = cr(g0) * cr(g1) + cr(g2) * cr(g3);
@@ -741,24 +746,24 @@ fn as_value_of(o: Orientation) -> f64 {
 fn semi_static_bounds_and_their_ranges() {
     let p = Point::new;
     let unit = (p(0.0, 0.0), p(1.0, 1.0));
-    let k = ExactWithin::new([unit, unit]);
+    let k = ew([unit, unit]);
     assert!(k.two > 0.0 && k.two < 1e-15 && k.four > 0.0 && k.four < 1e-13);
     // The side is the union's: a far box widens it.
-    let far = ExactWithin::new([unit, (p(3.0, 0.0), p(4.0, 1.0))]);
+    let far = ew([unit, (p(3.0, 0.0), p(4.0, 1.0))]);
     assert!(far.two > 15.0 * k.two && far.four > 200.0 * k.four);
     let d = ExactWithin::default();
     assert!(d.two == f64::INFINITY && d.four == f64::INFINITY);
     // A box that holds a non-finite point has a non-finite corner on that side.
     for bad in [f64::NAN, f64::INFINITY] {
-        let b = ExactWithin::new([unit, (p(0.0, 0.0), p(bad, 1.0))]);
+        let b = ew([unit, (p(0.0, 0.0), p(bad, 1.0))]);
         assert!(b.two == f64::INFINITY && b.four == f64::INFINITY, "{bad}");
-        let b = ExactWithin::new([(p(-bad, 0.0), p(1.0, 1.0)), unit]);
+        let b = ew([(p(-bad, 0.0), p(1.0, 1.0)), unit]);
         assert!(b.two == f64::INFINITY && b.four == f64::INFINITY, "{bad}");
-        let b = ExactWithin::new([unit, (p(0.0, -bad), p(1.0, bad))]);
+        let b = ew([unit, (p(0.0, -bad), p(1.0, bad))]);
         assert!(b.two == f64::INFINITY && b.four == f64::INFINITY, "{bad}");
     }
     // Side 2^510: P = 2^1020 is the last valid two-product bound; degree 4 stops at 2^125.
-    let side = |s: f64| ExactWithin::new([(p(0.0, 0.0), p(s, s)), (p(0.0, 0.0), p(s, s))]);
+    let side = |s: f64| ew([(p(0.0, 0.0), p(s, s)), (p(0.0, 0.0), p(s, s))]);
     assert!(side(2f64.powi(510)).two.is_finite());
     assert_eq!(side(2f64.powi(510).next_up()).two, f64::INFINITY);
     assert!(side(2f64.powi(125)).four.is_finite());
@@ -770,11 +775,11 @@ fn semi_static_bounds_and_their_ranges() {
     assert_eq!(side(0.0).two, 2.0 * f64::MIN_POSITIVE);
     // On a one-point box every orientation is collinear; the kernel still says so.
     let o = p(3.0, 3.0);
-    let k = ExactWithin::new([(o, o), (o, o)]);
+    let k = ew([(o, o), (o, o)]);
     assert_eq!(k.orient(o, o, o), Orientation::Collinear);
     // A huge and a tiny box together: the filter steps aside, the answer is exact.
     let (h, t) = (p(1e300, -1e300), p(1e-300, 3e-300));
-    let k = ExactWithin::new([(h, h), (p(0.0, 0.0), t)]);
+    let k = ew([(h, h), (p(0.0, 0.0), t)]);
     assert_eq!(k.two, f64::INFINITY);
     assert_eq!(k.orient(h, t, p(0.0, 0.0)), Exact.orient(h, t, p(0.0, 0.0)));
 }
@@ -864,7 +869,7 @@ fn degree_four_inline_filter_refuses_underflow() {
     // 2^600 · 2^-1100 − 2^-255 · 2^-255 > 0.
     assert_eq!(exact_products(factors), Sign::Positive);
     let b = (o, p(h, h));
-    let k = ExactWithin::new([b, b]);
+    let k = ew([b, b]);
     assert_eq!(k.four, f64::INFINITY);
     assert_eq!(k.cross_products_sign(factors), Sign::Positive);
     assert_eq!(Exact.cross_products_sign(factors), Sign::Positive);
@@ -905,7 +910,7 @@ fn short_edges_cross_at_its_bound() {
             continue;
         }
         let boxes = [(-corner, corner), box_of(&[a, b, c, d])];
-        let kw = ExactWithin::new(boxes);
+        let kw = ew(boxes);
         let want = sign_slow(&CrossPoly(a, b, c, d));
         let got = kw.cross_of_short_edges(a, b, c, d);
         assert_eq!(Sign::of(as_value_of(got)), want, "{a:?} {b:?} {c:?} {d:?}");
@@ -930,7 +935,7 @@ fn short_edges_cross_at_its_bound() {
     let m = f64::MAX;
     let (a, b) = (Point::new(-m, 0.0), Point::new(m, 1e-300));
     let (c, d) = (Point::new(0.0, 0.0), Point::new(1e-300, 0.0));
-    let kw = ExactWithin::new([(a, b), (c, d)]);
+    let kw = ew([(a, b), (c, d)]);
     assert_eq!(kw.two, f64::INFINITY);
     let want = sign_slow(&CrossPoly(a, b, c, d));
     assert_eq!(Sign::of(as_value_of(kw.cross_of_short_edges(a, b, c, d))), want);
@@ -989,7 +994,7 @@ fn edge_differences_bound_decides_edges() {
         } else {
             undecided += 1;
         }
-        let kb = ExactWithin::new([box_of(&[a, b]), box_of(&[c, d])]);
+        let kb = ew([box_of(&[a, b]), box_of(&[c, d])]);
         if l - r > kb.two || l - r < kb.neg_two {
             boxes_decided += 1;
         }
@@ -1135,7 +1140,7 @@ fn short_edges_cross_products_at_its_bound() {
             [v0, v1, c0, c1],
             [u0, u1, a, u0],
         ];
-        let kw = ExactWithin::new([(-corner, corner), box_of(&[a, c0, c1, u0, u1, v0, v1])]);
+        let kw = ew([(-corner, corner), box_of(&[a, c0, c1, u0, u1, v0, v1])]);
         let want = exact_products(factors);
         let got = kw.cross_products_sign_of_short_edges(factors);
         assert_eq!(got, want, "{factors:?}");

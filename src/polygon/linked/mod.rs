@@ -34,7 +34,7 @@ mod edits;
 pub(super) mod sampling;
 
 use super::{ConvexPolygon, EditError, PolygonError};
-use crate::kernel::Point;
+use crate::kernel::{BoundingBox, Point};
 use rand::Rng;
 use slab::Slab;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -291,6 +291,28 @@ impl LinkedPolygon {
     /// Never: [`first`](Self::first) is always a live vertex.
     pub fn iter(&self) -> impl Iterator<Item = (VertexId, Point)> + '_ {
         self.iter_from(self.first()).expect("the first vertex is live")
+    }
+
+    /// The axis-aligned bounding box. O(n): one pass over the arena in storage order
+    /// (sequential reads, no link chasing); the polygon keeps none, since every edit
+    /// would have to maintain it. A [`Scene`](crate::store::Scene) keeps one per polygon
+    /// ([`Scene::bounding_box`](crate::store::Scene::bounding_box), O(1)).
+    ///
+    /// ```
+    /// use polysect::{LinkedPolygon, Point};
+    /// let p = LinkedPolygon::from_points([[0.0, 1.0], [2.0, 0.0], [3.0, 4.0]])?;
+    /// let b = p.bounding_box();
+    /// assert_eq!((b.min, b.max), (Point::new(0.0, 0.0), Point::new(3.0, 4.0)));
+    /// # Ok::<(), polysect::PolygonError>(())
+    /// ```
+    pub fn bounding_box(&self) -> BoundingBox {
+        // At least three vertices live, so the arena is never empty.
+        let first = self.nodes[0].point;
+        let mut b = BoundingBox::new(first, first);
+        for node in &self.nodes[1..] {
+            b.grow(node.point);
+        }
+        b
     }
 
     /// An estimate in [0, 1] of how far the arena's storage order is from boundary order:
