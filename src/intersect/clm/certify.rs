@@ -2,11 +2,12 @@
 //! (module docs of [`super`], "Certificate").
 
 use super::quads::{Quad, sample_quads};
-use super::{ClmWorkspace, Set};
-use crate::intersect::certificate::{
-    Cone, Radon, WitnessVertex, cone_witness, from_support, in_triangles, resolve_linked_chords,
-    straddle_certificate, supports_left, supports_right, witness_certificate,
+use super::witness::{
+    Cone, Radon, WitnessVertex, cone_witness, in_triangles, resolve_linked_chords, straddle_certificate,
+    witness_certificate,
 };
+use super::{ClmWorkspace, Set};
+use crate::intersect::certificate::{from_support, supports_left, supports_right};
 use crate::intersect::{ArrayIntersection, Barba, Certificate, Derivation, Which};
 use crate::kernel::{Kernel, Orientation, Point};
 use crate::lp::WitnessPoint;

@@ -123,7 +123,7 @@
 //!   search and the chord walk below in nearly every query that needed them, which
 //!   at 2^16 cost about three times the plain query (docs/certificates.md). Else
 //!   the points the LP examined (a few dozen) are searched without building a hull
-//!   ([`cone_witness`](super::certificate::cone_witness)): before the violating point
+//!   ([`cone_witness`](witness::cone_witness)): before the violating point
 //!   x the LP's line separated them, so seen from x its own set spans less than a
 //!   half-turn, and a point of the other set in that cone lies in the triangle of x
 //!   and the cone's two extreme points (one or two orientations per point, three for a
@@ -179,6 +179,7 @@ mod quads;
 mod query;
 mod sampling;
 mod walks;
+mod witness;
 
 use super::linked::LinkedIntersection;
 use super::{Derivation, Probe, Which};

@@ -1,10 +1,15 @@
 use super::ordering::{OrderScratch, boundary_order};
 use super::sampling::{below, fisher_yates, shuffle};
 use super::{Clm, ClmWorkspace};
-use crate::LinkedPolygon;
 use crate::generate::{self, Family, Relation, pair};
-use crate::intersect::{Derivation, LinkedIntersection, verify_linked};
-use crate::kernel::{Exact, Fast, Point};
+use crate::intersect::clm::witness::{
+    Cone, Radon, WitnessVertex, cone_witness, end_in_triangle, in_triangles, resolve_linked_chords,
+    straddle_certificate, witness_certificate,
+};
+use crate::intersect::{Certificate, Derivation, LinkedIntersection, Which, verify_linked};
+use crate::kernel::{Exact, Fast, Point, SegmentContact, segment_contact};
+use crate::lp::WitnessPoint;
+use crate::LinkedPolygon;
 use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};
 
@@ -289,4 +294,334 @@ fn fisher_yates_draws_distinct_positions_and_restores_its_array() {
     }
     // Every position is drawn (200 single draws over 10 positions).
     assert!(hits.iter().all(|&h| h > 0), "{hits:?}");
+}
+
+// The witness code (witness.rs).
+
+/// A witness point at (x, y) of polygon `of`, at arena position `pos`.
+fn w(x: f64, y: f64, of: Which, pos: usize) -> WitnessVertex {
+    WitnessVertex {
+        point: Point::new(x, y),
+        of,
+        pos: Some(pos),
+    }
+}
+
+fn positions_in_order(lp: &LinkedPolygon) -> Vec<usize> {
+    let mut at = lp.position(lp.first()).unwrap();
+    (0..lp.len())
+        .map(|_| {
+            let here = at;
+            at = lp.next_at(at);
+            here
+        })
+        .collect()
+}
+
+/// Chords of crossing polygons resolved by walks on linked polygons, with the walks'
+/// starts chosen by `f64` distances: at ordinary scale, where those distances
+/// overflow (2^1000: every one is infinite or NaN) and where they underflow to zero
+/// (2^-1000), so that the exact check and the fallback to the chord's own end are
+/// used. Every certificate found verifies, and chords that meet always give one.
+#[test]
+fn linked_chords_resolve_at_every_scale() {
+    use crate::generate::{Family, Relation, map_pair, pair};
+    use rand::SeedableRng;
+    let mut rng = rand::rngs::SmallRng::seed_from_u64(0x11c4);
+    let scales = [1.0, 2f64.powi(1000), 2f64.powi(-1000)];
+    let mut resolved = [0; 3];
+    for round in 0..6 {
+        let base = pair(Family::Rotated, 40 + 7 * round, Relation::Intersecting, &mut rng);
+        for (&scale, resolved) in scales.iter().zip(&mut resolved) {
+            let Some((p, q)) = map_pair(&base, |v| Point::new(v.x * scale, v.y * scale)) else {
+                continue;
+            };
+            let lp = LinkedPolygon::from_convex_shuffled(&p, &mut rng);
+            let lq = LinkedPolygon::from_convex_shuffled(&q, &mut rng);
+            let (op, oq) = (positions_in_order(&lp), positions_in_order(&lq));
+            // Every fifth vertex serves as a walk's possible start.
+            let starts = |lp: &LinkedPolygon, o: &[usize]| -> (Vec<u32>, Vec<Point>) {
+                o.iter().step_by(5).map(|&i| (i as u32, lp.point_at(i))).unzip()
+            };
+            let (sp, sq) = (starts(&lp, &op), starts(&lq, &oq));
+            for i in (0..op.len()).step_by(2) {
+                for j in (0..oq.len()).step_by(2) {
+                    let a = (op[i], op[(i + 7) % op.len()]);
+                    let b = (oq[j], oq[(j + 9) % oq.len()]);
+                    let meets = segment_contact(
+                        Exact,
+                        lp.point_at(a.0),
+                        lp.point_at(a.1),
+                        lq.point_at(b.0),
+                        lq.point_at(b.1),
+                    )
+                    .meets();
+                    let c = resolve_linked_chords(Exact, &lp, a, (&sp.0, &sp.1), &lq, b, (&sq.0, &sq.1));
+                    assert_eq!(c.is_some(), meets, "scale {scale}, chords {a:?} {b:?}");
+                    if let Some(c) = c {
+                        assert_eq!(verify_linked(&lp, &lq, &c), Ok(()), "scale {scale}: {c:?}");
+                        *resolved += 1;
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        resolved.iter().all(|&r| r > 20),
+        "chords resolved per scale: {resolved:?}"
+    );
+}
+
+/// The LP's witness points: a vertex inside (on a vertex, on an edge, strictly
+/// inside), repeats, and crossing segments with no vertex inside.
+#[test]
+fn witness_points_give_a_vertex_inside_or_chords() {
+    let (p, q) = (Which::P, Which::Q);
+    // A point of P on an edge of Q's triangle (touching), repeated.
+    let pts = [
+        w(1., 0., p, 0),
+        w(1., 0., p, 0),
+        w(5., 5., p, 1),
+        w(0., 0., q, 2),
+        w(2., 0., q, 3),
+        w(0., 2., q, 4),
+    ];
+    match witness_certificate(Exact, pts.into_iter()) {
+        Radon::Inside(Certificate::VertexInside { of, point }) => {
+            assert_eq!((of, point), (Which::P, Point::new(1., 0.)));
+        }
+        _ => panic!("expected a vertex inside"),
+    }
+    // A vertex of Q strictly inside P's triangle, P's points listed after Q's.
+    let pts = [
+        w(1., 1., q, 0),
+        w(9., 9., q, 1),
+        w(0., 0., p, 2),
+        w(4., 0., p, 3),
+        w(0., 4., p, 4),
+    ];
+    assert!(matches!(
+        witness_certificate(Exact, pts.into_iter()),
+        Radon::Inside(Certificate::VertexInside { of: Which::Q, .. })
+    ));
+    // Two crossing segments, no vertex inside: the chords with their positions.
+    let pts = [
+        w(-1., 0., p, 7),
+        w(1., 0., p, 8),
+        w(0., -1., q, 5),
+        w(0., 1., q, 6),
+    ];
+    match witness_certificate(Exact, pts.into_iter()) {
+        Radon::Chords(a, b) => {
+            let (mut a, mut b) = (a.map(Option::unwrap), b.map(Option::unwrap));
+            a.sort_unstable();
+            b.sort_unstable();
+            assert_eq!((a, b), ([7, 8], [5, 6]));
+        }
+        _ => panic!("expected crossing chords"),
+    }
+    // Apart: nothing.
+    let pts = [w(0., 0., p, 0), w(1., 0., p, 1), w(5., 5., q, 2), w(6., 5., q, 3)];
+    assert!(matches!(
+        witness_certificate(Exact, pts.into_iter()),
+        Radon::Nothing
+    ));
+    // A one-ulp gap between a vertex of P and Q's edge: no contact.
+    let below = -f64::from_bits(1);
+    let pts = [
+        w(1., below, p, 0),
+        w(1., -3., p, 1),
+        w(0., 0., q, 2),
+        w(2., 0., q, 3),
+        w(1., 2., q, 4),
+    ];
+    assert!(matches!(
+        witness_certificate(Exact, pts.into_iter()),
+        Radon::Nothing
+    ));
+}
+
+#[test]
+fn last_step_witnesses_give_a_vertex_inside_or_chords() {
+    let (p, q) = (Which::P, Which::Q);
+    let tri = [w(0., 0., q, 0), w(4., 0., q, 1), w(0., 4., q, 2)];
+    // x on the triangle's edge (touching): a vertex inside.
+    match straddle_certificate(Exact, [w(2., 2., p, 5), w(9., 9., p, 6)], tri) {
+        Radon::Inside(Certificate::VertexInside { of, point }) => {
+            assert_eq!((of, point), (Which::P, Point::new(2., 2.)));
+        }
+        _ => panic!("expected a vertex inside"),
+    }
+    // x one ulp beyond that edge: the segment from x crosses the triangle's edges.
+    let beyond = 2f64 + f64::EPSILON * 2.0;
+    match straddle_certificate(Exact, [w(beyond, 2., p, 5), w(-1., 1., p, 6)], tri) {
+        Radon::Chords(a, b) => {
+            assert_eq!(a, [Some(5), Some(6)]);
+            assert!(b.iter().all(Option::is_some));
+        }
+        _ => panic!("expected crossing chords"),
+    }
+    // y₀ equal to a bound: segment against segment, touching at a vertex.
+    let seg = [w(0., 0., q, 0), w(4., 0., q, 1), w(4., 0., q, 1)];
+    match straddle_certificate(Exact, [w(2., 0., p, 5), w(2., 3., p, 6)], seg) {
+        Radon::Inside(Certificate::VertexInside { of, point }) => {
+            assert_eq!((of, point), (Which::P, Point::new(2., 0.)));
+        }
+        _ => panic!("expected a vertex inside"),
+    }
+    // ... and crossing properly; extreme coordinates are carried exactly.
+    let big = f64::MAX / 4.0;
+    let seg = [w(-big, 0., q, 0), w(big, 0., q, 1), w(big, 0., q, 1)];
+    assert!(matches!(
+        straddle_certificate(Exact, [w(0., big, p, 5), w(1., -big, p, 6)], seg),
+        Radon::Chords(..)
+    ));
+    // The mixed case: y in a triangle of the other polygon, boundary included, and
+    // not one ulp outside it; degenerate triangles are skipped.
+    let tiny = f64::from_bits(1);
+    let tri = [w(0., 0., p, 0), w(4. * tiny, 0., p, 1), w(0., 4. * tiny, p, 2)];
+    let line = [w(0., 0., p, 0), w(1., 1., p, 1), w(2., 2., p, 2)];
+    assert_eq!(
+        in_triangles(Exact, w(2. * tiny, 2. * tiny, q, 9), &[line, tri]),
+        Some(Certificate::VertexInside {
+            of: Which::Q,
+            point: Point::new(2. * tiny, 2. * tiny)
+        })
+    );
+    assert_eq!(
+        in_triangles(Exact, w(3. * tiny, 2. * tiny, q, 9), &[line, tri]),
+        None
+    );
+    // A repeated vertex (the LP's bound equal to its previous tangent point) is
+    // skipped by comparing points, even for y at that vertex; the next triangle
+    // still counts, here with y one ulp inside its hypotenuse's end.
+    let repeated = [w(0., 0., p, 0), w(4. * tiny, 0., p, 1), w(4. * tiny, 0., p, 1)];
+    assert_eq!(in_triangles(Exact, w(4. * tiny, 0., q, 9), &[repeated]), None);
+    assert_eq!(
+        in_triangles(Exact, w(3. * tiny, tiny, q, 9), &[repeated, tri]),
+        Some(Certificate::VertexInside {
+            of: Which::Q,
+            point: Point::new(3. * tiny, tiny)
+        })
+    );
+    assert_eq!(
+        in_triangles(Exact, w(3. * tiny, 2. * tiny, q, 9), &[repeated, tri]),
+        None
+    );
+}
+
+/// The cone search on hand-made examined sets (A's points, then B's, the violating
+/// point x of A last): a point of B in the cone's triangle (inside, and exactly on
+/// its side), none when it is one ulp outside, x in a triangle of B's points, and
+/// two crossing segments when B's hull only crosses the triangle.
+#[test]
+fn cone_witness_finds_points_in_the_triangle_or_crossing_segments() {
+    let a = |x: f64, y: f64, i: usize| WitnessPoint {
+        point: Point::new(x, y),
+        in_b: false,
+        index: Some(i),
+    };
+    let b = |x: f64, y: f64, i: usize| WitnessPoint {
+        point: Point::new(x, y),
+        in_b: true,
+        index: Some(i),
+    };
+    let x = a(0.0, 2.0, 3);
+    let own = [a(-2.0, 0.0, 0), a(2.0, 0.0, 1), a(0.0, -1.0, 2)];
+    let of = |in_b: bool| if in_b { Which::Q } else { Which::P };
+    let run = |others: &[WitnessPoint], chords: bool| {
+        let pts: Vec<WitnessPoint> = own.iter().chain(others).chain([&x]).copied().collect();
+        cone_witness(Exact, x, || pts.clone().into_iter(), of, chords)
+    };
+    let inside = |c: Cone| match c {
+        Cone::Inside(Certificate::VertexInside { of, point }) => Some((of, point)),
+        _ => None,
+    };
+    // Strictly inside, and on the side x → (2, 0) (the line x + y = 2).
+    assert_eq!(
+        inside(run(&[b(5.0, 5.0, 0), b(0.0, 1.0, 1)], false)),
+        Some((Which::Q, Point::new(0.0, 1.0)))
+    );
+    assert_eq!(
+        inside(run(&[b(5.0, 5.0, 0), b(1.0, 1.0, 1)], false)),
+        Some((Which::Q, Point::new(1.0, 1.0)))
+    );
+    // One ulp beyond that side: not inside, and no segment asked for.
+    let up = f64::from_bits(1f64.to_bits() + 1);
+    assert!(matches!(
+        run(&[b(5.0, 5.0, 0), b(1.0, up, 1)], false),
+        Cone::Nothing
+    ));
+    // x in the triangle of B's points, none of which is in the cone's triangle.
+    assert_eq!(
+        inside(run(&[b(-1.0, 1.9, 0), b(1.0, 1.9, 1), b(0.0, 3.0, 2)], false)),
+        Some((Which::P, Point::new(0.0, 2.0)))
+    );
+    // B's segment y = 1.5 crosses the triangle: two crossing segments.
+    match run(&[b(-1.0, 1.5, 0), b(1.0, 1.5, 1)], true) {
+        Cone::Chords([s, e], [u, v]) => {
+            assert_eq!(s, x);
+            assert!(!s.in_b && !e.in_b && u.in_b && v.in_b);
+            assert_eq!(
+                segment_contact(Exact, s.point, e.point, u.point, v.point),
+                SegmentContact::Crossing
+            );
+        }
+        _ => panic!("no crossing segments"),
+    }
+    // x's own set seen as one point (repeated): no cone, and B's point on the segment
+    // from x to it is not taken for inside; x itself in B's triangle still is.
+    let single = [a(2.0, 0.0, 0), a(2.0, 0.0, 1)];
+    let run1 = |others: &[WitnessPoint]| {
+        let pts: Vec<WitnessPoint> = single.iter().chain(others).chain([&x]).copied().collect();
+        cone_witness(Exact, x, || pts.clone().into_iter(), of, false)
+    };
+    assert!(matches!(run1(&[b(1.0, 1.0, 0), b(5.0, 5.0, 1)]), Cone::Nothing));
+    assert_eq!(
+        inside(run1(&[b(-1.0, 1.9, 0), b(1.0, 1.9, 1), b(0.0, 3.0, 2)])),
+        Some((Which::P, Point::new(0.0, 2.0)))
+    );
+}
+
+/// An end of an edge crossing a chord in the triangle of the chord and the farthest
+/// point on its side: strictly inside, exactly on a side, and none when the only
+/// point on that side makes a triangle that misses it by one ulp.
+#[test]
+fn end_in_triangle_is_exact() {
+    let pt = Point::new;
+    let (s, t) = (pt(0.0, 0.0), pt(4.0, 0.0));
+    let edge = (pt(2.0, -0.5), pt(2.5, 0.5));
+    assert_eq!(
+        end_in_triangle(Exact, edge, (s, t), &[pt(1.0, 1.0), pt(2.0, 3.0), pt(9.0, -9.0)]),
+        Some(pt(2.0, -0.5))
+    );
+    // Only a point above the chord: the end above it.
+    let w = pt(2.5, 3.0);
+    assert_eq!(end_in_triangle(Exact, edge, (s, t), &[w]), Some(pt(2.5, 0.5)));
+    // On the side s–w of the triangle s, t, w with w = (5, 1): (2.5, 0.5) is on it.
+    assert_eq!(
+        end_in_triangle(Exact, edge, (s, t), &[pt(5.0, 1.0)]),
+        Some(pt(2.5, 0.5))
+    );
+    // One ulp above that side: outside.
+    let above = pt(2.5, f64::from_bits(0.5f64.to_bits() + 1));
+    assert_eq!(
+        end_in_triangle(Exact, (edge.0, above), (s, t), &[pt(5.0, 1.0)]),
+        None
+    );
+    assert_eq!(end_in_triangle(Exact, edge, (s, t), &[]), None);
+    // 32 points: every other one is tried first. Near the chord's line (heights
+    // 2^-40 above it), none of those makes a triangle holding the end (2.5, 0.5),
+    // but the one between them (index 1) does: found by the pass over all.
+    let low = 2f64.powi(-40);
+    let mut many: Vec<Point> = (0..32).map(|i| pt(f64::from(i) * 0.1, low)).collect();
+    many[1] = pt(2.5, 3.0);
+    assert_eq!(end_in_triangle(Exact, edge, (s, t), &many), Some(pt(2.5, 0.5)));
+    // The same point at index 2 is among the first tried; one ulp outside the
+    // triangle s, t, (5, 1) the end is outside with every point tried.
+    many.swap(1, 2);
+    assert_eq!(end_in_triangle(Exact, edge, (s, t), &many), Some(pt(2.5, 0.5)));
+    many[2] = pt(5.0, 1.0);
+    assert_eq!(end_in_triangle(Exact, edge, (s, t), &many), Some(pt(2.5, 0.5)));
+    assert_eq!(end_in_triangle(Exact, (edge.0, above), (s, t), &many), None);
 }
