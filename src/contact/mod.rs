@@ -85,6 +85,7 @@
 
 mod construct;
 mod overlap;
+mod search;
 mod walk;
 
 pub use walk::Feature;
@@ -182,13 +183,23 @@ pub fn separation_with<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygo
     }
 }
 
+/// Below this many vertices in all, the distance walks D whole instead of searching it.
+const LINEAR_BELOW: usize = 24;
+
 /// The separation of two polygons the kernel found disjoint. When the kernel's walk
 /// certifies no feature (a misjudging kernel), the exact kernel decides again, and
 /// when they do meet after all, their exact separation is the touching point's
 /// (distance 0).
 fn separation_of<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Separation {
     let (pv, qv) = (p.vertices(), q.vertices());
-    let feature = walk::nearest_feature(kernel, pv, qv)
+    // Small pairs: the whole walk costs less than the search's setup.
+    let searched = if pv.len() + qv.len() > LINEAR_BELOW {
+        search::nearest_feature(kernel, pv, qv)
+    } else {
+        None
+    };
+    let feature = searched
+        .or_else(|| walk::nearest_feature(kernel, pv, qv))
         .or_else(|| walk::nearest_feature(Exact, pv, qv))
         .or_else(|| touching_feature(pv, qv));
     match feature {
@@ -248,3 +259,6 @@ fn penetration_of<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) ->
     let (edge, of_q) = deepest_edge(kernel, pv, qv);
     construct::penetration(edge, of_q, overlap::overlap(p, q))
 }
+
+#[cfg(test)]
+mod tests;

@@ -75,12 +75,29 @@ pub(crate) fn walk<K: Kernel, B>(
     kernel: K,
     p: &[Point],
     q: &[Point],
+    visit: impl FnMut(Feature) -> ControlFlow<B>,
+) -> Option<B> {
+    walk_from(kernel, p, q, (highest(p), lowest(q)), usize::MAX, visit)
+}
+
+/// [`walk`] from the D-vertex `q_j − p_i` (`start = (i, j)`), for at most `vertices`
+/// vertices (and the edges after them), and never more than once around. The start
+/// must be a vertex of D (`p_i` and `q_j` extreme in opposite directions for a common
+/// direction) for the features visited to be D's; the tests of the features do not
+/// depend on it.
+pub(crate) fn walk_from<K: Kernel, B>(
+    kernel: K,
+    p: &[Point],
+    q: &[Point],
+    (mut i, mut j): (usize, usize),
+    vertices: usize,
     mut visit: impl FnMut(Feature) -> ControlFlow<B>,
 ) -> Option<B> {
     let (n, m) = (p.len(), q.len());
-    let (mut i, mut j) = (highest(p), lowest(q));
     let (mut done_p, mut done_q) = (0, 0);
-    while done_p < n || done_q < m {
+    let mut count = 0;
+    while (done_p < n || done_q < m) && count < vertices {
+        count += 1;
         if let ControlFlow::Break(b) = visit(Feature::Vertices { p: i, q: j }) {
             return Some(b);
         }
