@@ -61,6 +61,7 @@
 
 #[cfg(all(feature = "serde", feature = "protocol"))]
 pub mod certificate_json;
+pub mod contact;
 pub mod crossings;
 // The measurements behind `polysect bench`: the tool's, not an API to build on.
 #[doc(hidden)]

@@ -27,10 +27,12 @@ mod bbox;
 pub mod exact;
 #[cfg(feature = "serde")]
 mod point_serde;
+pub mod rational;
 mod segment;
 
 pub use bbox::BoundingBox;
 pub use exact::{Exact, ExactWithin};
+pub use rational::Rational;
 pub use segment::{SegmentContact, point_on_segment, segment_contact, segments_intersect};
 
 use std::cmp::Ordering;

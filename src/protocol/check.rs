@@ -46,7 +46,7 @@ pub(crate) fn parse_pair<R: Read, W: Write>(ch: &mut Channel<R, W>) -> Result<Pa
 }
 
 /// Validates both lists as convex polygons; errors name the polygon (`p` or `q`).
-fn convex_pair(pair: PairLine) -> Result<(ConvexPolygon, ConvexPolygon), String> {
+pub(crate) fn convex_pair(pair: PairLine) -> Result<(ConvexPolygon, ConvexPolygon), String> {
     let (p, q) = pair.lists()?;
     // Each list is validated and dropped before the next, so only one raw list and one
     // polygon under construction are alive at a time.

@@ -1,5 +1,6 @@
 //! The line protocols of the command line, in the library so they are unit-tested and
 //! fuzzed: [`check`] (`polysect check` and `polysect crossings`: two polygons per line),
+//! [`contact`] (`polysect contact`: distance or depth and overlap per line),
 //! [`hull`] (`polysect hull`: a point set per line) and [`scene`] (`polysect scene`: a session of edits and queries). The binary only
 //! wires standard input and output to them.
 //!
@@ -33,6 +34,7 @@
 //! answered in large writes.
 
 pub mod check;
+pub mod contact;
 pub mod hull;
 mod json;
 mod line;

@@ -91,7 +91,7 @@ impl SceneSession<Exact> {
 /// The object every line should be, for messages.
 const SHAPE: &str = r#"{"op": ..., ...}"#;
 
-const OPS: &str = "add, drop, insert, remove, move, translate, intersects, pairs, vertices";
+const OPS: &str = "add, drop, insert, remove, move, translate, intersects, contact, pairs, vertices";
 
 const KEYS: [&str; 10] = [
     "op", "name", "points", "after", "point", "vertex", "to", "by", "a", "b",
@@ -384,6 +384,11 @@ impl<K: Kernel> SceneSession<K> {
                 let b = l.b.ok_or_else(|| need("b"))?;
                 self.intersects(&a, &b)
             }
+            "contact" => {
+                let a = l.a.ok_or_else(|| need("a"))?;
+                let b = l.b.ok_or_else(|| need("b"))?;
+                self.contact(&a, &b)
+            }
             "pairs" => {
                 // Answered by `write_pairs` as the pairs are found.
                 let mut out = Vec::new();
@@ -474,6 +479,16 @@ impl<K: Kernel> SceneSession<K> {
             .intersects(ia, ib)
             .map_err(|e| format!("internal error: {e}"))?;
         Ok(format!("\"intersects\": {hit}"))
+    }
+
+    /// The `contact` reply: as a `polysect contact` line for the two polygons (`a` is P).
+    fn contact(&mut self, a: &str, b: &str) -> Result<String, String> {
+        let (ia, ib) = (self.named(a)?.id, self.named(b)?.id);
+        let contact = self
+            .scene
+            .contact(ia, ib)
+            .map_err(|e| format!("internal error: {e}"))?;
+        Ok(super::contact::contact_json(&contact))
     }
 
     /// Writes `"pairs": [...]` as the pairs are found: names in each pair in string

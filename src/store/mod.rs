@@ -71,6 +71,7 @@
 //! in input order (pairs sorted by id), independent of the thread count.
 
 mod broad;
+mod contact;
 mod cost;
 #[cfg(feature = "geo-types")]
 mod interop;

@@ -59,7 +59,7 @@ pub(crate) enum Command {
         certificate: bool,
     },
     /// Drive one scene of editable polygons with JSON Lines operations
-    /// ({"op": "add"|"drop"|"insert"|"remove"|"move"|"translate"|"intersects"|"pairs"|"vertices", ...}),
+    /// ({"op": "add"|"drop"|"insert"|"remove"|"move"|"translate"|"intersects"|"contact"|"pairs"|"vertices", ...}),
     /// one reply line per input line.
     Scene {
         /// Input file (JSON Lines); standard input when absent or "-".
@@ -77,6 +77,18 @@ pub(crate) enum Command {
         /// system when absent.
         #[arg(long)]
         seed: Option<u64>,
+    },
+    /// Contact geometry of convex polygons, for JSON Lines pairs {"p": [[x,y],...], "q":
+    /// [...]}: {"intersects": false, "distance": D, "closest": [[x,y],[x,y]]} or
+    /// {"intersects": true, "depth": D, "normal": [nx,ny], "overlap": [[x,y],...], "area": A}
+    /// per line, every number correctly rounded (null when it overflows).
+    Contact {
+        /// Input file (JSON Lines); standard input when absent or "-".
+        file: Option<String>,
+        /// Kernel of the decisions: exact or fast (constructed numbers are always
+        /// correctly rounded from exact values).
+        #[arg(long, default_value = "exact", value_parser = parse_precision)]
+        precision: Precision,
     },
     /// Report where the boundaries of simple polygons meet, for JSON Lines pairs
     /// {"p": [[x,y],...], "q": [...]}: writes {"points": [[x,y],...]} per line (a shared

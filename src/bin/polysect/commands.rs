@@ -4,6 +4,7 @@
 use crate::demo;
 use crate::failure::Failure;
 use crate::streams::{open_input, output};
+use polysect::contact::contact_with;
 use polysect::crossings::{CrossingAlgorithm, CrossingOptions};
 use polysect::experiments::{self, Config, Experiment, ThesisConfig};
 use polysect::generate::Family;
@@ -86,6 +87,14 @@ pub(crate) fn crossings(
     protocol::check::crossings(open_input(file)?, output(), |p, q| {
         algorithm.run_with_options(precision, p, q, options)
     })
+}
+
+pub(crate) fn contact(file: Option<&str>, precision: Precision) -> io::Result<()> {
+    let input = open_input(file)?;
+    match precision {
+        Precision::Exact => protocol::contact::contact(input, output(), |p, q| contact_with(Exact, p, q)),
+        Precision::Fast => protocol::contact::contact(input, output(), |p, q| contact_with(Fast, p, q)),
+    }
 }
 
 pub(crate) fn list() -> io::Result<()> {

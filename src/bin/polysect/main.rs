@@ -5,7 +5,7 @@
 
 use crate::args::{Cli, Command, ProtocolArg};
 use crate::commands::{
-    bench, bench_thesis, calibrate, check, crossings, demo_command, list, render, scene, serve,
+    bench, bench_thesis, calibrate, check, contact, crossings, demo_command, list, render, scene, serve,
 };
 use crate::failure::Failure;
 use crate::generated::{gen_pairs, gen_simple};
@@ -72,6 +72,9 @@ fn main() -> ExitCode {
             CrossingOptions { touching },
         )
         .map_err(Failure::Io),
+        Some(Command::Contact { file, precision }) => {
+            contact(file.as_deref(), precision).map_err(Failure::Io)
+        }
         Some(Command::Hull { file, algorithm }) => open_input(file.as_deref())
             .and_then(|input| protocol::hull::hull(input, output(), algorithm))
             .map_err(Failure::Io),

@@ -1,6 +1,7 @@
 use super::ordering::{OrderScratch, boundary_order};
 use super::sampling::{below, fisher_yates, shuffle};
 use super::{Clm, ClmWorkspace};
+use crate::LinkedPolygon;
 use crate::generate::{self, Family, Relation, pair};
 use crate::intersect::clm::witness::{
     Cone, Radon, WitnessVertex, cone_witness, end_in_triangle, in_triangles, resolve_linked_chords,
@@ -9,7 +10,6 @@ use crate::intersect::clm::witness::{
 use crate::intersect::{Certificate, Derivation, LinkedIntersection, Which, verify_linked};
 use crate::kernel::{Exact, Fast, Point, SegmentContact, segment_contact};
 use crate::lp::WitnessPoint;
-use crate::LinkedPolygon;
 use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};
 

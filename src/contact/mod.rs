@@ -1,0 +1,264 @@
+//! Contact geometry of two convex polygons: how far apart (distance and a closest pair)
+//! or how deep (penetration depth, its normal, the overlap polygon P ∩ Q and its area),
+//! exactly, every constructed number correctly rounded.
+//!
+//! ```
+//! use polysect::contact::{Contact, contact};
+//! use polysect::ConvexPolygon;
+//! let p = ConvexPolygon::new([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+//! let q = ConvexPolygon::new([[5.0, 1.0], [6.0, 0.0], [6.0, 3.0]])?;
+//! let Contact::Separated(s) = contact(&p, &q) else { unreachable!() };
+//! assert_eq!(s.distance, Some(3.0));
+//! assert_eq!(s.closest, [[2.0, 1.0].into(), [5.0, 1.0].into()]);
+//!
+//! let r = ConvexPolygon::new([[1.0, 1.0], [3.0, 1.0], [3.0, 3.0], [1.0, 3.0]])?;
+//! let Contact::Overlapping(o) = contact(&p, &r) else { unreachable!() };
+//! assert_eq!((o.depth, o.area), (Some(1.0), Some(1.0)));
+//! assert_eq!(o.overlap, [[1.0, 1.0].into(), [2.0, 1.0].into(), [2.0, 2.0].into(), [1.0, 2.0].into()]);
+//! # Ok::<(), polysect::PolygonError>(())
+//! ```
+//!
+//! # Algorithm
+//! Everything is read off the Minkowski difference D = Q ⊕ (−P), whose points are the
+//! differences `y − x` of points `x ∈ P`, `y ∈ Q`: the polygons meet iff the origin lies
+//! in D, their distance is the origin's distance to D, and the penetration depth (the
+//! length of the shortest translation of Q after which they only touch) is the origin's
+//! distance to D's boundary. D is never built: its boundary is walked in O(n + m) by
+//! merging the edge directions of Q and −P (`walk`), and every question about a feature
+//! of D is a predicate on input points.
+//! * **Distance** (disjoint): the walk stops at the first feature of D whose exact test
+//!   certifies it as nearest the origin: a vertex of one polygon outside an edge of the
+//!   other, projecting onto it, and deepest across it (the D-edge supports D and the
+//!   origin lies beyond it), or two vertices each in the other's normal cone. The
+//!   certificate is a handful of orientations and dot products, so a misjudging kernel
+//!   cannot produce a wrong closest pair silently: when no feature passes, the exact
+//!   kernel walks again.
+//! * **Depth and normal** (meeting): for convex polygons the shortest separating
+//!   translation is along one of the edge normals of either polygon, and its length
+//!   along edge e is how deep the other polygon's deepest vertex lies across e's line
+//!   (its D-edge's distance from the origin). The walk pairs every edge with that
+//!   vertex; the candidates `o²/|e|²` (`o` the cross product that measures the depth)
+//!   are compared exactly as rationals, through the kernel's sign of
+//!   `o₁²·|e₂|² − o₂²·|e₁|²`.
+//! * **Overlap**: the chords that each edge of one polygon cuts from the other, found
+//!   by the O(log n) segment queries, give every vertex of P ∩ Q as an exact rational
+//!   point; their exact convex hull, without collinear vertices, is P ∩ Q (`overlap`).
+//!   The area is the exact shoelace sum over it.
+//!
+//! Whether they meet is decided first by the O(log n) [`Barba`] test under the same
+//! kernel.
+//!
+//! # Complexity
+//! For n and m vertices: distance O(log n + log m) for the test that they are disjoint
+//! plus O(n + m) predicates for the walk (it stops at the nearest feature: on average
+//! half the boundary); depth O(n + m) predicates of degree 6 in the input; overlap
+//! O((n + m) log(n + m)) predicates and exact arithmetic on at most 2(n + m) rational
+//! points (denominators grow with the number of edge crossings, which is small for
+//! ordinary pairs and up to 2·min(n, m)). Linked polygons are converted to arrays
+//! first (O(n + m)).
+//!
+//! # Degeneracies
+//! * **Touching** (a shared vertex, a vertex on an edge, a shared edge portion) is
+//!   meeting: depth 0, area 0, the overlap one point or two (a touching segment), and
+//!   the normal a unit direction along which every move of Q separates them (the normal
+//!   of an edge whose line passes through the touching point, with the other polygon
+//!   on its outer side).
+//! * **Parallel closest edges**: any closest pair on them is a valid answer; the walk
+//!   returns the first certified feature from D's lowest vertex, deterministic for a
+//!   given input.
+//! * **Containment** either way: the depth is the inner polygon's escape along the
+//!   best edge normal, the overlap the inner polygon.
+//! * Tied depth directions: the first minimum in the walk's order.
+//!
+//! # Precision
+//! Decisions (disjoint or not, which feature is nearest, which depth candidate is
+//! smallest) are the kernel's: exact under [`Exact`], possibly wrong under [`Fast`] on
+//! nearly degenerate input. Constructed values are exact [`Rational`]s rounded once:
+//! squared distance, squared depth and twice the area are rationals; the distance and
+//! the depth are the correctly rounded square roots of the first two; closest points,
+//! overlap vertices and the normal's components (each `±√(c²/|e|²)`) correctly rounded
+//! (the double nearest the exact value, ties to even). A distance, depth or area whose
+//! rounding overflows is `None`.
+//!
+//! [`Fast`]: crate::Fast
+//! [`Barba`]: crate::intersect::Barba
+
+mod construct;
+mod overlap;
+mod search;
+mod walk;
+
+pub use walk::Feature;
+
+use crate::intersect::{ArrayIntersection, Barba};
+use crate::kernel::{Exact, Kernel, Point, Rational, Sign};
+use crate::polygon::{ConvexPolygon, LinkedPolygon};
+use construct::DepthOrder;
+use std::ops::ControlFlow;
+
+/// How two disjoint polygons are apart.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Separation {
+    /// The squared distance, exactly.
+    pub squared_distance: Rational,
+    /// The distance, correctly rounded; `None` when that overflows.
+    pub distance: Option<f64>,
+    /// A closest pair, first on P then on Q, each coordinate correctly rounded.
+    pub closest: [Point; 2],
+    /// The same pair exactly (`[x, y]` of P's point, then of Q's).
+    pub closest_exact: [[Rational; 2]; 2],
+    /// The feature of the Minkowski difference the pair comes from.
+    pub feature: Feature,
+}
+
+/// How two meeting polygons overlap.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Penetration {
+    /// The squared penetration depth, exactly.
+    pub squared_depth: Rational,
+    /// The penetration depth (the length of the shortest translation of Q after which
+    /// the two only touch), correctly rounded; `None` when that overflows.
+    pub depth: Option<f64>,
+    /// That translation's unit direction, each component correctly rounded; for depth
+    /// 0 a direction along which every move of Q separates them.
+    pub normal: [f64; 2],
+    /// P ∩ Q: counter-clockwise, without collinear vertices, each vertex correctly
+    /// rounded, a point repeated after rounding dropped, starting from the lowest (then
+    /// leftmost) rounded point.
+    pub overlap: Vec<Point>,
+    /// Twice the area of P ∩ Q, exactly.
+    pub twice_area: Rational,
+    /// The area of P ∩ Q, correctly rounded; `None` when that overflows.
+    pub area: Option<f64>,
+    /// P ∩ Q exactly, counter-clockwise (any start vertex).
+    pub overlap_exact: Vec<[Rational; 2]>,
+}
+
+/// The contact of two convex polygons: apart, or overlapping (touching included).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Contact {
+    /// They do not meet.
+    Separated(Separation),
+    /// They meet (closed sets: touching counts).
+    Overlapping(Penetration),
+}
+
+impl Contact {
+    /// Whether the polygons meet.
+    pub fn intersects(&self) -> bool {
+        matches!(self, Contact::Overlapping(_))
+    }
+}
+
+/// [`contact_with`] under the exact kernel.
+pub fn contact(p: &ConvexPolygon, q: &ConvexPolygon) -> Contact {
+    contact_with(Exact, p, q)
+}
+
+/// The contact of `p` and `q`, decisions by `kernel` (module docs: algorithm,
+/// complexity, degeneracies, precision).
+pub fn contact_with<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Contact {
+    if Barba.intersects_with(kernel, p, q) {
+        Contact::Overlapping(penetration_of(kernel, p, q))
+    } else {
+        Contact::Separated(separation_of(kernel, p, q))
+    }
+}
+
+/// [`contact_with`] for linked polygons (converted to arrays, O(n + m)).
+pub fn contact_linked_with<K: Kernel>(kernel: K, p: &LinkedPolygon, q: &LinkedPolygon) -> Contact {
+    contact_with(kernel, &p.to_convex(), &q.to_convex())
+}
+
+/// [`contact_linked_with`] under the exact kernel.
+pub fn contact_linked(p: &LinkedPolygon, q: &LinkedPolygon) -> Contact {
+    contact_linked_with(Exact, p, q)
+}
+
+/// The distance and a closest pair of `p` and `q`, or `None` when they meet.
+pub fn separation_with<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Option<Separation> {
+    match contact_with(kernel, p, q) {
+        Contact::Separated(s) => Some(s),
+        Contact::Overlapping(_) => None,
+    }
+}
+
+/// Below this many vertices in all, the distance walks D whole instead of searching it.
+const LINEAR_BELOW: usize = 24;
+
+/// The separation of two polygons the kernel found disjoint. When the kernel's walk
+/// certifies no feature (a misjudging kernel), the exact kernel decides again, and
+/// when they do meet after all, their exact separation is the touching point's
+/// (distance 0).
+fn separation_of<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Separation {
+    let (pv, qv) = (p.vertices(), q.vertices());
+    // Small pairs: the whole walk costs less than the search's setup.
+    let searched = if pv.len() + qv.len() > LINEAR_BELOW {
+        search::nearest_feature(kernel, pv, qv)
+    } else {
+        None
+    };
+    let feature = searched
+        .or_else(|| walk::nearest_feature(kernel, pv, qv))
+        .or_else(|| walk::nearest_feature(Exact, pv, qv))
+        .or_else(|| touching_feature(pv, qv));
+    match feature {
+        Some(f) => construct::separation(pv, qv, f),
+        // Only reachable when the polygons overlap properly but the kernel said
+        // disjoint: report the first vertex pair at its exact distance.
+        None => construct::separation(pv, qv, Feature::Vertices { p: 0, q: 0 }),
+    }
+}
+
+/// A feature of D through the origin, when the polygons only touch.
+fn touching_feature(p: &[Point], q: &[Point]) -> Option<Feature> {
+    walk::walk(Exact, p, q, |f| {
+        let on = match construct::edge_and_vertex(p, q, f) {
+            Some([a, b, v]) => {
+                Exact.orient(a, b, v) == crate::kernel::Orientation::Collinear
+                    && Exact.dot(a, b, a, v) != Sign::Negative
+                    && Exact.dot(b, a, b, v) != Sign::Negative
+            }
+            None => match f {
+                Feature::Vertices { p: i, q: j } => p[i] == q[j],
+                _ => false,
+            },
+        };
+        if on {
+            ControlFlow::Break(f)
+        } else {
+            ControlFlow::Continue(())
+        }
+    })
+}
+
+/// The D-edge nearest the origin among all of D's edges (each paired by the walk with
+/// its deepest vertex), by exact comparison of the candidates' squared depths: the edge
+/// and vertex `[a, b, v]`, and whether the edge is Q's.
+fn deepest_edge<K: Kernel>(kernel: K, p: &[Point], q: &[Point]) -> ([Point; 3], bool) {
+    let mut best: Option<([Point; 3], bool)> = None;
+    walk::walk::<K, ()>(kernel, p, q, |f| {
+        if let Some(c) = construct::edge_and_vertex(p, q, f) {
+            let better = match best {
+                None => true,
+                Some((b, _)) => kernel.sign(&DepthOrder(c, b)) == Sign::Negative,
+            };
+            if better {
+                best = Some((c, matches!(f, Feature::EdgeOfQ { .. })));
+            }
+        }
+        ControlFlow::Continue(())
+    });
+    // The walk visits n + m ≥ 6 edges, so `best` is set.
+    best.unwrap_or(([p[0], p[1], q[0]], false))
+}
+
+/// The penetration of two polygons the kernel found meeting.
+fn penetration_of<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Penetration {
+    let (pv, qv) = (p.vertices(), q.vertices());
+    let (edge, of_q) = deepest_edge(kernel, pv, qv);
+    construct::penetration(edge, of_q, overlap::overlap(p, q))
+}
+
+#[cfg(test)]
+mod tests;
