@@ -274,14 +274,14 @@ pub struct ClmVariant {
     /// Who randomises the LPs' order.
     pub lp_order: LpOrder,
     /// Whether the two chain-against-chain LPs (step 5's second LP) are decided by
-    /// [`separate_chains`], a walk along both chains in their order, instead of the LP
+    /// [`separate_chains`](crate::lp::separate_chains), a walk along both chains in their order, instead of the LP
     /// (the default; the LP still runs when the walk gives no answer, and for the
     /// witness of a certified query whose chains intersect).
     pub chain_walk: bool,
     /// Whether the samples are put in boundary order (sorted by
     /// angle about their lowest point, exactly) so that the three LPs on a sample — the
     /// samples against each other and each against the other polygon's first chain —
-    /// are [`separate_chains`] walks too (the default). Then no LP input is in random
+    /// are [`separate_chains`](crate::lp::separate_chains) walks too (the default). Then no LP input is in random
     /// order: chains are not shuffled, and an LP that still runs (a walk without an
     /// answer, a certified query's witness) shuffles its points itself.
     pub sample_walk: bool,
