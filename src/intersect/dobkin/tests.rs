@@ -1,7 +1,7 @@
 use super::engine::*;
-use super::witness::*;
 use super::*;
 use crate::Exact;
+use crate::Point;
 
 fn poly(pts: &[[f64; 2]]) -> ConvexPolygon {
     ConvexPolygon::new(pts.iter().copied()).unwrap()
