@@ -1,8 +1,9 @@
 use super::engine::*;
-use super::witness::*;
 use super::*;
 use crate::Point;
 use crate::intersect::{Iterations, Linear, brute_force};
+use crate::kernel::Orientation::Cw;
+use crate::kernel::Sign;
 use crate::{Exact, Fast};
 
 fn poly(pts: &[[f64; 2]]) -> ConvexPolygon {
