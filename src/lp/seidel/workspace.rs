@@ -20,24 +20,24 @@ pub struct WitnessPoint {
     pub index: Option<usize>,
 }
 
-/// Scratch memory for [`separating_line`]: the points, copied once and shuffled in place
+/// Scratch memory for [`separating_line`](super::separating_line): the points, copied once and shuffled in place
 /// (24 bytes per point). Reuse it across
 /// calls so the LP allocates nothing in the steady state.
 #[derive(Clone, Debug, Default)]
 pub struct LpWorkspace {
     pub(super) items: Vec<Item>,
-    /// Whether [`Separation::Intersecting`] answers record their witness.
+    /// Whether [`Separation::Intersecting`](super::Separation::Intersecting) answers record their witness.
     pub(super) record: bool,
     /// Whether the caller has put the points in random order already
     /// ([`keep_order`](Self::keep_order)).
     pub(super) keep_order: bool,
-    /// The witness of the last recorded [`Separation::Intersecting`] answer.
+    /// The witness of the last recorded [`Separation::Intersecting`](super::Separation::Intersecting) answer.
     pub(super) witness: Witness,
     /// Constraints examined (violation tests and one-dimensional steps) since creation:
     /// the LP's work, for experiments.
     pub work: u64,
-    /// Calls whose result failed certification and was recomputed with [`Exact`]. Only an
-    /// inconsistent kernel causes this; under [`Exact`] it stays 0 (the tests check).
+    /// Calls whose result failed certification and was recomputed with [`Exact`](crate::Exact). Only an
+    /// inconsistent kernel causes this; under [`Exact`](crate::Exact) it stays 0 (the tests check).
     pub redone: u64,
 }
 
@@ -47,7 +47,7 @@ impl LpWorkspace {
         Self::default()
     }
 
-    /// Whether answers [`Separation::Intersecting`] record their witness
+    /// Whether answers [`Separation::Intersecting`](super::Separation::Intersecting) record their witness
     /// ([`witness`](Self::witness), [`examined`](Self::examined)). Off by default: a
     /// recorded witness costs a few stores per intersecting answer.
     pub fn record_witness(&mut self, on: bool) {
@@ -67,7 +67,7 @@ impl LpWorkspace {
         self.keep_order = on;
     }
 
-    /// After an answer [`Separation::Intersecting`] (recorded, see
+    /// After an answer [`Separation::Intersecting`](super::Separation::Intersecting) (recorded, see
     /// [`record_witness`](Self::record_witness)): at most nine points of A and B
     /// whose hulls already intersect (CH(A′) ∩ CH(B′) ≠ ∅), so that a constant-size
     /// search finds a point of one set in the other's hull or two crossing segments.
@@ -87,7 +87,7 @@ impl LpWorkspace {
 
     /// Drops the recorded witness: [`witness_points`](Self::witness_points) and
     /// [`examined`](Self::examined) are empty until the next recorded answer
-    /// [`Separation::Intersecting`]. For a caller that learned of intersecting hulls
+    /// [`Separation::Intersecting`](super::Separation::Intersecting). For a caller that learned of intersecting hulls
     /// elsewhere (a walk along convex chains) and must not read an older LP's witness.
     pub fn forget_witness(&mut self) {
         self.witness.len = 0;
@@ -100,7 +100,7 @@ impl LpWorkspace {
         &self.witness.points[..self.witness.len]
     }
 
-    /// After an answer [`Separation::Intersecting`] (recorded) found where the point p
+    /// After an answer [`Separation::Intersecting`](super::Separation::Intersecting) (recorded) found where the point p
     /// that made the LP infeasible failed on two points b and c of the other set: five
     /// points whose hulls already intersect, `[p, p₀, b, c, q₀]`, where p₀ is a₀ if p
     /// is of A (else b₀) and q₀ the other. The two points bound the one-dimensional
@@ -127,7 +127,7 @@ impl LpWorkspace {
         })
     }
 
-    /// After an answer [`Separation::Intersecting`] (recorded) found where the point p
+    /// After an answer [`Separation::Intersecting`](super::Separation::Intersecting) (recorded) found where the point p
     /// that made the LP infeasible failed on one point y of the other set and one
     /// point x of its own (a mixed pair of bounds, both on one side of p in x′):
     /// `[y, p, x, t, p₀]`, where t is the previous optimum's tangent point in p's set
@@ -152,7 +152,7 @@ impl LpWorkspace {
         })
     }
 
-    /// After an answer [`Separation::Intersecting`] found by the incremental loop: every
+    /// After an answer [`Separation::Intersecting`](super::Separation::Intersecting) found by the incremental loop: every
     /// point it had examined (a few dozen, usually), whose hulls intersect; a superset
     /// of [`witness`](Self::witness) that more often holds a point of one set inside
     /// the other's hull. Empty when the answer came from elsewhere.
