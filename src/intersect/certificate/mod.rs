@@ -60,13 +60,13 @@ mod verify;
 #[cfg(test)]
 mod tests;
 
+pub(crate) use crate::polygon::Boundary;
 pub(crate) use chords::{
     Reduced, crossing, edge_between, endpoint_on_other, reduce_chord, resolve_chords, resolve_crossing_chords,
 };
 pub(crate) use separation::{
     extreme_left, from_faces, from_support, same_direction, separates, supports_left, supports_right, turn_gt,
 };
-pub(crate) use verify::Boundary;
 pub use verify::{verify, verify_linked};
 
 use crate::kernel::{Orientation, Point};
