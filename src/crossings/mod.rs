@@ -48,6 +48,7 @@ mod sweep;
 mod tree;
 
 pub use brute::Brute;
+#[cfg(feature = "cli")]
 pub(crate) use lists::every_candidate;
 pub use lists::{ListSweep, ListWork, ListWorkspace};
 pub use point::crossing_point;
