@@ -49,7 +49,7 @@ use num_traits::Zero;
 /// fraction of crossings of ordinary inputs (a coordinate would have to fall within
 /// about 2⁻⁴¹ ulp of a rounding midpoint); exact ties, extremely ill-conditioned
 /// crossings (nearly parallel edges at angles below about 2⁻⁵⁶) and the cases above
-/// take the exact path, about 2 µs. Ties are not rare in structured input: a
+/// take the exact path, out of line. Ties are not rare in structured input: a
 /// crossing of an edge with a copy of a neighbouring edge shifted by some offset
 /// lies halfway between the two, so half of its coordinates can be exact ties (a
 /// third of the crossings of some zigzag pairs in the tests and benchmarks).

@@ -18,7 +18,7 @@ use crate::polygon::SimplePolygon;
 /// vain. With k = n + m vertices and L = ⌈log₂ k⌉, the budget of the lists is
 /// B = `LIST_BUDGET` · k · L units, one unit per candidate and
 /// `PAIR_COST` per segment test, which is about what the
-/// tree costs (measured: 35 to 90 units per vertex and level).
+/// tree costs (docs/results.md, "Crossings").
 ///
 /// W depends only on the order of the events, so one pass over the sorted vertices
 /// counts it exactly in O(k) before any pair is tested. When W > B

@@ -37,7 +37,7 @@ impl<'a> Chain<'a> {
 
     /// [`at`](Chain::at) by reference, for [`Kernel::orient_of`]. (The index is
     /// computed in both bodies on purpose: a shared helper changed the pruning loop's
-    /// code, +0.5% exact instructions at 2^10.)
+    /// code and its instruction count; docs/results.md.)
     #[inline]
     pub(super) fn at_ref(&self, i: usize) -> &'a Point {
         let len = self.pts.len();

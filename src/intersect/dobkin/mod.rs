@@ -42,7 +42,7 @@
 //!    [`DobkinVariant<true>`] tests each rule and its symmetric version by its own
 //!    `if` (the thesis's Code 3.1 form) and also cuts the other chain where its median
 //!    edge reaches past the new end of I: same predicates, closed tests and
-//!    certificates, 7.5–9.8% more instructions per query (docs/results.md).
+//!    certificates, more instructions per query (docs/results.md).
 //! 5. **Height test.** Every end of I is the height of a vertex w of one of the
 //!    chains (both ranges always cover I and every cut is at a vertex), so "is
 //!    `x_L ≤ x_R` at that height" is one `orient` of w against the other chain's
