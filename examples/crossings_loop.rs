@@ -26,7 +26,7 @@
 //! ```
 
 use geo::algorithm::sweep::{Cross, Intersections};
-use polysect::crossings::lists::ListWorkspace;
+use polysect::crossings::ListWorkspace;
 use polysect::crossings::{Brute, Crossings, ListSweep, Sweep, SweepWorkspace, TreeSweep};
 use polysect::experiments::crossings::{division_brute, division_sweep};
 use polysect::generate::hard::{HardFamily, hard_pair};

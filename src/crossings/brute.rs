@@ -1,19 +1,17 @@
-//! [`Brute`]: every edge of P against every edge of Q, the reference for [`Sweep`](super::Sweep).
-//!
-//! # Complexity
-//! Exactly n·m pair tests for polygons of n and m vertices (each a bounding-box
-//! rejection and, when the boxes meet, [`segment_contact`](crate::kernel::segment_contact)),
-//! then O(c log c) to sort the c reported points. Memory O(c).
-//!
-//! # Degeneracies and precision
-//! As for the [module](super): touchings and overlap ends are input vertices,
-//! crossings are constructed by [`crossing_point`](super::crossing_point).
-
 use super::{CrossingOptions, Crossings, edge_pair_points, sort_dedup};
 use crate::kernel::{Kernel, Point};
 use crate::polygon::SimplePolygon;
 
-/// The O(n·m) all-pairs algorithm; see the [module docs](self).
+/// [`Brute`]: every edge of P against every edge of Q, the reference for [`Sweep`](super::Sweep).
+///
+/// # Complexity
+/// Exactly n·m pair tests for polygons of n and m vertices (each a bounding-box
+/// rejection and, when the boxes meet, [`segment_contact`](crate::kernel::segment_contact)),
+/// then O(c log c) to sort the c reported points. Memory O(c).
+///
+/// # Degeneracies and precision
+/// As for the [module](super): touchings and overlap ends are input vertices,
+/// crossings are constructed by [`crossing_point`](super::crossing_point).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Brute;
 

@@ -1,57 +1,55 @@
-//! [`ListSweep`]: Žalik's sweep line with two lists of pierced edges (the crossings report).
-//!
-//! # Algorithm
-//! The n + m vertices of both polygons are the events, sorted lexicographically:
-//! by x, then by y (so a vertical edge starts at its lower end and no two
-//! neighbours of a vertex tie with it). Each polygon has a list of its edges
-//! currently pierced by the sweep line. At a vertex v with neighbours u (previous)
-//! and w (next) in its polygon:
-//!
-//! * rule A: u > v and w > v (both edges start here): insert both edges;
-//! * rule B: u < v and w < v (both edges end here): remove both;
-//! * rules C and D: one neighbour before v, one after: insert the edge that starts
-//!   here, remove the one that ends here;
-//! * rule V (a neighbour on the same vertical line): covered by the y tie-break,
-//!   which makes the lower end the start, so it is rule A, B, C or D.
-//!
-//! Each inserted edge is tested against every edge in the **other** polygon's list
-//! (the polygons are simple, so an edge never meets a non-adjacent edge of its own
-//! polygon). All vertices at one point (at most one per polygon) form one event
-//! group: every insertion of the group happens before any removal. Since the points
-//! of a segment are lexicographically between its ends, two edges that meet have
-//! overlapping closed event ranges, and the one inserted later finds the other
-//! still listed, including when they only touch at the event point. That is what
-//! makes touchings, vertex-on-vertex contacts and overlaps come out complete.
-//!
-//! The lists are vectors with a position index per edge: insertion appends,
-//! removal swaps the last entry in (O(1), where the report's linked lists take O(r)).
-//! Each entry keeps its edge's y-range in a column of its own, and a candidate
-//! whose y-range misses the new edge's is skipped with two comparisons on 16
-//! contiguous bytes (x-ranges overlap by construction).
-//!
-//! # Complexity
-//! O((n + m) log(n + m)) to sort plus O(W) candidate checks, W = Σ r, r being the
-//! length of the other polygon's list at each insertion; worst case O(n·m) (every
-//! edge of P spanning the x-range of every edge of Q: zigzags, combs of long
-//! needles). On the report's random polygons r is a small fraction of n. Memory
-//! O(n + m). W depends only on the order of the vertices: [`Sweep`](super::Sweep)
-//! counts it in O(n + m) before testing any pair, to choose between this and
-//! [`TreeSweep`](super::TreeSweep) ([`ListSweep::work`] reports W with the number of
-//! pair tests).
-//!
-//! # Degeneracies and precision
-//! As for the module: predicates come from the caller's kernel, touchings and
-//! overlaps are reported as input vertices, crossings are constructed by
-//! [`crossing_point`](super::crossing_point). Under the exact kernel the result is
-//! identical to [`Brute`](super::Brute)'s.
-
 use super::events::{Input, sorted_events, standalone};
 use super::{CrossingOptions, Crossings, edge_pair_points};
 use crate::kernel::{Kernel, Point};
 use crate::polygon::SimplePolygon;
 use std::cmp::Ordering;
 
-/// Žalik's sweep with two unordered lists; see the [module docs](self).
+/// [`ListSweep`]: Žalik's sweep line with two lists of pierced edges (the crossings report).
+///
+/// # Algorithm
+/// The n + m vertices of both polygons are the events, sorted lexicographically:
+/// by x, then by y (so a vertical edge starts at its lower end and no two
+/// neighbours of a vertex tie with it). Each polygon has a list of its edges
+/// currently pierced by the sweep line. At a vertex v with neighbours u (previous)
+/// and w (next) in its polygon:
+///
+/// * rule A: u > v and w > v (both edges start here): insert both edges;
+/// * rule B: u < v and w < v (both edges end here): remove both;
+/// * rules C and D: one neighbour before v, one after: insert the edge that starts
+///   here, remove the one that ends here;
+/// * rule V (a neighbour on the same vertical line): covered by the y tie-break,
+///   which makes the lower end the start, so it is rule A, B, C or D.
+///
+/// Each inserted edge is tested against every edge in the **other** polygon's list
+/// (the polygons are simple, so an edge never meets a non-adjacent edge of its own
+/// polygon). All vertices at one point (at most one per polygon) form one event
+/// group: every insertion of the group happens before any removal. Since the points
+/// of a segment are lexicographically between its ends, two edges that meet have
+/// overlapping closed event ranges, and the one inserted later finds the other
+/// still listed, including when they only touch at the event point. That is what
+/// makes touchings, vertex-on-vertex contacts and overlaps come out complete.
+///
+/// The lists are vectors with a position index per edge: insertion appends,
+/// removal swaps the last entry in (O(1), where the report's linked lists take O(r)).
+/// Each entry keeps its edge's y-range in a column of its own, and a candidate
+/// whose y-range misses the new edge's is skipped with two comparisons on 16
+/// contiguous bytes (x-ranges overlap by construction).
+///
+/// # Complexity
+/// O((n + m) log(n + m)) to sort plus O(W) candidate checks, W = Σ r, r being the
+/// length of the other polygon's list at each insertion; worst case O(n·m) (every
+/// edge of P spanning the x-range of every edge of Q: zigzags, combs of long
+/// needles). On the report's random polygons r is a small fraction of n. Memory
+/// O(n + m). W depends only on the order of the vertices: [`Sweep`](super::Sweep)
+/// counts it in O(n + m) before testing any pair, to choose between this and
+/// [`TreeSweep`](super::TreeSweep) ([`ListSweep::work`] reports W with the number of
+/// pair tests).
+///
+/// # Degeneracies and precision
+/// As for the module: predicates come from the caller's kernel, touchings and
+/// overlaps are reported as input vertices, crossings are constructed by
+/// [`crossing_point`](super::crossing_point). Under the exact kernel the result is
+/// identical to [`Brute`](super::Brute)'s.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct ListSweep;
 
@@ -118,7 +116,7 @@ impl Crossings for ListSweep {
 
 /// The cost of a candidate whose y-range meets the new edge's (a segment test), in
 /// units of a skipped candidate.
-pub const PAIR_COST: u64 = 8;
+pub(crate) const PAIR_COST: u64 = 8;
 
 /// Runs the sweep over the sorted vertices, calling `pair` on every pair of a P edge
 /// and a Q edge whose y-ranges overlap while both are listed (each edge in its

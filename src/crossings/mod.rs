@@ -39,16 +39,18 @@
 //! orders its status with exact predicates whatever the kernel, so its cost bound
 //! holds for both).
 
-pub mod brute;
+mod brute;
 mod events;
-pub mod lists;
-pub mod point;
+mod lists;
+mod point;
 mod status;
-pub mod sweep;
-pub mod tree;
+mod sweep;
+mod tree;
 
 pub use brute::Brute;
-pub use lists::ListSweep;
+#[cfg(feature = "cli")]
+pub(crate) use lists::every_candidate;
+pub use lists::{ListSweep, ListWork, ListWorkspace};
 pub use point::crossing_point;
 pub use sweep::{Sweep, SweepWorkspace};
 pub use tree::TreeSweep;

@@ -1,43 +1,3 @@
-//! [`crossing_point`]: the intersection of two lines through input points, each
-//! coordinate correctly rounded (to nearest, ties to even) from its exact value.
-//!
-//! # Method
-//! For segments a→b and c→e the exact crossing is X = a + t·(b − a) with
-//! t = N / D, N = (c − a) × (e − c) and D = (b − a) × (e − c), so each coordinate is
-//! a quotient of two polynomials of degrees 3 and 2 in the inputs.
-//!
-//! 1. **Filter.** When a coordinate lies outside [2⁻²⁰⁰, 2²⁰⁰] the eight are first
-//!    scaled by a power of two so that the largest magnitude is in [½, 1) (exact).
-//!    In double-word arithmetic (pairs of `f64`, about 106 bits: error-free sums,
-//!    and products by fused multiply-add) the differences are exact, D and N carry an absolute error below 2⁻⁹⁶ times the sum of their two
-//!    products' magnitudes, t = N / D, the product t·(b − a) and the sum with a each
-//!    add a relative error below 2⁻⁹⁶ (the true constants are 5 to 21·2⁻¹⁰⁶; the bound
-//!    leaves a factor 16 to spare). That gives the computed coordinate h + l (double
-//!    word) and a bound E on its distance to the exact one. When the interval
-//!    [h + l − E, h + l + E] lies strictly between the two midpoints around h, the
-//!    exact value rounds to h, and h is returned.
-//! 2. **Exact fallback.** Otherwise (a coordinate within E of a midpoint, an exact
-//!    tie, a result that is zero or subnormal, coordinates of one pair spanning more
-//!    than 2²⁰⁰, or D and N too small for the filter's underflow-free range) the
-//!    numerator a·D + N·(b − a) and D are evaluated exactly on the inputs' dyadic
-//!    values with big integers ([`Dyadic`]) and their quotient is rounded by a big
-//!    integer division with a sticky remainder.
-//!
-//! Both paths return the same value, the rounded exact coordinate, so the point does
-//! not depend on which segment is parameterised, on their directions or on the
-//! order of the arguments; mirroring or scaling the input by a power of two mirrors
-//! or scales the output exactly (outside the subnormal range).
-//!
-//! # Cost
-//! The filter is a few dozen floating-point operations and decides all but a tiny
-//! fraction of crossings of ordinary inputs (a coordinate would have to fall within
-//! about 2⁻⁴¹ ulp of a rounding midpoint); exact ties, extremely ill-conditioned
-//! crossings (nearly parallel edges at angles below about 2⁻⁵⁶) and the cases above
-//! take the exact path, about 2 µs. Ties are not rare in structured input: a
-//! crossing of an edge with a copy of a neighbouring edge shifted by some offset
-//! lies halfway between the two, so half of its coordinates can be exact ties (a
-//! third of the crossings of some zigzag pairs in the tests and benchmarks).
-
 use crate::kernel::Point;
 use crate::kernel::Ring;
 use crate::kernel::exact::Dyadic;
@@ -54,7 +14,45 @@ use num_traits::Zero;
 /// points); when they are parallel (or a segment is a point), `p1` clamped the same
 /// way. The result is always finite when the input is; a non-finite coordinate gives `p1`.
 ///
-/// See the [module docs](self) for the method.
+/// [`crossing_point`]: the intersection of two lines through input points, each
+/// coordinate correctly rounded (to nearest, ties to even) from its exact value.
+///
+/// # Method
+/// For segments a→b and c→e the exact crossing is X = a + t·(b − a) with
+/// t = N / D, N = (c − a) × (e − c) and D = (b − a) × (e − c), so each coordinate is
+/// a quotient of two polynomials of degrees 3 and 2 in the inputs.
+///
+/// 1. **Filter.** When a coordinate lies outside [2⁻²⁰⁰, 2²⁰⁰] the eight are first
+///    scaled by a power of two so that the largest magnitude is in [½, 1) (exact).
+///    In double-word arithmetic (pairs of `f64`, about 106 bits: error-free sums,
+///    and products by fused multiply-add) the differences are exact, D and N carry an absolute error below 2⁻⁹⁶ times the sum of their two
+///    products' magnitudes, t = N / D, the product t·(b − a) and the sum with a each
+///    add a relative error below 2⁻⁹⁶ (the true constants are 5 to 21·2⁻¹⁰⁶; the bound
+///    leaves a factor 16 to spare). That gives the computed coordinate h + l (double
+///    word) and a bound E on its distance to the exact one. When the interval
+///    [h + l − E, h + l + E] lies strictly between the two midpoints around h, the
+///    exact value rounds to h, and h is returned.
+/// 2. **Exact fallback.** Otherwise (a coordinate within E of a midpoint, an exact
+///    tie, a result that is zero or subnormal, coordinates of one pair spanning more
+///    than 2²⁰⁰, or D and N too small for the filter's underflow-free range) the
+///    numerator a·D + N·(b − a) and D are evaluated exactly on the inputs' dyadic
+///    values with big integers ([`Dyadic`]) and their quotient is rounded by a big
+///    integer division with a sticky remainder.
+///
+/// Both paths return the same value, the rounded exact coordinate, so the point does
+/// not depend on which segment is parameterised, on their directions or on the
+/// order of the arguments; mirroring or scaling the input by a power of two mirrors
+/// or scales the output exactly (outside the subnormal range).
+///
+/// # Cost
+/// The filter is a few dozen floating-point operations and decides all but a tiny
+/// fraction of crossings of ordinary inputs (a coordinate would have to fall within
+/// about 2⁻⁴¹ ulp of a rounding midpoint); exact ties, extremely ill-conditioned
+/// crossings (nearly parallel edges at angles below about 2⁻⁵⁶) and the cases above
+/// take the exact path, out of line. Ties are not rare in structured input: a
+/// crossing of an edge with a copy of a neighbouring edge shifted by some offset
+/// lies halfway between the two, so half of its coordinates can be exact ties (a
+/// third of the crossings of some zigzag pairs in the tests and benchmarks).
 ///
 /// ```
 /// use polysect::crossings::crossing_point;

@@ -1,35 +1,3 @@
-//! [`Sweep`]: the default crossings algorithm. It sorts the vertices once, counts
-//! exactly how much work Žalik's lists would do, and runs [`ListSweep`] when that
-//! is small and [`TreeSweep`] otherwise.
-//!
-//! # The choice
-//! [`ListSweep`] tests each inserted edge against every edge of the other polygon
-//! pierced at that moment: W = Σ r candidates, r the other list's length at each
-//! insertion. A candidate costs a couple of comparisons on contiguous memory, or a
-//! segment test when its y-range meets the new edge's; [`TreeSweep`] costs
-//! O(log(n + m)) treap steps and orientation tests per vertex and tests no pair in
-//! vain. With k = n + m vertices and L = ⌈log₂ k⌉, the budget of the lists is
-//! B = [`LIST_BUDGET`] · k · L units, one unit per candidate and
-//! [`PAIR_COST`](super::lists::PAIR_COST) per segment test, which is about what the
-//! tree costs (measured: 35 to 90 units per vertex and level).
-//!
-//! W depends only on the order of the events, so one pass over the sorted vertices
-//! counts it exactly in O(k) before any pair is tested. When W > B
-//! the tree runs at once (zigzags, needle combs, every family whose lists grow with
-//! n). Otherwise the lists run, counting their units, and give up for the tree as
-//! soon as they exceed B (candidates whose y-ranges all overlap, as in needle combs
-//! of moderate size). Either way the total is O((k + c) log k) for c reported
-//! points: the lists never do more than B = O(k log k) units, and the tree is
-//! O((k + c) log k) on every input.
-//!
-//! # Complexity
-//! O((n + m + c) log(n + m)) time on every input (c reported points; expected over
-//! the tree's pseudo-random priorities), O(n + m) memory plus the output.
-//!
-//! # Degeneracies and precision
-//! Both sweeps report exactly the points of [`Brute`](super::Brute) under the exact
-//! kernel (they test pairs with the same function; see the [module docs](super)).
-
 use super::events::{Input, list_work, sorted_events};
 use super::lists::{self, ListSweep, ListWorkspace};
 use super::tree::{self, TreeSweep, TreeWorkspace};
@@ -37,12 +5,42 @@ use super::{CrossingOptions, Crossings, edge_pair_points, sort_dedup};
 use crate::kernel::{Kernel, Point};
 use crate::polygon::SimplePolygon;
 
-/// The default sweep; see the [module docs](self).
+/// [`Sweep`]: the default crossings algorithm. It sorts the vertices once, counts
+/// exactly how much work Žalik's lists would do, and runs [`ListSweep`] when that
+/// is small and [`TreeSweep`] otherwise.
+///
+/// # The choice
+/// [`ListSweep`] tests each inserted edge against every edge of the other polygon
+/// pierced at that moment: W = Σ r candidates, r the other list's length at each
+/// insertion. A candidate costs a couple of comparisons on contiguous memory, or a
+/// segment test when its y-range meets the new edge's; [`TreeSweep`] costs
+/// O(log(n + m)) treap steps and orientation tests per vertex and tests no pair in
+/// vain. With k = n + m vertices and L = ⌈log₂ k⌉, the budget of the lists is
+/// B = `LIST_BUDGET` · k · L units, one unit per candidate and
+/// `PAIR_COST` per segment test, which is about what the
+/// tree costs (docs/results.md, "Crossings").
+///
+/// W depends only on the order of the events, so one pass over the sorted vertices
+/// counts it exactly in O(k) before any pair is tested. When W > B
+/// the tree runs at once (zigzags, needle combs, every family whose lists grow with
+/// n). Otherwise the lists run, counting their units, and give up for the tree as
+/// soon as they exceed B (candidates whose y-ranges all overlap, as in needle combs
+/// of moderate size). Either way the total is O((k + c) log k) for c reported
+/// points: the lists never do more than B = O(k log k) units, and the tree is
+/// O((k + c) log k) on every input.
+///
+/// # Complexity
+/// O((n + m + c) log(n + m)) time on every input (c reported points; expected over
+/// the tree's pseudo-random priorities), O(n + m) memory plus the output.
+///
+/// # Degeneracies and precision
+/// Both sweeps report exactly the points of [`Brute`](super::Brute) under the exact
+/// kernel (they test pairs with the same function; see the [module docs](super)).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Sweep;
 
-/// The lists' budget in units per vertex and tree level (see the [module docs](self)).
-pub const LIST_BUDGET: u64 = 50;
+/// The lists' budget in units per vertex and tree level (see [`Sweep`]).
+pub(crate) const LIST_BUDGET: u64 = 50;
 
 /// Reusable scratch memory for [`Sweep::crossings_in`].
 #[derive(Clone, Debug, Default)]

@@ -1,76 +1,3 @@
-//! [`TreeSweep`]: a red–blue sweep over the vertices only, with one ordered status
-//! holding the pierced edges of both polygons, O((n + m + k) log(n + m)) on every input.
-//!
-//! # Why it works
-//! The edges of one simple polygon never cross each other, so along any vertical
-//! line the order of P's pierced edges never changes while they are pierced, and
-//! the same holds for Q's (the idea of Mantler and Snoeyink's red–blue sweep). Only
-//! a P edge and a Q edge can change order, and only where they meet. The status is
-//! one sequence of the pierced edges of both polygons in which:
-//!
-//! 1. the edges of each polygon are in their true bottom-to-top order;
-//! 2. every pair of a P edge and a Q edge that has not been reported yet is in the
-//!    order they had when the later of the two was inserted.
-//!
-//! So a pair that is out of order (listed below, lying above) has met since, and
-//! reporting it is output. Crossing points are never events and never compared:
-//! the sweep stops at the n + m vertices only, sorted lexicographically (x, then y),
-//! and repairs the order lazily, where it needs it: around the current vertex v.
-//!
-//! # One event
-//! Each pierced edge s = (a, b) (a < v ≤ b lexicographically) is classified against
-//! v by one exact orientation test: **below** v, **through** v (collinear; then v
-//! lies on s) or **above** v.
-//!
-//! 1. *Below against the rest.* Along P's edges the classes are sorted (below,
-//!    then through, then above), and so along Q's. Let x be the first P edge that is
-//!    not below and y the last Q edge that is below. If x is listed before y, every
-//!    P edge between them is not below and every Q edge between them is below, and
-//!    each pair (P edge listed before Q edge) in that stretch is out of order: it has
-//!    met. The stretch is reported pair by pair and rewritten as its Q edges
-//!    followed by its P edges, each polygon's order kept. (Or the same with the
-//!    colours exchanged; both cannot happen at once.) The work is proportional to
-//!    the pairs reported, plus O(log n) to find x and y.
-//! 2. *Through against above*, the same way.
-//! 3. Now the status is: below v, through v, above v. Every pair of a P edge and a Q
-//!    edge through v, counting the edges that start at v, meets at v and is reported.
-//!    The edges that end at v are removed; the edges that continue past v and those
-//!    that start at v are put back in the order of their directions (an exact
-//!    cross-product sign; collinear P and Q edges overlap and may go either way).
-//!
-//! Every pair that meets is reported: a pair that meets at a vertex of either is
-//! reported there in step 3 (both are pierced and go through it; this covers
-//! touchings and the first point of every overlap), and a pair that crosses
-//! properly at a point c that is no vertex is out of order at the next vertex where
-//! one of them ends (one goes through it, the other does not), and steps 1 and 2
-//! find every such pair. A reported pair always meets, so a pair is reported at
-//! most a constant number of times (an overlap at both its ends).
-//!
-//! # Complexity
-//! O((n + m) log(n + m)) expected for the sort and the status operations (a treap,
-//! `status.rs`), plus O(k log(n + m)) for the k reported pairs: k is at
-//! most eight times the number of reported points (a point is shared by at most four
-//! pairs, and a pair is reported at most twice). No pair of edges is ever tested
-//! in vain. Memory O(n + m). The bound holds for every input, including edges that
-//! all span one x-range, many vertices on one vertical line and long overlaps.
-//!
-//! # Degeneracies
-//! A vertical edge is pierced between its lower and its upper end (the events are
-//! sorted by x, then y) and goes through every vertex on it, so it meets what
-//! crosses it there in step 3 or is repaired at its upper end. Edges of P and Q on
-//! one line overlap from the later of their lower ends: both go through that
-//! vertex (step 3 reports them), keep one order while they overlap (they are in the
-//! same class at every vertex), and go through the end of the overlap too. Any
-//! number of vertices may share an x. A P vertex on a Q vertex is one event with
-//! up to four edges through it.
-//!
-//! # Precision
-//! The sweep's own decisions (classification against a vertex, the order of
-//! directions) are exact orientation signs on input points, taken with [`Exact`]
-//! whatever the caller's kernel: a status ordered by inconsistent signs would have
-//! no complexity bound. The caller's kernel decides only, through
-//! [`segment_contact`](crate::kernel::segment_contact), how each reported pair meets.
-
 use super::events::{Input, standalone};
 use super::status::Status;
 use super::{CrossingOptions, Crossings, edge_pair_points};
@@ -78,7 +5,78 @@ use crate::kernel::{Exact, Kernel, Orientation, Point};
 use crate::polygon::SimplePolygon;
 use std::cmp::Ordering;
 
-/// The ordered red–blue sweep; see the [module docs](self).
+/// [`TreeSweep`]: a red–blue sweep over the vertices only, with one ordered status
+/// holding the pierced edges of both polygons, O((n + m + k) log(n + m)) on every input.
+///
+/// # Why it works
+/// The edges of one simple polygon never cross each other, so along any vertical
+/// line the order of P's pierced edges never changes while they are pierced, and
+/// the same holds for Q's (the idea of Mantler and Snoeyink's red–blue sweep). Only
+/// a P edge and a Q edge can change order, and only where they meet. The status is
+/// one sequence of the pierced edges of both polygons in which:
+///
+/// 1. the edges of each polygon are in their true bottom-to-top order;
+/// 2. every pair of a P edge and a Q edge that has not been reported yet is in the
+///    order they had when the later of the two was inserted.
+///
+/// So a pair that is out of order (listed below, lying above) has met since, and
+/// reporting it is output. Crossing points are never events and never compared:
+/// the sweep stops at the n + m vertices only, sorted lexicographically (x, then y),
+/// and repairs the order lazily, where it needs it: around the current vertex v.
+///
+/// # One event
+/// Each pierced edge s = (a, b) (a < v ≤ b lexicographically) is classified against
+/// v by one exact orientation test: **below** v, **through** v (collinear; then v
+/// lies on s) or **above** v.
+///
+/// 1. *Below against the rest.* Along P's edges the classes are sorted (below,
+///    then through, then above), and so along Q's. Let x be the first P edge that is
+///    not below and y the last Q edge that is below. If x is listed before y, every
+///    P edge between them is not below and every Q edge between them is below, and
+///    each pair (P edge listed before Q edge) in that stretch is out of order: it has
+///    met. The stretch is reported pair by pair and rewritten as its Q edges
+///    followed by its P edges, each polygon's order kept. (Or the same with the
+///    colours exchanged; both cannot happen at once.) The work is proportional to
+///    the pairs reported, plus O(log n) to find x and y.
+/// 2. *Through against above*, the same way.
+/// 3. Now the status is: below v, through v, above v. Every pair of a P edge and a Q
+///    edge through v, counting the edges that start at v, meets at v and is reported.
+///    The edges that end at v are removed; the edges that continue past v and those
+///    that start at v are put back in the order of their directions (an exact
+///    cross-product sign; collinear P and Q edges overlap and may go either way).
+///
+/// Every pair that meets is reported: a pair that meets at a vertex of either is
+/// reported there in step 3 (both are pierced and go through it; this covers
+/// touchings and the first point of every overlap), and a pair that crosses
+/// properly at a point c that is no vertex is out of order at the next vertex where
+/// one of them ends (one goes through it, the other does not), and steps 1 and 2
+/// find every such pair. A reported pair always meets, so a pair is reported at
+/// most a constant number of times (an overlap at both its ends).
+///
+/// # Complexity
+/// O((n + m) log(n + m)) expected for the sort and the status operations (a treap,
+/// `status.rs`), plus O(k log(n + m)) for the k reported pairs: k is at
+/// most eight times the number of reported points (a point is shared by at most four
+/// pairs, and a pair is reported at most twice). No pair of edges is ever tested
+/// in vain. Memory O(n + m). The bound holds for every input, including edges that
+/// all span one x-range, many vertices on one vertical line and long overlaps.
+///
+/// # Degeneracies
+/// A vertical edge is pierced between its lower and its upper end (the events are
+/// sorted by x, then y) and goes through every vertex on it, so it meets what
+/// crosses it there in step 3 or is repaired at its upper end. Edges of P and Q on
+/// one line overlap from the later of their lower ends: both go through that
+/// vertex (step 3 reports them), keep one order while they overlap (they are in the
+/// same class at every vertex), and go through the end of the overlap too. Any
+/// number of vertices may share an x. A P vertex on a Q vertex is one event with
+/// up to four edges through it.
+///
+/// # Precision
+/// The sweep's own decisions (classification against a vertex, the order of
+/// directions) are exact orientation signs on input points, taken with [`Exact`]
+/// whatever the caller's kernel: a status ordered by inconsistent signs would have
+/// no complexity bound. The caller's kernel decides only, through
+/// [`segment_contact`](crate::kernel::segment_contact), how each reported pair meets.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct TreeSweep;
 

@@ -25,7 +25,7 @@ use super::measure::{median, time_per_query};
 use super::plot::{Chart, Series};
 use super::scaling::{draw, short_ns};
 use super::{Config, Csv, Report, ns};
-use crate::crossings::lists::{ListWorkspace, every_candidate};
+use crate::crossings::{ListWorkspace, every_candidate};
 
 use crate::crossings::{Brute, Crossings, ListSweep, Sweep, SweepWorkspace, crossing_point};
 use crate::generate::simple::{PointDistribution, SimpleMethod, random_simple_polygon};

@@ -16,7 +16,7 @@
 //! certificate that fails [`verify`](super::verify) (the CLI under `--precision fast`):
 //! they check it exactly and replace a failing one with [`exact_certificate`]'s.
 
-use super::certificate::{Certificate, Derivation, Which};
+use super::certificate::{Certificate, Complete, Derivation, Searches, Which};
 use super::{Fallback, Probe, barba, dobkin, linear};
 use crate::kernel::{Exact, Kernel, Orientation, Point, segment_contact};
 use crate::polygon::{ConvexPolygon, LinkedPolygon};
@@ -44,6 +44,13 @@ pub(crate) fn complete<K: Kernel, P: Probe>(
         probe.fallback(Fallback::Reference);
         exact_certificate_on(pv, qv)
     })
+}
+
+impl Complete for Searches {
+    #[inline]
+    fn complete<K: Kernel>(k: K, pv: &[Point], qv: &[Point], answer: bool) -> Certificate {
+        complete(k, pv, qv, Derivation::Answer(answer), &mut ())
+    }
 }
 
 /// [`complete`] for linked polygons: a certificate passes through unchanged, an answer

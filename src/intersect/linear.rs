@@ -27,10 +27,9 @@
 //! [`Kernel::within_differences`] of the longer [`ConvexPolygon::edge_extent`]: a
 //! semi-static error bound scaled to the longest edge, which decides the cross product
 //! of two short, nearly parallel edges where the bound scaled to the boxes (used for
-//! everything else) does not. With it the exact kernel costs 1.134 / 1.129 / 1.126×
-//! the fast one's instructions at n = 2^10 / 2^14 / 2^18 on random rotated ellipses
-//! (1.145 / 1.146 / 1.396 with the boxes' bound and the static filter inline;
-//! docs/results.md, "Chazelle–Dobkin and Linear, profiled again").
+//! everything else) does not. With it the exact kernel's overhead over the fast one
+//! stays the same at every size; with the boxes' bound it grows with n (docs/results.md,
+//! "Chazelle–Dobkin and Linear, profiled again").
 //! Under an inconsistent kernel ([`Fast`](crate::Fast) near degeneracies) each pointer
 //! advance is capped at m steps, so the test always terminates.
 
@@ -134,9 +133,8 @@ pub(crate) fn separating_certificate<K: Kernel, P: Probe>(
 /// Under the exact kernel `edges` is [`Kernel::within_differences`] of the longest
 /// edge: the walk stops where the two edges turn past each other, so its cross products
 /// are of two short, nearly parallel edges, whose value a bound scaled to the boxes
-/// (`k`'s) seldom exceeds once the polygons have many vertices (about 333,000 calls
-/// per query out of line on 2^18-gon ellipses, 1.83× the fast kernel's instructions;
-/// docs/results.md, "Chazelle–Dobkin and Linear, profiled again"). Scaled to the edges
+/// (`k`'s) seldom exceeds once the polygons have many vertices (then most calls go
+/// out of line; docs/results.md, "Chazelle–Dobkin and Linear, profiled again"). Scaled to the edges
 /// it decides them with the two comparisons the fast kernel makes against zero.
 fn separating_edge<K: Kernel, P: Probe>(
     k: K,

@@ -191,11 +191,20 @@ pub trait LinkedIntersection {
 /// use polysect::intersect::{Convert, LinkedIntersection};
 /// let p = LinkedPolygon::from_points([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
 /// let q = LinkedPolygon::from_points([[2.0, 2.0], [3.0, 2.0], [3.0, 3.0]])?;
-/// assert!(<Convert>::default().intersects(&p, &q)); // a shared vertex
+/// assert!(Convert::default().intersects(&p, &q)); // a shared vertex
 /// # Ok::<(), polysect::PolygonError>(())
 /// ```
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 pub struct Convert<A: ArrayIntersection = Barba>(pub A);
+
+/// [`Convert`] with its default array algorithm, [`Barba`]: the one `Default`, so that
+/// `Convert::default()` needs no type annotation (another algorithm: `Convert(Dobkin)`).
+impl Default for Convert {
+    #[inline]
+    fn default() -> Self {
+        Convert(Barba)
+    }
+}
 
 /// Reusable arrays for [`Convert`].
 #[derive(Clone, Debug, Default)]

@@ -46,9 +46,9 @@
 //! to four `dot`; no allocation, and the points the walk does not reach are never
 //! read: a stop certifies the whole sets by convexity. Galloping makes a phase
 //! O(log d) tries for an index d places from its tangent point; from a start near the
-//! answer (the caller's previous tangent points) a few phases do: on CLM's chains at
-//! 2^16 (about 270 points each) a call costs about 2,100 instructions, against about
-//! 13,000 for the same walk by unit steps and 53,000 for the LP. The moves are capped
+//! answer (the caller's previous tangent points) a few phases do: on CLM's chains a
+//! call costs a fraction of the same walk by unit steps and of the LP
+//! (docs/results.md). The moves are capped
 //! at 2(|A| + |B|) + 8: beyond
 //! that (or under a kernel that is not exact, when the final full check fails) the
 //! answer is `None` and the caller runs the LP, so the worst case stays linear plus

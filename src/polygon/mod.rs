@@ -19,6 +19,7 @@
 //! # Errors
 //! Invalid input is a [`PolygonError`] naming the input vertex index and what is wrong.
 
+mod boundary;
 pub mod calipers;
 mod convex;
 mod error;
@@ -29,6 +30,7 @@ mod linked;
 pub mod queries;
 mod simple;
 
+pub(crate) use boundary::Boundary;
 pub use convex::ConvexPolygon;
 pub(crate) use convex::box_of;
 pub use error::{EditError, PolygonError};

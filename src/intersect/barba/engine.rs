@@ -235,7 +235,7 @@ impl Mode for Derive {
 }
 
 /// The certified call without a probe: [`Derive`]'s derivation completed where the run
-/// ends ([`fallback::complete`](crate::intersect::fallback::complete) where it gives only the
+/// ends ([`Searches`](crate::intersect::certificate::Searches) where it gives only the
 /// answer), so that the certificate is written once, in the caller's place.
 pub(super) struct Certify;
 

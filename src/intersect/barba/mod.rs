@@ -149,11 +149,11 @@ use engine::{Certify, Derive, Plain, Range, SMALL_Q, run};
 pub struct Barba;
 
 /// [`Barba`] with the choices the thesis makes where ours differ, one parameter each
-/// (docs/thesis.md compares them; [`Barba`] is `BarbaVariant<false, 7, false>`):
+/// (docs/thesis.md compares them; [`Barba`] is `BarbaVariant<true, 7, false>`):
 ///
 /// * `THIRDS`: the first T_P at vertices 0, ⌊n/3⌋, ⌊2n/3⌋ of P (thesis §3.1.4), so that
-///   the first pruning of P keeps one of three chains; ours (`false`) takes the first,
-///   middle and last vertex, whose third side is an edge of P.
+///   the first pruning of P keeps one of three chains (ours, `true`); `false` takes the
+///   first, middle and last vertex, whose third side is an edge of P.
 /// * `SMALL_Q`: the main loop hands Q' to the constant-size finish once it has fewer
 ///   than this many vertices, 4 to 7: 4 is the thesis's finish on three edges of Q
 ///   (§3.1.8), 7 (ours) finishes from at most six vertices.

@@ -4,8 +4,8 @@
 use super::engine::{Exit, Range, Record, SMALL_Q, SegmentExit, SegmentTable, Sep, SmallQ, run};
 use super::{Ours, Variant};
 use crate::intersect::certificate::{
-    Reduced, crossing, edge_between, endpoint_on_other, extreme_left, reduce_chord, resolve_chords,
-    resolve_crossing_chords, separates,
+    Complete, Reduced, Searches, crossing, edge_between, endpoint_on_other, extreme_left, reduce_chord,
+    resolve_chords, resolve_crossing_chords, separates,
 };
 use crate::intersect::{Certificate, Derivation, Which};
 use crate::kernel::{Kernel, Orientation, Point, SegmentContact, point_on_segment};
@@ -15,8 +15,7 @@ use Orientation::{Ccw, Collinear, Cw};
 /// [`derivation`]'s body is written out here (no call, no [`Derivation`] moved).
 #[inline(never)]
 pub(super) fn completed<K: Kernel, V: Variant>(k: K, pv: &[Point], qv: &[Point], exit: Exit) -> Certificate {
-    let complete =
-        |answer| crate::intersect::fallback::complete(k, pv, qv, Derivation::Answer(answer), &mut ());
+    let complete = |answer| Searches::complete(k, pv, qv, answer);
     match exit {
         Exit::Apart { pr, q, line } => {
             match lift(k, pv, qv, pr, q, line).or_else(|| rerun_lift::<K, V>(k, pv, qv)) {
@@ -50,14 +49,7 @@ pub(super) fn segment_certificate<K: Kernel>(
     qv: &[Point],
     exit: SegmentExit,
 ) -> Certificate {
-    segment_witness(
-        k,
-        pv,
-        qv,
-        exit,
-        |c| c,
-        || crate::intersect::fallback::complete(k, pv, qv, Derivation::Answer(true), &mut ()),
-    )
+    segment_witness(k, pv, qv, exit, |c| c, || Searches::complete(k, pv, qv, true))
 }
 
 /// The certified call's result for a run's exit (the module docs' "Certificate"). Out

@@ -60,16 +60,16 @@ mod verify;
 #[cfg(test)]
 mod tests;
 
+pub(crate) use crate::polygon::Boundary;
 pub(crate) use chords::{
     Reduced, crossing, edge_between, endpoint_on_other, reduce_chord, resolve_chords, resolve_crossing_chords,
 };
 pub(crate) use separation::{
     extreme_left, from_faces, from_support, same_direction, separates, supports_left, supports_right, turn_gt,
 };
-pub(crate) use verify::Boundary;
 pub use verify::{verify, verify_linked};
 
-use crate::kernel::{Orientation, Point};
+use crate::kernel::{Kernel, Orientation, Point};
 use std::fmt;
 
 use Orientation::{Ccw, Collinear, Cw};
@@ -195,6 +195,21 @@ impl Certificate {
         }
     }
 }
+
+/// The searches that complete an answer an algorithm could not certify from its own
+/// findings ([`Derivation::Answer`]), O(log n + log m): Dobkin's separation for
+/// "disjoint", Barba's witness for "intersecting", the exact O(n + m) reference when an
+/// inconsistent kernel leaves them without one. Declared here, below the algorithms, and
+/// implemented for [`Searches`] in `fallback.rs`, above them: so an algorithm that
+/// completes its certificates where its run ends (Barba's certified call) reaches the
+/// searches without depending on the file that runs them.
+pub(crate) trait Complete {
+    /// The certificate of `answer` for the polygons with vertices `pv` and `qv`.
+    fn complete<K: Kernel>(k: K, pv: &[Point], qv: &[Point], answer: bool) -> Certificate;
+}
+
+/// The completing searches of `fallback.rs` ([`Complete`]).
+pub(crate) struct Searches;
 
 /// What an algorithm's certified run derived from its own findings.
 #[derive(Clone, Copy, Debug, PartialEq)]

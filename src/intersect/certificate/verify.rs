@@ -2,57 +2,10 @@
 //! alone: no algorithm's code runs here.
 
 use crate::kernel::{Exact, Kernel, Orientation, Point, SegmentContact, segment_contact};
-use crate::polygon::{ConvexPolygon, LinkedPolygon};
+use crate::polygon::{Boundary, ConvexPolygon, LinkedPolygon};
 
 use crate::intersect::{Certificate, CertificateError, Which};
 use Orientation::Cw;
-
-/// Cyclic access to a convex polygon's boundary: a slice of counter-clockwise vertices
-/// (indices mod n) or a [`LinkedPolygon`] (arena positions, which are exactly `0..len`).
-pub(crate) trait Boundary {
-    fn count(&self) -> usize;
-    fn at(&self, v: usize) -> Point;
-    fn next(&self, v: usize) -> usize;
-    fn prev(&self, v: usize) -> usize;
-}
-
-impl Boundary for [Point] {
-    #[inline]
-    fn count(&self) -> usize {
-        self.len()
-    }
-    #[inline]
-    fn at(&self, v: usize) -> Point {
-        self[v]
-    }
-    #[inline]
-    fn next(&self, v: usize) -> usize {
-        if v + 1 == self.len() { 0 } else { v + 1 }
-    }
-    #[inline]
-    fn prev(&self, v: usize) -> usize {
-        if v == 0 { self.len() - 1 } else { v - 1 }
-    }
-}
-
-impl Boundary for LinkedPolygon {
-    #[inline]
-    fn count(&self) -> usize {
-        self.len()
-    }
-    #[inline]
-    fn at(&self, v: usize) -> Point {
-        self.point_at(v)
-    }
-    #[inline]
-    fn next(&self, v: usize) -> usize {
-        self.next_at(v)
-    }
-    #[inline]
-    fn prev(&self, v: usize) -> usize {
-        self.prev_at(v)
-    }
-}
 
 /// Checks `certificate` for the query "do `p` and `q` intersect?" exactly, with no
 /// trust in whoever produced it. `Ok(())` means the certificate proves its answer

@@ -34,20 +34,20 @@
 //!    ordering). With independent draws on both sides those 12 + 12 are drawn and read
 //!    first, and the rest of the samples only when their hulls are disjoint, so an
 //!    intersecting query decided there reads 24 random vertices instead of 2⌈c·√n⌉
-//!    (at 2^20, 1.2 instead of 55 µs; docs/results.md).
+//!    (docs/results.md has the times).
 //!    Before that LP, with [`ClmVariant::prefix_quads`] (the default): each prefix
 //!    gives a quadrilateral of its own points (`Quad::spread`: the chord between its
 //!    lowest and highest x and the point farthest from that chord on each side, by
 //!    `f64` distances, a guide only), which lies inside its polygon; a prefix point of
 //!    the other polygon in it (`prefix_inside`: `f64` signs first, three or four exact
 //!    orientations for a point they put inside) is a vertex inside, so the polygons
-//!    intersect and the query ends, certified, without any LP: about 95% of the
-//!    intersecting Rotated queries at 2^10–2^18 end there (docs/certificates.md).
+//!    intersect and the query ends, certified, without any LP: most intersecting
+//!    queries on crossing pairs end there (docs/certificates.md has the share).
 //!    When the prefix LP then finds the prefixes' hulls disjoint, the next 12 points
 //!    of each sample are tried in the same quadrilaterals before the samples are put
 //!    in order. Both tests cost O(1) (at most 24 points each), so the bounds below
-//!    are unchanged; on disjoint polygons they never answer, and cost about 2,500
-//!    instructions per query (2.5K of 34K at 2^10, under 2% from 2^16).
+//!    are unchanged; on disjoint polygons they never answer, and cost a small share of
+//!    the query that falls with n (docs/results.md).
 //!    Order of work: chain walks run two at a time in lockstep, so that their cache
 //!    misses (each step is a dependent load at a random arena position) overlap, and
 //!    each LP runs as soon as the chain it needs is walked (either sample-against-chain
@@ -81,8 +81,8 @@
 //!   line supports both polygons and an edge at its tangent vertices separates. The
 //!   lines are tried from the last; the chain LPs' lines almost always qualify.
 //! * **Intersecting.** A query the prefixes' quadrilaterals answered has its
-//!   certificate already: the vertex inside (about 95% of the intersecting queries on
-//!   the generators' crossing pairs). Otherwise the LP that found the hulls
+//!   certificate already: the vertex inside (most intersecting queries on crossing
+//!   pairs). Otherwise the LP that found the hulls
 //!   intersecting reports a witness (at most nine
 //!   points: the violating point, the one or two points that bounded its 1D problem,
 //!   the previous optimum's tangent points, and a₀, b₀ and the bounding pair, which
@@ -116,12 +116,12 @@
 //!   triangle it lands in), so a drawn vertex inside is a vertex inside. The samples'
 //!   hulls meet, and on crossing polygons such as the generators' intersecting pairs a
 //!   fair part of each boundary lies in the other's quadrilateral, so a few rounds
-//!   usually suffice (on Rotated pairs 97–99% of these queries end here, after
-//!   about three rounds); after `DRAW_ROUNDS` (16) rounds the query goes on below.
+//!   usually suffice (nearly all of these queries on Rotated pairs end here;
+//!   docs/certificates.md); after `DRAW_ROUNDS` (16) rounds the query goes on below.
 //!   The step costs O(1) (at most 16 rounds, 24 sample tests and three passes over
 //!   about 16 points), so the expected bound is unchanged; it replaces the cone
 //!   search and the chord walk below in nearly every query that needed them, which
-//!   at 2^16 cost about three times the plain query (docs/certificates.md). Else
+//!   cost a multiple of the plain query (docs/certificates.md). Else
 //!   the points the LP examined (a few dozen) are searched without building a hull
 //!   ([`cone_witness`](witness::cone_witness)): before the violating point
 //!   x the LP's line separated them, so seen from x its own set spans less than a

@@ -60,17 +60,14 @@
 //!
 //! # Cost
 //! Measured in docs/results.md ("The exact kernel's overhead", "At extreme scales"),
-//! in instructions (callgrind) and time. With the semi-static filter, and the static
-//! filter inline where the algorithms cross short edges
-//! ([`Kernel::cross_of_short_edges`]), exact/fast instructions at n = 2^10 / 2^14 /
-//! 2^18: Barba 1.11 / 1.14 / 1.13, Dobkin 1.11 / 1.11 / 1.12, Linear 1.13 / 1.13 /
-//! 1.13 (its walk under the edges' bound), Chazelle–Dobkin 1.16 / 1.14 / 1.14 with its
-//! slope comparison's bound scaled to the edges
-//! ([`Kernel::cross_products_sign_of_short_edges`]; 1.23 at 2^18 before) and its
-//! searches' orientations by reference ([`Kernel::orient_of`]; 1.18 / 1.16 / 1.16
-//! before) (before the semi-static filter: 1.3–1.6×). Validation plus the crossings sweep at 2^±600 and 2^1016 cost
-//! 1.38–1.46× the instructions of the same input at scale 1 (before the fixed
-//! rescaling: 1.65×).
+//! in instructions (callgrind) and time. The semi-static filter, the static filter
+//! inline where the algorithms cross short edges ([`Kernel::cross_of_short_edges`]),
+//! the slope comparison's bound scaled to the edges
+//! ([`Kernel::cross_products_sign_of_short_edges`]) and orientations by reference
+//! ([`Kernel::orient_of`]) keep the exact kernel within a small constant factor of the
+//! fast one's instructions for every algorithm, the same factor at every size. Input at
+//! extreme scales (2^±600, 2^1016) costs a constant factor more than the same input at
+//! scale 1, by the fixed rescaling.
 //! Predicates that mix magnitudes more than 2^1022 apart within one call fall to big
 //! integers when nearly degenerate.
 

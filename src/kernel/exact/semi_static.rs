@@ -264,7 +264,7 @@ impl Kernel for ExactWithin {
     /// any input: `certain` refuses overflow), then out of line. Written out beside
     /// `cross` rather than sharing a generic body: with the shared body (a const
     /// parameter choosing the inline filter) the compiler inlined `cross` differently
-    /// and Linear's exact/fast instructions rose from 1.134 to 1.199 at 2^10.
+    /// and Linear's exact overhead rose (docs/results.md).
     #[inline]
     fn cross_of_short_edges(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
         let (left, right) = cross_products(a, b, c, d);
