@@ -71,6 +71,16 @@ fn demo_draws_the_scene_of_its_table_with_a_legend() {
         "the ratios are explained: {out}"
     );
     assert!(!out.contains("NaN"), "{out}");
+    // The planner's ratio is a median over repeated runs, with their spread.
+    assert!(out.contains("the median of 21 runs"), "{out}");
+    let ratios: Vec<&str> = out.lines().filter(|l| l.contains("planner = ")).collect();
+    assert_eq!(ratios.len(), 3, "{out}");
+    for line in ratios {
+        assert!(
+            line.contains("[middle half ") && line.contains(", all "),
+            "{line}"
+        );
+    }
     let picture = std::fs::read_to_string(&svg).unwrap();
     assert_eq!(picture.matches("<polygon").count(), 10, "the table's 10 polygons");
     assert!(
