@@ -1,4 +1,4 @@
-//! [`ListSweep`]: Žalik's sweep line with two lists of pierced edges (the crossings report).
+//! [`ListSweep`]: Žalik's sweep line with two lists of pierced edges (as in the report of docs/crossings.md).
 //!
 //! # Algorithm
 //! The n + m vertices of both polygons are the events, sorted lexicographically:
@@ -94,7 +94,7 @@ impl List {
 pub struct ListWorkspace {
     lists: [List; 2],
     pos: [Vec<u32>; 2],
-    /// Pass every candidate on, without the y-range check (the crossings report's sweep).
+    /// Pass every candidate on, without the y-range check (the sweep of docs/crossings.md's report).
     every_candidate: bool,
 }
 
@@ -220,7 +220,7 @@ pub struct ListWork {
     pub tests: u64,
 }
 
-/// The lists as the crossings report runs them: `pair` is called on every candidate (each edge
+/// The lists as docs/crossings.md's report runs them: `pair` is called on every candidate (each edge
 /// of the other polygon listed when an edge is inserted, P's edge first), with no
 /// y-range check. For `polysect bench crossings`.
 #[cfg(feature = "cli")]
