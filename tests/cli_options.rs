@@ -87,7 +87,12 @@ fn demo_draws_the_scene_of_its_table_with_a_legend() {
         picture.contains("before its workloads: 10 polygons, 2^3 to 2^12"),
         "{picture}"
     );
-    assert!(picture.contains("intersects another polygon") && picture.contains("intersects none"));
+    // The legend tells the colours apart by how many others a polygon meets.
+    assert!(
+        picture.contains("intersects more than ") && picture.contains("intersects none ("),
+        "{picture}"
+    );
+    assert!(picture.contains("intersects 1 other (") || picture.contains("intersects 1 to "));
     // Polygons of up to 2^12 vertices are thinned for drawing, and say so.
     assert!(picture.contains("drawn with at most 720"));
     let _ = std::fs::remove_file(svg);

@@ -300,18 +300,34 @@ pub fn run(polygons: usize, max_log2: u32, steps: usize, seed: u64, svg_path: &s
     let mut scene = base;
     let pairs = scene.intersecting_pairs();
     let ids: Vec<_> = scene.ids().collect();
+    // Coloured by how many others each polygon meets: none, up to the median of those
+    // that meet any, more (in a dense scene every polygon meets another).
+    let degree = |id| {
+        pairs
+            .iter()
+            .filter(|&&(a, b)| a != b && (a == id || b == id))
+            .count()
+    };
+    let degrees: Vec<usize> = ids.iter().map(|&id| degree(id)).collect();
+    let mut meeting: Vec<usize> = degrees.iter().copied().filter(|&d| d > 0).collect();
+    meeting.sort_unstable();
+    let median = meeting
+        .get(meeting.len().saturating_sub(1) / 2)
+        .copied()
+        .unwrap_or(1);
+    let style_of = |d: usize| match d {
+        0 => Style::Plain,
+        d if d <= median => Style::Other,
+        _ => Style::Highlight,
+    };
     let mut panel = Panel::default();
-    let (mut hit_count, mut thinned) = (0, false);
-    for &id in &ids {
-        let hit = pairs.iter().any(|&(a, b)| a != b && (a == id || b == id));
-        hit_count += usize::from(hit);
+    let mut thinned = false;
+    for (&id, &d) in ids.iter().zip(&degrees) {
         let polygon = scene.polygon(id).expect("live").to_convex();
         let step = polygon.len().div_ceil(DRAWN_VERTICES);
         thinned |= step > 1;
         let verts = polygon.vertices().iter().step_by(step).copied().collect();
-        panel
-            .polygons
-            .push((verts, if hit { Style::Highlight } else { Style::Plain }));
+        panel.polygons.push((verts, style_of(d)));
     }
     panel.caption = format!(
         "The demo's scene (seed {seed}) before its workloads: {} polygons, 2^3 to 2^{max_log2} \
@@ -324,10 +340,22 @@ pub fn run(polygons: usize, max_log2: u32, steps: usize, seed: u64, svg_path: &s
         },
         pairs.len(),
     );
-    let red = format!("intersects another polygon ({hit_count})");
-    let blue = format!("intersects none ({})", ids.len() - hit_count);
+    let count = |style: Style| degrees.iter().filter(|&&d| style_of(d) == style).count();
+    let others = |d: usize| if d == 1 { "other" } else { "others" };
+    let red = format!(
+        "intersects more than {median} {} ({})",
+        others(median),
+        count(Style::Highlight)
+    );
+    let teal = if median == 1 {
+        format!("intersects 1 other ({})", count(Style::Other))
+    } else {
+        format!("intersects 1 to {median} others ({})", count(Style::Other))
+    };
+    let blue = format!("intersects none ({})", count(Style::Plain));
     let legend = [
         (Swatch::Fill(Style::Highlight), red.as_str()),
+        (Swatch::Fill(Style::Other), teal.as_str()),
         (Swatch::Fill(Style::Plain), blue.as_str()),
     ];
     let text = svg(&[panel], 1, 640.0, &legend);
@@ -338,7 +366,7 @@ pub fn run(polygons: usize, max_log2: u32, steps: usize, seed: u64, svg_path: &s
                 .map_err(|e| io::Error::new(e.kind(), format!("cannot write {svg_path}: {e}")))?;
             writeln!(
                 out,
-                "\nWrote {svg_path}: the scene above, polygons that intersect another in red."
+                "\nWrote {svg_path}: the scene above, coloured by how many others each polygon intersects."
             )?;
         }
         None => out.write_all(text.as_bytes())?,
