@@ -119,7 +119,8 @@ impl ConvexPolygon {
     /// The rectangle centred at `centre` with half-width `half_extents[0]` and
     /// half-height `half_extents[1]`, turned counter-clockwise by `angle` radians about
     /// its centre. The first vertex is the corner that starts at `(−w, −h)` from the
-    /// centre. The corners are rounded to `f64` (see the [module docs](self)).
+    /// centre. The corners are rounded to `f64` and then validated exactly: a rectangle that
+    /// rounding would collapse is refused.
     ///
     /// # Errors
     /// [`PolygonError::BadParameter`] for a non-finite centre or angle, a half-extent
@@ -157,7 +158,8 @@ impl ConvexPolygon {
 
     /// The regular polygon with `n` vertices on the circle of `radius` about `centre`,
     /// counter-clockwise, the first at angle `phase` (radians from the positive x axis).
-    /// The vertices are rounded to `f64` (see the [module docs](self)).
+    /// The vertices are rounded to `f64` (within a few ulps of the circle) and then
+    /// validated exactly: a polygon that rounding would collapse is refused.
     ///
     /// # Errors
     /// [`PolygonError::BadParameter`] for `n < 3`, a non-finite centre or phase, a radius
@@ -192,7 +194,7 @@ impl ConvexPolygon {
         // turn, so refuse before allocating n vertices.
         let sagitta = 2.0 * r * (PI / n as f64).sin().powi(2);
         let scale = c.x.abs().max(c.y.abs()) + r;
-        if !(sagitta > ulp(scale)) {
+        if sagitta <= ulp(scale) {
             return Err(bad(
                 "n",
                 format!(

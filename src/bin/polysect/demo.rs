@@ -80,7 +80,7 @@ fn planner_ratio(strategies: &[Strategy], times: &[Vec<f64>]) -> Option<Comparis
     let mut ratios = Vec::with_capacity(times.len());
     for run in times {
         let least = fixed.iter().map(|&k| run[k]).fold(f64::INFINITY, f64::min);
-        if !(least > 0.0 && least.is_finite()) {
+        if least <= 0.0 || !least.is_finite() {
             return None;
         }
         ratios.push(run[planner] / least);
