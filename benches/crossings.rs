@@ -1,4 +1,4 @@
-//! Crossing points of two random simple polygons (the crossings report, Tables 6.1 and 6.2):
+//! Crossing points of two random simple polygons (space partitioning on uniform and normal points, as in docs/crossings.md's report):
 //! the sweep (`sweep-exact`, `sweep-fast`: the default, which picks Žalik's lists or
 //! the ordered red–blue sweep; `list-sweep` and `tree-sweep`: each of the two alone)
 //! against the O(n·m) brute force, with geo's sweep

@@ -13,7 +13,7 @@
 //! Arguments: the family (`uniform`: space partitioning of uniform points in
 //! [0, 100)²; `normal`: normal points, σ = 50; or a `polysect::generate::hard` family
 //! name), n, the algorithm (`sweep`, `list`, `tree`, `brute`, `division` and
-//! `division-sweep` (seed 003's brute force and sweep), `geo` (geo's sweep over both
+//! `division-sweep` (the brute force and sweep of docs/crossings.md's report), `geo` (geo's sweep over both
 //! edge sets)) and the count. The pair comes from a fixed seed per n. Prints the
 //! number of points, the lists' work and which sweep `Sweep` chose, on standard error.
 //!

@@ -28,7 +28,7 @@ use crate::crossings::{Crossings, Sweep};
 use crate::intersect::{ArrayIntersection, Linear};
 use crate::kernel::{Exact, Point};
 use crate::polygon::{ConvexPolygon, SimplePolygon};
-use crate::protocol::check::for_each_pair;
+use crate::protocol::check::for_each_pair_with_id;
 use std::fmt::Write;
 use std::io::{self, Read};
 
@@ -309,6 +309,57 @@ fn draw_shapes(s: &mut String, panel: &Panel, ox: f64, oy: f64, size: f64) {
             r#"<circle cx="{x:.2}" cy="{y:.2}" r="3.5" fill="black" stroke="white" stroke-width="1"/>"#
         );
     }
+    if let Some((length, label)) = scale_bar(half_span) {
+        // `length` data units over `length / (2·half_span)` of the room, bottom left.
+        let px = length / half_span * room / 2.0;
+        let (x0, y) = (ox + 8.0, oy + size - 8.0);
+        let _ = writeln!(
+            s,
+            r##"<path d="M{x0:.2},{:.2} V{y:.2} H{:.2} V{:.2}" fill="none" stroke="#555" stroke-width="1.2"/>"##,
+            y - 4.0,
+            x0 + px,
+            y - 4.0
+        );
+        let _ = writeln!(
+            s,
+            r##"<text x="{:.2}" y="{:.2}" font-size="10" fill="#555">{label}</text>"##,
+            x0 + px + 4.0,
+            y
+        );
+    }
+}
+
+/// The scale bar of a panel whose larger half-span is `half_span` data units: the
+/// largest 1, 2 or 5 × 10^k not above half of it (a quarter of the span) and its label,
+/// written from the digits (so `1e-300` reads exactly). `None` for an empty span.
+fn scale_bar(half_span: f64) -> Option<(f64, String)> {
+    let target = half_span / 2.0;
+    if !(target > 0.0 && target.is_finite()) {
+        return None;
+    }
+    let mut k = target.log10().floor() as i32;
+    // log10 may round across a power of ten: settle k so that 10^k ≤ target < 10^(k+1).
+    while k > -330 && pow10(k) > target {
+        k -= 1;
+    }
+    while pow10(k + 1) <= target {
+        k += 1;
+    }
+    let m = [5u32, 2, 1]
+        .into_iter()
+        .find(|&m| f64::from(m) * pow10(k) <= target)?;
+    let length = f64::from(m) * pow10(k);
+    let label = match k {
+        0..=5 => format!("{m}{}", "0".repeat(k as usize)),
+        -4..=-1 => format!("0.{}{m}", "0".repeat((-k - 1) as usize)),
+        _ => format!("{m}e{k}"),
+    };
+    (length > 0.0).then_some((length, label))
+}
+
+/// 10^k as the nearest `f64` the parser gives (exact for the digits written).
+fn pow10(k: i32) -> f64 {
+    format!("1e{k}").parse().unwrap_or(0.0)
 }
 
 /// How [`render_pairs`] treats a pair.
@@ -355,14 +406,15 @@ pub struct PairsPicture {
 pub fn render_pairs<R: Read>(input: R, mode: RenderMode, limit: usize) -> io::Result<PairsPicture> {
     let mut panels = Vec::new();
     let mut more = false;
-    for_each_pair(input, |line_no, pair| {
+    for_each_pair_with_id(input, |line_no, id, pair| {
         if panels.len() >= limit {
             more = true;
             return false;
         }
+        let name = panel_name(line_no, id);
         panels.push(match pair {
-            Ok((p, q)) => pair_panel(line_no, p, q, mode),
-            Err(message) => error_panel(line_no, message),
+            Ok((p, q)) => pair_panel(&name, p, q, mode),
+            Err(message) => error_panel(&name, message),
         });
         true
     })?;
@@ -387,7 +439,22 @@ pub fn render_pairs<R: Read>(input: R, mode: RenderMode, limit: usize) -> io::Re
     })
 }
 
-fn error_panel(line_no: u64, message: String) -> Panel {
+/// A panel's name: the line's `"id"` (a string without its quotes, anything else as
+/// written) and its line number, or the line number alone.
+fn panel_name(line_no: u64, id: Option<&str>) -> String {
+    match id {
+        Some(id) => {
+            let shown = match serde_json::from_str::<serde_json::Value>(id) {
+                Ok(serde_json::Value::String(text)) => text,
+                _ => id.to_string(),
+            };
+            format!("{shown} (line {line_no})")
+        }
+        None => format!("line {line_no}"),
+    }
+}
+
+fn error_panel(name: &str, message: String) -> Panel {
     // The protocol's message starts "line N: " (or "line N, column C: ").
     let text = message
         .split_once(": ")
@@ -395,13 +462,13 @@ fn error_panel(line_no: u64, message: String) -> Panel {
         .map_or(message.as_str(), |(_, m)| m)
         .to_string();
     Panel {
-        caption: format!("line {line_no}: error"),
+        caption: format!("{name}: error"),
         error: Some(text),
         ..Panel::default()
     }
 }
 
-fn pair_panel(line_no: u64, p: Vec<Point>, q: Vec<Point>, mode: RenderMode) -> Panel {
+fn pair_panel(name: &str, p: Vec<Point>, q: Vec<Point>, mode: RenderMode) -> Panel {
     if mode == RenderMode::Auto
         && let (Ok(cp), Ok(cq)) = (
             ConvexPolygon::new(p.iter().copied()),
@@ -417,22 +484,22 @@ fn pair_panel(line_no: u64, p: Vec<Point>, q: Vec<Point>, mode: RenderMode) -> P
                     if hit { Style::Highlight } else { Style::Other },
                 ),
             ],
-            caption: format!("line {line_no}: {}", if hit { "intersect" } else { "disjoint" }),
+            caption: format!("{name}: {}", if hit { "intersect" } else { "disjoint" }),
             ..Panel::default()
         };
     }
     let (sp, sq) = match (SimplePolygon::new(p), SimplePolygon::new(q)) {
         (Ok(sp), Ok(sq)) => (sp, sq),
-        (Err(e), _) => return error_panel(line_no, format!("p: {e}")),
-        (_, Err(e)) => return error_panel(line_no, format!("q: {e}")),
+        (Err(e), _) => return error_panel(name, format!("p: {e}")),
+        (_, Err(e)) => return error_panel(name, format!("q: {e}")),
     };
     let points = Sweep.crossings_with(Exact, &sp, &sq);
     let hit = !points.is_empty() || sp.contains_point(sq.vertex(0)) || sq.contains_point(sp.vertex(0));
     let caption = match points.len() {
-        0 if hit => format!("line {line_no}: boundaries apart, one inside the other"),
-        0 => format!("line {line_no}: boundaries apart, disjoint"),
-        1 => format!("line {line_no}: 1 crossing point"),
-        k => format!("line {line_no}: {k} crossing points"),
+        0 if hit => format!("{name}: boundaries apart, one inside the other"),
+        0 => format!("{name}: boundaries apart, disjoint"),
+        1 => format!("{name}: 1 crossing point"),
+        k => format!("{name}: {k} crossing points"),
     };
     Panel {
         polygons: vec![
@@ -545,7 +612,7 @@ mod tests {
             let p = random_simple_polygon(method, dist, n, &mut rng).unwrap();
             let q = random_simple_polygon(method, dist, 3 + round % 9, &mut rng).unwrap();
             for mode in [RenderMode::Auto, RenderMode::Crossings] {
-                let panel = pair_panel(1, p.vertices().to_vec(), q.vertices().to_vec(), mode);
+                let panel = pair_panel("line 1", p.vertices().to_vec(), q.vertices().to_vec(), mode);
                 let convex = ConvexPolygon::new(p.vertices().iter().copied()).is_ok()
                     && ConvexPolygon::new(q.vertices().iter().copied()).is_ok();
                 let want = Brute.crossings(&p, &q);
@@ -575,7 +642,12 @@ mod tests {
         assert!(marked > 100 && apart > 20, "{marked} marked, {apart} apart");
         // A polygon against itself: every edge is shared, so every vertex is marked.
         let p = SimplePolygon::new([[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [2.0, 1.0], [0.0, 4.0]]).unwrap();
-        let panel = pair_panel(1, p.vertices().to_vec(), p.vertices().to_vec(), RenderMode::Auto);
+        let panel = pair_panel(
+            "line 1",
+            p.vertices().to_vec(),
+            p.vertices().to_vec(),
+            RenderMode::Auto,
+        );
         let mut corners = p.vertices().to_vec();
         corners.sort_unstable_by(|a, b| a.lex_cmp(*b));
         assert_eq!(panel.marks, corners);
@@ -593,5 +665,58 @@ mod tests {
         assert_eq!(cut.len(), 2);
         assert!(cut[1].ends_with('…') && cut[1].chars().count() <= 20, "{cut:?}");
         assert!(wrap("", 20, 2).is_empty());
+    }
+
+    #[test]
+    fn scale_bars_are_round_lengths_within_a_quarter_of_the_span() {
+        for (half_span, length, label) in [
+            (1.0, 0.5, "0.5"),
+            (2.0, 1.0, "1"),
+            (10.0, 5.0, "5"),
+            (7.0, 2.0, "2"),
+            (400.0, 200.0, "200"),
+            (3e-300, 1e-300, "1e-300"),
+            (f64::MAX, 5e307, "5e307"),
+            (0.003, 0.001, "0.001"),
+        ] {
+            let (l, t) = scale_bar(half_span).unwrap();
+            assert_eq!((l, t.as_str()), (length, label), "{half_span}");
+            assert!(l <= half_span / 2.0 && l * 5.0 > half_span / 2.0, "{half_span}");
+        }
+        assert_eq!(scale_bar(0.0), None);
+        assert_eq!(scale_bar(f64::NAN), None);
+        // Every panel with a span draws its bar and label.
+        let tri = vec![Point::new(0.0, 0.0), Point::new(40.0, 0.0), Point::new(0.0, 40.0)];
+        let text = svg(
+            &[Panel {
+                polygons: vec![(tri, Style::Plain)],
+                ..Panel::default()
+            }],
+            1,
+            320.0,
+            &[],
+        );
+        assert!(
+            text.contains(">10</text>") && text.contains("<path d=\"M"),
+            "{text}"
+        );
+    }
+
+    #[test]
+    fn panels_are_named_by_the_lines_id() {
+        let input = br#"{"id": "left & right", "p": [[0,0],[2,0],[2,2]], "q": [[5,5],[6,5],[6,6]]}
+{"id": 42, "p": [[0,0],[2,0],[2,2]], "q": [[1,0],[3,0],[3,1]]}
+{"p": [[0,0],[2,0],[2,2]], "q": [[1,0],[3,0],[3,1]]}
+{"id": "bad", "p": [[0,0],[1,1]], "q": [[1,0],[3,0],[3,1]]}
+"#;
+        let picture = render_pairs(&input[..], RenderMode::Auto, 10).unwrap();
+        assert!(
+            picture.svg.contains("left &amp; right (line 1): disjoint"),
+            "{}",
+            picture.svg
+        );
+        assert!(picture.svg.contains("42 (line 2): intersect"));
+        assert!(picture.svg.contains(">line 3: intersect"));
+        assert!(picture.svg.contains("bad (line 4): error"));
     }
 }

@@ -1,6 +1,6 @@
-//! `polysect gen --simple`: pairs of random simple polygons (seed 003 §6.1's space
-//! partitioning with uniform Δ or normal σ points, the star and the seed-002 angular
-//! sort) in the `crossings` input format, fed back to `polysect crossings`.
+//! `polysect gen --simple`: pairs of random simple polygons (space partitioning
+//! with uniform Δ or normal σ points as in docs/crossings.md's report, the star and the
+//! angular sort) in the `crossings` input format, fed back to `polysect crossings`.
 
 use polysect::SimplePolygon;
 use serde_json::Value;

@@ -71,13 +71,28 @@ fn demo_draws_the_scene_of_its_table_with_a_legend() {
         "the ratios are explained: {out}"
     );
     assert!(!out.contains("NaN"), "{out}");
+    // The planner's ratio is a median over repeated runs, with their spread.
+    assert!(out.contains("the median of 21 runs"), "{out}");
+    let ratios: Vec<&str> = out.lines().filter(|l| l.contains("planner = ")).collect();
+    assert_eq!(ratios.len(), 3, "{out}");
+    for line in ratios {
+        assert!(
+            line.contains("[middle half ") && line.contains(", all "),
+            "{line}"
+        );
+    }
     let picture = std::fs::read_to_string(&svg).unwrap();
     assert_eq!(picture.matches("<polygon").count(), 10, "the table's 10 polygons");
     assert!(
         picture.contains("before its workloads: 10 polygons, 2^3 to 2^12"),
         "{picture}"
     );
-    assert!(picture.contains("intersects another polygon") && picture.contains("intersects none"));
+    // The legend tells the colours apart by how many others a polygon meets.
+    assert!(
+        picture.contains("intersects more than ") && picture.contains("intersects none ("),
+        "{picture}"
+    );
+    assert!(picture.contains("intersects 1 other (") || picture.contains("intersects 1 to "));
     // Polygons of up to 2^12 vertices are thinned for drawing, and say so.
     assert!(picture.contains("drawn with at most 720"));
     let _ = std::fs::remove_file(svg);

@@ -251,7 +251,7 @@ fn every_experiment_writes_csv_and_svg() {
     let _ = fs::remove_dir_all(&dir);
 }
 
-/// The crossings experiment's table: every Δ and σ of seed 003 × n × algorithm, the
+/// The crossings experiment's table: every Δ and σ of the report in docs/crossings.md × n × algorithm, the
 /// sweep agreeing with the brute force, the counts consistent.
 fn check_crossings_csv(path: &Path, sizes: &[usize]) {
     let (header, rows) = read_csv(path);

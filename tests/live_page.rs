@@ -529,6 +529,11 @@ fn live_page_in_a_browser() {
     assert!(!paused.pairs.is_empty(), "a colliding pair while paused");
     std::thread::sleep(Duration::from_millis(300));
     assert_eq!(shown(&b).frame, paused.frame, "paused means paused");
+    // The polygons carry their numbers; hidden for the pixel check at their centroids.
+    b.wait_for("the polygon numbers", "window.polysect.numbered > 0", 10);
+    b.click("#showNumbers");
+    b.wait_for("the numbers hidden", "window.polysect.numbered === 0", 10);
+    std::thread::sleep(Duration::from_millis(100));
     let png = b.screenshot();
     let path = target_dir().join("live_page.png");
     std::fs::write(&path, &png).expect("screenshot saved");
@@ -559,6 +564,7 @@ fn live_page_in_a_browser() {
         hit >= 2 && plain >= 1,
         "{hit} colliding and {plain} plain polygons checked"
     );
+    b.click("#showNumbers");
 
     // 5. Editing, on a scene of triangles (any triangle is convex, so the test knows from
     //    the orientation alone which drags the store must accept).
@@ -720,7 +726,89 @@ fn live_page_in_a_browser() {
             "{algorithm}"
         );
     }
+    // The certificate wraps inside the sidebar: nothing overflows sideways, and the
+    // step-through's inputs and buttons stay in view above it.
+    let fits = b.js(
+        "const side = document.getElementById('side'), t = document.getElementById('traceText'); \
+         return side.scrollWidth <= side.clientWidth && t.scrollWidth <= t.clientWidth + 1;",
+    );
+    assert_eq!(fits, json!(true), "the certificate text overflows the sidebar");
+    let zoom = b.js("return window.polysect.traceZoom;").as_f64().expect("zoom");
+    assert!(
+        zoom > 1.0,
+        "the trace is drawn zoomed on its two polygons: {zoom}"
+    );
+    // Closing a trace opened while paused (by the user) leaves the motion paused.
     b.click("#traceClose");
+    std::thread::sleep(Duration::from_millis(300));
+    assert_eq!(b.js("return window.polysect.settings.paused;"), json!(true));
+
+    // 6c. A trace of a running simulation pauses it while shown and resumes it on Close;
+    // a refused trace does not pause; a success clears an old error from the status.
+    b.click("#pause");
+    b.wait_for("running", "!window.polysect.settings.paused", 10);
+    let (refusals, errors) = (
+        b.js("return window.polysect.refusals;").as_u64().expect("count"),
+        b.js("return window.polysect.errors;").as_u64().expect("count"),
+    );
+    b.type_into("#traceA", "0");
+    b.type_into("#traceB", "0");
+    b.click("#trace");
+    b.wait_for(
+        "the refused trace",
+        &format!("window.polysect.refusals > {refusals} || window.polysect.errors > {errors}"),
+        20,
+    );
+    std::thread::sleep(Duration::from_millis(300));
+    assert_eq!(
+        b.js("return window.polysect.settings.paused;"),
+        json!(false),
+        "a refused trace leaves the motion running"
+    );
+    assert!(
+        b.js("return document.getElementById('status').className;") != json!("ok"),
+        "the refusal is shown"
+    );
+    let traces = b.js("return window.polysect.traces;").as_u64().expect("count");
+    b.type_into("#traceB", "1");
+    b.click("#trace");
+    b.wait_for("the trace", &format!("window.polysect.traces > {traces}"), 20);
+    b.wait_for("paused for the trace", "window.polysect.settings.paused", 10);
+    assert_eq!(
+        b.js("return document.getElementById('status').className;"),
+        json!("ok"),
+        "the trace's success replaced the old refusal"
+    );
+    b.click("#traceClose");
+    b.wait_for(
+        "running again after Close",
+        "!window.polysect.settings.paused",
+        10,
+    );
+    assert_eq!(b.js("return window.polysect.trace;"), Value::Null);
+    // A new scene chosen while a trace holds the motion starts moving.
+    let traces = traces + 1;
+    b.click("#trace");
+    b.wait_for("the trace", &format!("window.polysect.traces > {traces}"), 20);
+    b.wait_for("paused for the trace", "window.polysect.settings.paused", 10);
+    let scene = b.js("return window.polysect.scene;").as_u64().expect("scene");
+    b.type_into("#polygons", "8");
+    b.click("#apply");
+    b.wait_for(
+        "the new scene, moving",
+        &format!(
+            "window.polysect.scene > {scene} && window.polysect.ready && !window.polysect.settings.paused"
+        ),
+        20,
+    );
+    assert_eq!(
+        b.js("return document.getElementById('pause').textContent;"),
+        json!("Pause")
+    );
+    // The help text is in view without scrolling.
+    let help =
+        b.js("return document.getElementById('help').getBoundingClientRect().bottom <= window.innerHeight;");
+    assert_eq!(help, json!(true), "the help text is below the fold");
 
     // 7. SIGTERM stops the server with status 0.
     drop(b);
@@ -901,4 +989,48 @@ fn live_page_screenshots() {
     }
     std::thread::sleep(Duration::from_millis(400));
     std::fs::write(out.join("live_trace.png"), b.screenshot()).expect("written");
+}
+
+/// Without a browser: the served page has the controls and text the browser test uses
+/// (the polygon numbers' switch, the help at the top, the wrapping certificate box) and
+/// its script pauses for a trace only on the answer and resumes on Close.
+#[test]
+fn the_served_page_has_the_help_the_numbers_and_the_trace_controls() {
+    let (_server, url) = start_polysect();
+    let addr = url
+        .trim_start_matches("http://")
+        .trim_end_matches('/')
+        .to_string();
+    let fetch = |path: &str| -> String {
+        let mut s = TcpStream::connect(&addr).expect("connects");
+        write!(s, "GET {path} HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n").expect("sends");
+        let mut out = String::new();
+        s.read_to_string(&mut out).expect("reads");
+        out
+    };
+    let page = fetch("/");
+    let (help, side) = (
+        page.find("id=\"help\"").expect("the help text"),
+        page.find("<fieldset>").expect("the controls"),
+    );
+    assert!(help < side, "the help text comes before the controls");
+    assert!(
+        page.contains("id=\"showNumbers\""),
+        "the polygon numbers can be switched"
+    );
+    assert!(
+        page.contains("#traceText { overflow-wrap: anywhere;"),
+        "the certificate text wraps"
+    );
+    let js = fetch("/live.js");
+    for needle in [
+        "function drawNumbers()",
+        "function traceView(t)",
+        "resumeAfterTrace",
+        "clearStaleError(",
+        "get numbered()",
+        "get traceZoom()",
+    ] {
+        assert!(js.contains(needle), "live.js lacks {needle}");
+    }
 }

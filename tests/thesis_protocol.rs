@@ -52,6 +52,8 @@ fn quick_thesis_protocol_writes_a_consistent_csv() {
         String::from_utf8_lossy(&output.stderr)
     );
     assert!(stdout.contains("CLM counts per query"), "{stdout}");
+    // A mean over no LP or no walk is shown as "—", never as NaN.
+    assert!(!stdout.contains("NaN") && !stdout.contains("inf"), "{stdout}");
 
     let config = ThesisConfig::quick(&dir);
     let (header, rows) = read_csv(&dir.join("thesis.csv"));

@@ -4,7 +4,7 @@ use crate::kernel::{Kernel, Point};
 use crate::polygon::SimplePolygon;
 use std::cmp::Ordering;
 
-/// [`ListSweep`]: Žalik's sweep line with two lists of pierced edges (the crossings report).
+/// [`ListSweep`]: Žalik's sweep line with two lists of pierced edges (as in the report of docs/crossings.md).
 ///
 /// # Algorithm
 /// The n + m vertices of both polygons are the events, sorted lexicographically:

@@ -1,4 +1,4 @@
-//! Seed 003's experiment (Figure 6.1, Tables 6.1 and 6.2): the crossings of two random
+//! The experiment of docs/crossings.md's report (its figure and its two tables): the crossings of two random
 //! simple polygons (space partitioning) with n vertices each, for uniform points in
 //! [0, Δ)² with Δ ∈ {10, 50, 100, 500} and normal points (μ = 0) with
 //! σ ∈ {10, 20, 50, 100}, timed for four algorithms:
@@ -36,9 +36,9 @@ use rand::rngs::SmallRng;
 use std::hint::black_box;
 use std::io;
 
-/// Δ of Table 6.1 (uniform points in [0, Δ)²).
+/// Δ of the uniform table (uniform points in [0, Δ)²).
 pub const DELTAS: [f64; 4] = [10.0, 50.0, 100.0, 500.0];
-/// σ of Table 6.2 (normal points, μ = 0).
+/// σ of the normal table (normal points, μ = 0).
 pub const SIGMAS: [f64; 4] = [10.0, 20.0, 50.0, 100.0];
 /// The n of both tables.
 pub const SEED_SIZES: [usize; 8] = [5, 50, 100, 200, 500, 800, 1000, 2000];

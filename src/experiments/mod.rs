@@ -11,7 +11,7 @@
 //! | `crossover` | CLM against Convert (walk the lists, then Barba) on linked polygons, and the n from which sampling wins | 4.4, Fig. 4.8 | `crossover.csv`, `crossover.svg` |
 //! | `trade` | every algorithm × kernel on adversarial families: time per query and wrong answers against [`Linear`](crate::intersect::Linear) under the exact kernel; the exact kernel's overhead (exact/fast time) per algorithm on random rotated ellipses at [`Config::ratio_log2_sizes`] | | `trade.csv`, `trade_ratio.csv`, `trade.md`, `trade.svg` |
 //! | `clm-factor` | CLM's time against its sample factor c (samples of ⌈c·√n⌉) | | `clm_factor.csv`, `clm_factor.svg` |
-//! | `crossings` | crossing points of two random simple polygons: the sweep and three brute forces against n, for every Δ and σ of the crossings report | the crossings report's Fig. 6.1, Tables 6.1–6.2 | `crossings.csv`, `crossings_uniform.svg`, `crossings_normal.svg`, `crossings_ratios.svg` |
+//! | `crossings` | crossing points of two random simple polygons: the sweep and three brute forces against n, for every Δ and σ of the report in docs/crossings.md | that report's figure and its uniform and normal tables | `crossings.csv`, `crossings_uniform.svg`, `crossings_normal.svg`, `crossings_ratios.svg` |
 //!
 //! # Sizes
 //! n is the number of vertices of *each* polygon (the thesis's figures use the total,

@@ -33,11 +33,14 @@ pub struct Chart<'a> {
     pub log2_x: bool,
     /// y on a log10 axis.
     pub log_y: bool,
-    /// Points only (a scatter plot), with each series' name written beside its points.
+    /// Points only (a scatter plot), each series named in a legend beside the points
+    /// (names written at the points would overlap where points crowd).
     pub scatter: bool,
 }
 
-const COLORS: [RGBColor; 10] = [
+/// Twenty distinct colours (the ten of the common "category 10" palette, then ten of
+/// other hues and lightness), so that charts of up to twenty series repeat none.
+const COLORS: [RGBColor; 20] = [
     RGBColor(31, 119, 180),
     RGBColor(255, 127, 14),
     RGBColor(44, 160, 44),
@@ -48,6 +51,16 @@ const COLORS: [RGBColor; 10] = [
     RGBColor(127, 127, 127),
     RGBColor(188, 189, 34),
     RGBColor(23, 190, 207),
+    RGBColor(0, 0, 0),
+    RGBColor(118, 29, 110),
+    RGBColor(0, 90, 50),
+    RGBColor(160, 100, 0),
+    RGBColor(0, 60, 130),
+    RGBColor(255, 70, 160),
+    RGBColor(90, 200, 100),
+    RGBColor(120, 120, 255),
+    RGBColor(170, 0, 0),
+    RGBColor(90, 90, 40),
 ];
 
 fn err(e: impl std::fmt::Display) -> io::Error {
@@ -125,7 +138,7 @@ pub fn draw(path: &Path, chart: &Chart<'_>, series: &[Series]) -> io::Result<()>
     let (x0, x1) = (
         x0 - pad_x,
         x1 + if chart.scatter {
-            (x1 - x0) * 0.25 + pad_x
+            (x1 - x0) * 0.6 + pad_x
         } else {
             pad_x
         },
@@ -172,15 +185,9 @@ pub fn draw(path: &Path, chart: &Chart<'_>, series: &[Series]) -> io::Result<()>
         let color = COLORS[i % COLORS.len()];
         if chart.scatter {
             c.draw_series(p.iter().map(|&xy| Circle::new(xy, 4, color.filled())))
-                .map_err(err)?;
-            c.draw_series(p.iter().map(|&(x, y)| {
-                Text::new(
-                    s.name.clone(),
-                    (x, y),
-                    ("sans-serif", 11).into_font().color(&color),
-                )
-            }))
-            .map_err(err)?;
+                .map_err(err)?
+                .label(&s.name)
+                .legend(move |(x, y)| Circle::new((x + 8, y), 4, color.filled()));
         } else {
             c.draw_series(LineSeries::new(p.iter().copied(), color.stroke_width(2)))
                 .map_err(err)?
@@ -190,20 +197,61 @@ pub fn draw(path: &Path, chart: &Chart<'_>, series: &[Series]) -> io::Result<()>
                 .map_err(err)?;
         }
     }
-    if !chart.scatter {
-        c.configure_series_labels()
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK.mix(0.3))
-            .position(SeriesLabelPosition::UpperLeft)
-            .draw()
-            .map_err(err)?;
-    }
+    // Line charts: the legend at the upper left; scatter charts: in the room kept free
+    // on the right.
+    c.configure_series_labels()
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK.mix(0.3))
+        .position(if chart.scatter {
+            SeriesLabelPosition::UpperRight
+        } else {
+            SeriesLabelPosition::UpperLeft
+        })
+        .draw()
+        .map_err(err)?;
     root.present().map_err(err)
 }
 
 #[cfg(test)]
 mod tests {
-    use super::{log_tick, short};
+    use super::{COLORS, Chart, Series, draw, log_tick, short};
+
+    #[test]
+    fn scatter_names_every_series_once_in_a_legend_in_its_own_colour() {
+        let mut distinct: Vec<_> = COLORS.iter().map(|c| (c.0, c.1, c.2)).collect();
+        distinct.sort_unstable();
+        distinct.dedup();
+        assert_eq!(distinct.len(), COLORS.len(), "a colour repeats");
+        // Twelve series, several at the same point (where names written at the points
+        // would overlap).
+        let series: Vec<Series> = (0..12)
+            .map(|i| Series::new(format!("series-{i}"), vec![(f64::from(i % 3), 100.0)]))
+            .collect();
+        let path = std::env::temp_dir().join(format!("polysect-scatter-{}.svg", std::process::id()));
+        let chart = Chart {
+            title: "t",
+            x_label: "x",
+            y_label: "y",
+            log2_x: false,
+            log_y: true,
+            scatter: true,
+        };
+        draw(&path, &chart, &series).unwrap();
+        let svg = std::fs::read_to_string(&path).unwrap();
+        let _ = std::fs::remove_file(&path);
+        for s in &series {
+            assert_eq!(
+                svg.matches(&format!("\n{}\n</text>", s.name)).count(),
+                1,
+                "{}: {svg}",
+                s.name
+            );
+        }
+        for c in &COLORS[..12] {
+            let hex = format!("#{:02X}{:02X}{:02X}", c.0, c.1, c.2);
+            assert!(svg.to_uppercase().contains(&hex), "colour {hex} unused");
+        }
+    }
 
     #[test]
     fn tick_labels_are_short_and_round() {

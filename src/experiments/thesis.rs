@@ -418,6 +418,16 @@ fn num(x: f64, digits: usize) -> String {
     }
 }
 
+/// A table cell: `x` with `digits` decimals, or "—" when it is not a number (a mean
+/// over no LP or no walk, a ratio to a zero time).
+fn cell(x: f64, digits: usize) -> String {
+    if x.is_finite() {
+        format!("{x:.digits$}")
+    } else {
+        "—".to_string()
+    }
+}
+
 fn csv(points: &[ThesisPoint]) -> Csv {
     let mut csv = Csv::new(&CSV_HEADER);
     for p in points {
@@ -603,8 +613,8 @@ fn summary(points: &[ThesisPoint]) -> String {
                             && p.log2_total == lt
                             && p.intersecting == intersecting
                     })
-                    .map_or("–".to_string(), |p| {
-                        format!("{:.0} ({:.0}) ×{}", p.mean_ns, p.median_ns, p.pairs)
+                    .map_or("—".to_string(), |p| {
+                        format!("{} ({}) ×{}", cell(p.mean_ns, 0), cell(p.median_ns, 0), p.pairs)
                     })
             };
             out.push_str(&format!(" {} / {} |", cell(true), cell(false)));
@@ -626,20 +636,20 @@ fn summary(points: &[ThesisPoint]) -> String {
         let (yes, no) = (get(true), get(false));
         for p in [yes, no].into_iter().flatten() {
             let r = match (yes, no) {
-                (Some(a), Some(b)) => format!("{:.1}", b.mean_ns / a.mean_ns),
+                (Some(a), Some(b)) => cell(b.mean_ns / a.mean_ns, 1),
                 _ => "–".into(),
             };
             out.push_str(&format!(
-                "| 2^{lt} | {} | {:.2} | {:.2} | {:.1} | {:.1} | {:.2} | {:.1} | {:.1} | {:.0} | {r} |\n",
+                "| 2^{lt} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {r} |\n",
                 outcome_name(p.intersecting),
-                p.counts.lp_calls_mean,
-                p.counts.one_lp_share,
-                p.counts.constraints_per_lp,
-                p.counts.work_per_lp,
-                p.counts.walks_mean,
-                p.counts.steps_per_walk,
-                p.counts.samples_mean,
-                p.mean_ns
+                cell(p.counts.lp_calls_mean, 2),
+                cell(p.counts.one_lp_share, 2),
+                cell(p.counts.constraints_per_lp, 1),
+                cell(p.counts.work_per_lp, 1),
+                cell(p.counts.walks_mean, 2),
+                cell(p.counts.steps_per_walk, 1),
+                cell(p.counts.samples_mean, 1),
+                cell(p.mean_ns, 0)
             ));
         }
     }

@@ -47,6 +47,16 @@ pub enum PolygonError {
         /// Number of interior rings.
         count: usize,
     },
+    /// A shape constructor ([`ConvexPolygon::rectangle`](super::ConvexPolygon::rectangle)
+    /// and its siblings) was given a parameter it cannot build a polygon from: not
+    /// finite, a size that is zero or negative, fewer than three vertices, or a value
+    /// for which rounding to `f64` would collapse the shape.
+    BadParameter {
+        /// The parameter's name, as in the constructor's signature.
+        parameter: &'static str,
+        /// What is wrong with it.
+        reason: String,
+    },
 }
 
 impl fmt::Display for PolygonError {
@@ -82,6 +92,9 @@ impl fmt::Display for PolygonError {
                     f,
                     "the polygon has {count} interior ring(s); a convex polygon has no holes"
                 )
+            }
+            PolygonError::BadParameter { parameter, reason } => {
+                write!(f, "parameter `{parameter}`: {reason}")
             }
         }
     }

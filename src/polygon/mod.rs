@@ -7,7 +7,10 @@
 //! O(log n) line, ray and segment queries on a convex polygon
 //! ([`ConvexPolygon::line_chord`] and its siblings). Everyday queries on one polygon
 //! (point containment, the extreme vertex in a direction, area, centroid) are methods
-//! of these types, indexed in [`queries`].
+//! of these types, indexed in [`queries`]. Common shapes have constructors on both
+//! convex types: [`ConvexPolygon::rectangle`], [`ConvexPolygon::oriented_rectangle`],
+//! [`ConvexPolygon::regular`], [`ConvexPolygon::circle`] and [`ConvexPolygon::hull_of`]
+//! (invalid parameters are a [`PolygonError::BadParameter`]).
 //!
 //! # Orientation and cleaning
 //! Input may come clockwise or counter-clockwise, from any start vertex. The two
@@ -28,6 +31,7 @@ mod hull;
 mod line_query;
 mod linked;
 pub mod queries;
+mod shapes;
 mod simple;
 
 pub(crate) use boundary::Boundary;

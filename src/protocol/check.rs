@@ -261,12 +261,25 @@ pub fn for_each_pair<R: Read>(
     input: R,
     mut each: impl FnMut(u64, Result<(Vec<Point>, Vec<Point>), String>) -> bool,
 ) -> io::Result<()> {
+    for_each_pair_with_id(input, |line, _, pair| each(line, pair))
+}
+
+/// [`for_each_pair`], handing `each` also the line's `"id"` as its verbatim JSON text
+/// (`None` when the line has none, or when it is not valid JSON).
+///
+/// # Errors
+/// Only I/O errors of `input`.
+pub fn for_each_pair_with_id<R: Read>(
+    input: R,
+    mut each: impl FnMut(u64, Option<&str>, Result<(Vec<Point>, Vec<Point>), String>) -> bool,
+) -> io::Result<()> {
     let mut ch = Channel::new(input, io::sink());
     let mut line = 0;
-    each_line(&mut ch, parse_pair, |_, parsed| {
+    each_line(&mut ch, parse_pair, |ch, parsed| {
         line += 1;
         Ok(each(
             line,
+            ch.id.as_deref(),
             parsed.and_then(|pair| pair.lists().map_err(|m| format!("line {line}: {m}"))),
         ))
     })

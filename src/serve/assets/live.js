@@ -21,6 +21,8 @@
     times: [], fps: 0, drawMs: 0, refusals: 0, errors: 0, lastRefusal: "", lastError: "",
     view: { scale: 1, ox: 0, oy: 0, dpr: 1 }, figuresAt: 0, figuresOf: null, appliedParams: false,
     trace: null, traceStep: 0, traces: 0,
+    // The trace paused a running simulation: Close (or a new scene) resumes it.
+    resumeAfterTrace: false, statusKind: "", numbered: 0, traceZoom: 0,
   };
 
   function send(msg) {
@@ -30,6 +32,19 @@
     const el = $("status");
     el.textContent = text;
     el.className = kind || "";
+    S.statusKind = kind || "";
+  }
+  // A success replaces an error or a refusal still on show (it is about an older action).
+  function clearStaleError(text) {
+    if (S.statusKind === "error" || S.statusKind === "refused") status(text, "ok");
+  }
+  // Resumes the simulation if a trace paused it.
+  function resumeIfTracePaused() {
+    if (S.resumeAfterTrace) {
+      S.resumeAfterTrace = false;
+      // Sent even if the pause is not confirmed yet: it may still be on its way.
+      send({ op: "settings", paused: false });
+    }
   }
 
   // ---- connection ----
@@ -45,7 +60,11 @@
   function onText(m) {
     switch (m.type) {
       case "settings": onSettings(m); break;
-      case "scene": S.sizes = m.sizes; S.world = m.world; S.scene = m.scene; S.ready = false; S.trace = null; showTraceStep(); resize(); break;
+      case "scene":
+        S.sizes = m.sizes; S.world = m.world; S.scene = m.scene; S.ready = false; S.trace = null; showTraceStep(); resize();
+        resumeIfTracePaused();
+        if (S.scene > 1) status(`New scene: ${m.sizes.length} polygons`, "ok");
+        break;
       case "frame": onFrame(m); break;
       case "edit": onEdit(m); break;
       case "trace": onTrace(m); break;
@@ -158,6 +177,7 @@
     S.edits++;
     S.dirty = true;
     if (m.kind !== "move") status(`${m.kind === "insert" ? "Inserted" : "Removed"} vertex ${m.vertex} of polygon ${m.polygon}`, "ok");
+    else clearStaleError(`Moved vertex ${m.vertex} of polygon ${m.polygon}`);
     if (S.settings.paused) requestFrame(true); // the pairs for the edited polygon
     flushMove();
   }
@@ -308,6 +328,7 @@
       if (h) { ctx.fillStyle = "#1d2330"; ctx.fill(h); }
     }
     ctx.setTransform(d, 0, 0, d, 0, 0);
+    if ($("showNumbers").checked) drawNumbers(); else S.numbered = 0;
     if ($("showNormals").checked) {
       ctx.strokeStyle = "#5a0f00"; ctx.lineWidth = 2;
       ctx.beginPath();
@@ -335,6 +356,21 @@
     S.drawMs = 0.9 * S.drawMs + 0.1 * (performance.now() - t0);
     figures();
   }
+  // Each polygon's index (the step-through's P and Q) at its box centre, where the box
+  // is at least 14 px wide on screen (smaller ones would be covered by their number).
+  function drawNumbers() {
+    const v = S.view;
+    ctx.font = "11px system-ui, sans-serif"; ctx.textAlign = "center"; ctx.textBaseline = "middle";
+    ctx.lineWidth = 3; ctx.strokeStyle = "rgba(255,255,255,0.85)"; ctx.fillStyle = "#1d2330";
+    S.numbered = 0;
+    for (let i = 0; i < S.polys.length; i++) {
+      const b = S.polys[i].box;
+      if ((b[2] - b[0]) * v.scale < 14) continue;
+      const c = centre(i), x = v.ox + c[0] * v.scale, y = v.oy + c[1] * v.scale;
+      ctx.strokeText(String(i), x, y); ctx.fillText(String(i), x, y);
+      S.numbered++;
+    }
+  }
   // ---- step-through ----
   const ROLE = {
     triangle: "#1f7a3a", bound: "#7a5cc2", pencil: "#c27a00", window: "#d4a017", sample: "#0a7f8c",
@@ -342,6 +378,9 @@
   };
   function onTrace(m) {
     S.trace = m; S.traceStep = 0; S.traces++;
+    // Pause on the answer, not on the request: a refused trace leaves the motion alone.
+    if (S.settings && !S.settings.paused) { S.resumeAfterTrace = true; send({ op: "settings", paused: true }); }
+    status(`Trace of polygons ${m.polygons[0]} and ${m.polygons[1]} (${m.algorithm}): ${m.steps.length} steps; Close to leave it`, "ok");
     showTraceStep();
   }
   function showTraceStep() {
@@ -350,15 +389,28 @@
     const st = t.steps[S.traceStep];
     const last = S.traceStep === t.steps.length - 1;
     $("traceText").textContent = `${t.algorithm}, step ${S.traceStep + 1} of ${t.steps.length}: ${st.text}` +
-      (last ? ` — certificate ${JSON.stringify(t.certificate)}` : "");
+      (last ? ` — certificate ${JSON.stringify(t.certificate).replace(/,/g, ", ")}` : "");
     S.dirty = true;
   }
+  // The view of a trace: the box of its two polygons fitted to the canvas (with a margin),
+  // so that small polygons in a large scene fill the picture.
+  function traceView(t) {
+    const b = bbox(Float64Array.from(t.p.concat(t.q).flat()));
+    const r = canvas.getBoundingClientRect(), pad = 28;
+    const w = Math.max(b[2] - b[0], 1e-300), h = Math.max(b[3] - b[1], 1e-300);
+    const scale = Math.min((r.width - 2 * pad) / w, (r.height - 2 * pad) / h);
+    return { scale, ox: (r.width - w * scale) / 2 - b[0] * scale, oy: (r.height - h * scale) / 2 - b[1] * scale, extent: w + h };
+  }
   function drawTrace() {
-    const t = S.trace, st = t.steps[S.traceStep], v = S.view;
+    const t = S.trace, st = t.steps[S.traceStep], v = traceView(t);
+    S.traceZoom = v.scale / S.view.scale;
     const X = (pt) => v.ox + pt[0] * v.scale, Y = (pt) => v.oy + pt[1] * v.scale;
     ctx.save();
-    ctx.fillStyle = "rgba(255,255,255,0.55)";
-    ctx.fillRect(v.ox, v.oy, S.world[0] * v.scale, S.world[1] * v.scale);
+    const r = canvas.getBoundingClientRect();
+    ctx.fillStyle = "rgba(251,252,254,0.93)";
+    ctx.fillRect(0, 0, r.width, r.height);
+    ctx.fillStyle = "#566"; ctx.font = "12px system-ui, sans-serif"; ctx.textAlign = "left"; ctx.textBaseline = "top";
+    ctx.fillText(`Zoomed on P = polygon ${t.polygons[0]} (blue) and Q = polygon ${t.polygons[1]} (red); Close returns to the scene`, 8, 6);
     const outline = (pts, colour, width, dash) => {
       ctx.beginPath();
       pts.forEach((pt, k) => (k ? ctx.lineTo(X(pt), Y(pt)) : ctx.moveTo(X(pt), Y(pt))));
@@ -378,7 +430,7 @@
     outline(t.p, "#2d5a96", 1); outline(t.q, "#b3260d", 1);
     spans(t.p, st.pruned[0], "#9aa3b2", 3, [4, 3]); spans(t.q, st.pruned[1], "#9aa3b2", 3, [4, 3]);
     spans(t.p, st.kept[0], "#2d5a96", 3.5); spans(t.q, st.kept[1], "#b3260d", 3.5);
-    const W = S.world[0] + S.world[1];
+    const W = v.extent;
     for (const mk of st.marks) {
       const c = ROLE[mk.role] || "#000", pts = mk.points;
       ctx.setLineDash(mk.role === "bound" || mk.role === "window" ? [6, 4] : []);
@@ -403,7 +455,6 @@
   }
   function requestTrace() {
     if (!S.ready) return;
-    if (S.settings && !S.settings.paused) send({ op: "settings", paused: true });
     send({ op: "trace", scene: S.scene, polygons: [Number($("traceA").value), Number($("traceB").value)], algorithm: $("traceAlgorithm").value });
   }
   function traceMove(d) {
@@ -452,18 +503,21 @@
   }
 
   // ---- controls ----
+  // A new scene keeps the user's pause; one a trace made ends with the trace (onText).
   $("apply").onclick = () => send({ op: "settings", polygons: Number($("polygons").value), vertices: Number($("vertices").value), seed: Number($("seed").value) });
   $("strategy").onchange = (e) => send({ op: "settings", strategy: e.target.value });
   $("precision").onchange = (e) => send({ op: "settings", precision: e.target.value });
   $("speed").oninput = (e) => send({ op: "settings", speed: Number(e.target.value) });
-  $("pause").onclick = () => S.settings && send({ op: "settings", paused: !S.settings.paused });
+  // The user's own choice overrides a pause the trace made.
+  $("pause").onclick = () => { S.resumeAfterTrace = false; if (S.settings) send({ op: "settings", paused: !S.settings.paused }); };
   $("step").onclick = () => { if (S.ready && !S.inflight) { S.inflight = true; send({ op: "step" }); } };
   $("showVertices").onchange = () => { S.dirty = true; };
   $("showNormals").onchange = () => { S.dirty = true; };
+  $("showNumbers").onchange = () => { S.dirty = true; };
   $("trace").onclick = requestTrace;
   $("traceBack").onclick = () => traceMove(-1);
   $("traceForward").onclick = () => traceMove(1);
-  $("traceClose").onclick = () => { S.trace = null; showTraceStep(); };
+  $("traceClose").onclick = () => { S.trace = null; showTraceStep(); resumeIfTracePaused(); };
   window.addEventListener("resize", resize);
 
   // What the page shows, for tests and the curious: exact world coordinates (base +
@@ -493,6 +547,10 @@
         p: t.p, q: t.q };
     },
     get traces() { return S.traces; },
+    // How many polygons carry their number on the canvas, and how much the last trace
+    // drawn was magnified against the scene's view.
+    get numbered() { return S.numbered; },
+    get traceZoom() { return S.traceZoom; },
     shown() {
       return {
         scene: S.scene, frame: S.frame, pairs: S.pairs.map((p) => [p[0], p[1]]),
