@@ -3,6 +3,38 @@
 
 use super::*;
 
+/// One polygon's wire vertex ids: id → vertex handle for the live vertices, and the next
+/// id to hand out. Ids are never reused; a removed vertex's entry is dropped, so the map
+/// holds as many entries as the polygon has vertices (a hash map: its capacity stays
+/// within a small factor of the most vertices it has held at once, whatever the number
+/// of insertions and removals).
+#[derive(Debug)]
+pub(super) struct VertexIds {
+    map: HashMap<u32, VertexId>,
+    next: u32,
+}
+
+impl VertexIds {
+    /// Ids 0, 1, ... for `vertices`, in order.
+    pub(super) fn new(vertices: impl Iterator<Item = VertexId>) -> VertexIds {
+        let map: HashMap<u32, VertexId> = (0u32..).zip(vertices).collect();
+        let next = map.len() as u32;
+        VertexIds { map, next }
+    }
+
+    /// The entries the map has room for (its memory), for the tests.
+    #[cfg(test)]
+    pub(super) fn capacity(&self) -> usize {
+        self.map.capacity()
+    }
+
+    /// The number of live ids.
+    #[cfg(test)]
+    pub(super) fn len(&self) -> usize {
+        self.map.len()
+    }
+}
+
 impl Simulation {
     fn body(&self, polygon: usize) -> Result<&Body, EditFailure> {
         self.bodies.get(polygon).ok_or_else(|| {
@@ -14,9 +46,10 @@ impl Simulation {
     }
 
     fn vertex(&self, polygon: usize, vertex: u32) -> Result<VertexId, EditFailure> {
-        match self.body(polygon)?.ids.get(vertex as usize) {
-            Some(Some(v)) => Ok(*v),
-            Some(None) => Err(EditFailure::Invalid(format!(
+        let ids = &self.body(polygon)?.ids;
+        match ids.map.get(&vertex) {
+            Some(v) => Ok(*v),
+            None if vertex < ids.next => Err(EditFailure::Invalid(format!(
                 "vertex {vertex} of polygon {polygon} was removed"
             ))),
             None => Err(EditFailure::Invalid(format!(
@@ -76,7 +109,8 @@ impl Simulation {
     ///
     /// # Errors
     /// As [`move_vertex`](Self::move_vertex), and `Invalid` once the polygon has handed
-    /// out [`MAX_VERTEX_IDS`] ids.
+    /// out [`MAX_VERTEX_IDS`] ids, has [`MAX_VERTICES`] vertices, or the scene has
+    /// [`MAX_TOTAL_VERTICES`] in all.
     pub fn insert_vertex(
         &mut self,
         polygon: usize,
@@ -85,8 +119,8 @@ impl Simulation {
     ) -> Result<Edit, EditFailure> {
         let a = self.vertex(polygon, after)?;
         let p = Self::target(point)?;
-        let next = self.bodies[polygon].ids.len();
-        if next >= MAX_VERTEX_IDS {
+        let next = self.bodies[polygon].ids.next;
+        if next as usize >= MAX_VERTEX_IDS {
             return Err(EditFailure::Invalid(format!(
                 "polygon {polygon} has used all its {MAX_VERTEX_IDS} vertex ids; start a new scene"
             )));
@@ -97,13 +131,22 @@ impl Simulation {
                 "polygon {polygon} already has {MAX_VERTICES} vertices, the page's limit"
             )));
         }
+        if self.vertices >= MAX_TOTAL_VERTICES {
+            return Err(EditFailure::Invalid(format!(
+                "the scene already has {} vertices, the page's limit in all; remove one first",
+                self.vertices
+            )));
+        }
         let v = on_scene!(&mut self.store, s => s.insert_vertex(id, a, p)).map_err(refused)?;
-        self.bodies[polygon].ids.push(Some(v));
+        let ids = &mut self.bodies[polygon].ids;
+        ids.map.insert(next, v);
+        ids.next = next + 1;
+        self.vertices += 1;
         self.edited(polygon);
         Ok(Edit {
             polygon,
             kind: "insert",
-            vertex: next as u32,
+            vertex: next,
             after: Some(after),
             point: Some(self.base(polygon, p)),
         })
@@ -117,7 +160,8 @@ impl Simulation {
         let v = self.vertex(polygon, vertex)?;
         let id = self.bodies[polygon].id;
         on_scene!(&mut self.store, s => s.remove_vertex(id, v)).map_err(refused)?;
-        self.bodies[polygon].ids[vertex as usize] = None;
+        self.bodies[polygon].ids.map.remove(&vertex);
+        self.vertices -= 1;
         self.edited(polygon);
         Ok(Edit {
             polygon,

@@ -35,8 +35,11 @@
 //!
 //! # Bounds
 //! At most [`MAX_POLYGONS`] polygons of [`MIN_VERTICES`]..=[`MAX_VERTICES`] vertices,
-//! [`MAX_TOTAL_VERTICES`] in all; speed in 0..=[`MAX_SPEED`]; each polygon hands out at
-//! most [`MAX_VERTEX_IDS`] vertex ids.
+//! [`MAX_TOTAL_VERTICES`] in all (checked for a new scene and for every insertion);
+//! speed in 0..=[`MAX_SPEED`]; each polygon hands out at most [`MAX_VERTEX_IDS`] vertex
+//! ids. The map from wire ids to vertices holds the live vertices only (a removed
+//! vertex's id leaves it), so a session's memory is bounded by its live scene whatever
+//! its history of edits.
 
 use super::contact::{separation_normal, witness_normal};
 use crate::intersect::{Algorithm, Certificate, Trace, trace_rng};
@@ -173,6 +176,7 @@ macro_rules! on_scene {
 
 // After the macro: it is in scope only below its definition.
 mod edits;
+use edits::VertexIds;
 
 impl Store {
     fn new(precision: Precision, strategy: Strategy) -> Store {
@@ -194,8 +198,8 @@ struct Body {
     velocity: [f64; 2],
     /// Proportional to the area.
     mass: f64,
-    /// Wire vertex id → vertex handle (`None` once removed). Ids are never reused.
-    ids: Vec<Option<VertexId>>,
+    /// Wire vertex id → vertex handle, live vertices only.
+    ids: VertexIds,
 }
 
 /// Milliseconds spent in each part of a frame on the server.
@@ -278,6 +282,8 @@ pub struct Simulation {
     /// Per candidate pair `[i, j]`, `i < j`: the contact normal from `i` to `j` given by
     /// the separating edge of the last frame that found the pair disjoint.
     separators: HashMap<[usize; 2], [f64; 2]>,
+    /// Vertices in all polygons (at most [`MAX_TOTAL_VERTICES`], edits included).
+    vertices: usize,
 }
 
 impl Simulation {
@@ -295,6 +301,7 @@ impl Simulation {
             scene,
             frame: 0,
             separators: HashMap::new(),
+            vertices: 0,
         };
         let mut rng = SmallRng::seed_from_u64(settings.seed);
         for (points, velocity) in generate(&settings, &mut rng) {
@@ -303,8 +310,9 @@ impl Simulation {
                 // Snapping made some vertices collinear: keep their hull (still on the grid).
                 Err(_) => LinkedPolygon::from_convex(&convex_hull(&points).map_err(|e| e.to_string())?),
             };
-            let ids = polygon.iter().map(|(v, _)| Some(v)).collect();
+            let ids = VertexIds::new(polygon.iter().map(|(v, _)| v));
             let mass = area(polygon.iter().map(|(_, p)| p));
+            sim.vertices += polygon.len();
             let id = on_scene!(&mut sim.store, s => s.insert(polygon));
             sim.index.insert(id, sim.bodies.len());
             sim.bodies.push(Body {

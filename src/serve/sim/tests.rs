@@ -232,3 +232,81 @@ fn switching_precision_keeps_polygons_handles_and_offsets() {
         .expect("valid");
     assert!(sim.adjust(s.strategy, Precision::Exact, 9.0, false).is_err());
 }
+
+/// Insertions and removals without end on one polygon: the wire-id map holds the live
+/// vertices only, and its memory stays within a small factor of the most vertices the
+/// polygon had at once, however many ids were handed out.
+#[test]
+fn vertex_id_memory_is_bounded_by_the_live_polygon() {
+    let mut sim = Simulation::new(
+        Settings {
+            polygons: 1,
+            ..Settings::default()
+        },
+        1,
+    )
+    .expect("valid");
+    let n = sim.settings().vertices;
+    let poly = &sim.current_vertices()[0];
+    let (a, b) = (poly[0], poly[1]);
+    let (ex, ey) = (b.x - a.x, b.y - a.y);
+    let out = [0.5 * (a.x + b.x) + 0.01 * ey, 0.5 * (a.y + b.y) - 0.01 * ex];
+    let cycles = 200_000u32;
+    let mut most = 0;
+    for k in 0..cycles {
+        let e = sim.insert_vertex(0, 0, out).expect("valid insertion");
+        assert_eq!(e.vertex, n as u32 + k, "ids are never reused");
+        assert_eq!(sim.bodies[0].ids.len(), n + 1);
+        most = most.max(sim.bodies[0].ids.capacity());
+        sim.remove_vertex(0, e.vertex).expect("removal");
+        assert_eq!(sim.bodies[0].ids.len(), n);
+    }
+    assert!(
+        most <= 4 * (n + 1),
+        "{cycles} cycles on {} live vertices: the id map grew to {most} entries",
+        n + 1
+    );
+    let (_, base) = sim.base_vertices();
+    sim.debug_validate(&base).expect("consistent");
+}
+
+/// A scene of exactly [`MAX_TOTAL_VERTICES`] vertices: no insertion is accepted, in any
+/// polygon, until a removal makes room; then exactly one.
+#[test]
+fn insertions_are_refused_at_the_total_vertex_bound() {
+    let settings = Settings {
+        polygons: 64,
+        vertices: MAX_TOTAL_VERTICES / 64,
+        ..Settings::default()
+    };
+    assert!(
+        settings.vertices < MAX_VERTICES,
+        "the per-polygon bound is not the one hit"
+    );
+    let mut sim = Simulation::new(settings, 1).expect("valid: exactly the bound");
+    let now = sim.current_vertices();
+    let total: usize = now.iter().map(Vec::len).sum();
+    assert_eq!(total, MAX_TOTAL_VERTICES);
+    // Just outside the middle of edge 4 → 5, by a millionth of the edge: the turn
+    // there is far smaller than the polygon's turn per vertex, so the store would
+    // accept it; only the bound refuses it.
+    let bump = |i: usize| {
+        let (a, b) = (now[i][4], now[i][5]);
+        let (ex, ey) = (b.x - a.x, b.y - a.y);
+        [0.5 * (a.x + b.x) + 1e-6 * ey, 0.5 * (a.y + b.y) - 1e-6 * ex]
+    };
+    for i in [0, 17, 63] {
+        match sim.insert_vertex(i, 4, bump(i)) {
+            Err(EditFailure::Invalid(m)) => assert!(m.contains("in all"), "{m}"),
+            other => panic!("polygon {i}: expected the bound in all, got {other:?}"),
+        }
+    }
+    sim.remove_vertex(0, 5).expect("removal");
+    sim.insert_vertex(17, 4, bump(17)).expect("room for one");
+    match sim.insert_vertex(63, 4, bump(63)) {
+        Err(EditFailure::Invalid(m)) => assert!(m.contains("in all"), "{m}"),
+        other => panic!("expected the bound in all, got {other:?}"),
+    }
+    let total: usize = sim.current_vertices().iter().map(Vec::len).sum();
+    assert_eq!(total, MAX_TOTAL_VERTICES);
+}
