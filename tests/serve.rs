@@ -267,7 +267,7 @@ enum Cut {
     /// The server closed without an answer.
     Closed,
     /// Still open after `LONG`.
-    NotCut,
+    StillOpen,
 }
 
 /// Far longer than any deadline the tests set: only a server that never cuts reaches it.
@@ -301,7 +301,7 @@ fn dribble(addr: &str) -> Cut {
         }
     }
     if answer.is_empty() {
-        return Cut::NotCut;
+        return Cut::StillOpen;
     }
     let text = String::from_utf8_lossy(&answer);
     Cut::Answered(
@@ -333,7 +333,7 @@ fn slow_heads_are_cut_at_the_deadline_and_a_normal_client_is_served_meanwhile() 
         .into_iter()
         .map(|h| h.join().expect("the slow client ends"))
         .collect();
-    assert!(!cuts.contains(&Cut::NotCut), "{cuts:?}");
+    assert!(!cuts.contains(&Cut::StillOpen), "{cuts:?}");
     // At most one made room for the normal client; the others met the deadline.
     let timed_out = cuts.iter().filter(|c| **c == Cut::Answered(408)).count();
     assert!(timed_out >= 3, "{cuts:?}");

@@ -13,13 +13,25 @@
 //!
 //! # Threads and bounds
 //! One thread accepts connections; each connection gets a thread that reads one request
-//! head (at most [`http::MAX_HEAD_BYTES`], 10 s to arrive) and either answers it (the
-//! page, its script) or upgrades it to the WebSocket and runs a [`Session`] until the
-//! page closes. At most [`MAX_CONNECTIONS`] connections are served at once and at most
-//! [`MAX_SESSIONS`] of them are pages (a busy server answers 503). WebSocket messages
-//! above [`protocol::MAX_TRANSPORT_BYTES`] close the connection; smaller ones above
-//! [`protocol::MAX_MESSAGE_BYTES`] get an error reply. A WebSocket handshake whose
-//! `Origin` is not this server is refused (403), so other web sites cannot drive it.
+//! head (at most [`http::MAX_HEAD_BYTES`], all of it within [`HEAD_DEADLINE`], else
+//! 408) and either answers it (the page, its script) or upgrades it to the WebSocket
+//! and runs a [`Session`] until the page closes or sends nothing for [`IDLE_TIMEOUT`]
+//! (closed with status 1001). At most [`MAX_CONNECTIONS`] connections are served at
+//! once and at most [`MAX_SESSIONS`] of them are pages. When every connection is taken,
+//! the one that has been sending its head the longest is closed to make room (so slow
+//! heads cannot shut normal clients out); when none is sending a head, the new one gets
+//! 503. [`Config`] holds these limits. WebSocket messages above
+//! [`protocol::MAX_TRANSPORT_BYTES`] close the connection; smaller ones above
+//! [`protocol::MAX_MESSAGE_BYTES`] get an error reply; a text message that is not UTF-8
+//! gets an error reply and a 1007 close.
+//!
+//! # Who may connect
+//! Every request's `Host` must name this server ([`http::host_names_server`]: loopback
+//! names and addresses when bound to loopback, else the bound address), else 421: a page
+//! that reached the server through a DNS name of its own (DNS rebinding) is refused. A
+//! WebSocket handshake whose `Origin` is not `http://` + that `Host` is refused (403),
+//! so other web sites cannot drive it. A non-loopback address gets a warning
+//! ([`Server::exposure_warning`]).
 //!
 //! # Precision
 //! The store decides every pair with the precision chosen on the page; positions are

@@ -63,7 +63,7 @@ impl Simulation {
         for axis in 0..2 {
             if !(AREA_MIN[axis]..=AREA_MAX[axis]).contains(&point[axis]) {
                 return Err(EditFailure::Invalid(format!(
-                    "point ({}, {}) is outside the area [{}, {}] × [{}, {}]",
+                    "point ({:?}, {:?}) is outside the area [{:?}, {:?}] × [{:?}, {:?}]",
                     point[0], point[1], AREA_MIN[0], AREA_MAX[0], AREA_MIN[1], AREA_MAX[1]
                 )));
             }

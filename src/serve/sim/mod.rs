@@ -149,7 +149,7 @@ impl Settings {
         }
         if !(0.0..=MAX_SPEED).contains(&self.speed) {
             return Err(format!(
-                "speed must be between 0 and {MAX_SPEED}, not {}",
+                "speed must be between 0 and {MAX_SPEED}, not {:?}",
                 self.speed
             ));
         }

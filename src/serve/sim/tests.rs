@@ -310,3 +310,20 @@ fn insertions_are_refused_at_the_total_vertex_bound() {
     let total: usize = sim.current_vertices().iter().map(Vec::len).sum();
     assert_eq!(total, MAX_TOTAL_VERTICES);
 }
+
+/// Numbers in messages are printed shortest round-trip (`1e308`, not 309 digits).
+#[test]
+fn messages_print_floats_in_their_shortest_form() {
+    let e = Settings {
+        speed: 1e308,
+        ..Settings::default()
+    }
+    .validate()
+    .expect_err("out of bounds");
+    assert!(e.ends_with("not 1e308"), "{e}");
+    let mut sim = Simulation::new(Settings::default(), 1).expect("valid");
+    match sim.move_vertex(0, 0, [1e308, -2.5e-300]) {
+        Err(EditFailure::Invalid(m)) => assert!(m.contains("point (1e308, -2.5e-300)"), "{m}"),
+        other => panic!("expected the area error, got {other:?}"),
+    }
+}
