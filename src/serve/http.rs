@@ -2,6 +2,7 @@
 //! `httparse`, answer with a complete response and close. No keep-alive, no bodies.
 
 use std::io::{self, Read, Write};
+use std::net::{IpAddr, SocketAddr};
 
 /// The largest request head accepted, in bytes.
 pub const MAX_HEAD_BYTES: usize = 8192;
@@ -94,6 +95,52 @@ pub fn read_request(stream: &mut impl Read) -> Result<(Request, Vec<u8>), HeadEr
     }
 }
 
+/// Whether a `Host` header value names the server bound to `bound`: the port must be
+/// the bound port (or absent when that is 80), and the host
+/// - an IP address: the bound address; any loopback address when bound to loopback; any
+///   address when bound to all interfaces (`0.0.0.0`, `::`);
+/// - a name: only `localhost` (any case), and only when bound to loopback or to all
+///   interfaces.
+///
+/// Any other name is refused: a page that reached this server through a name of its own
+/// (DNS rebinding) sends that name.
+pub fn host_names_server(host: &str, bound: SocketAddr) -> bool {
+    let (name, port) = match host.strip_prefix('[') {
+        Some(bracketed) => match bracketed.split_once(']') {
+            Some((inside, after)) => (inside, after),
+            None => return false,
+        },
+        None => match host.find(':') {
+            Some(k) => (&host[..k], &host[k..]),
+            None => (host, ""),
+        },
+    };
+    let port_ok = match port {
+        "" => bound.port() == 80,
+        p => {
+            p.strip_prefix(':')
+                .filter(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
+                .and_then(|d| d.parse::<u16>().ok())
+                == Some(bound.port())
+        }
+    };
+    if !port_ok {
+        return false;
+    }
+    let ip = bound.ip();
+    let bracketed = host.starts_with('[');
+    match name.parse::<IpAddr>() {
+        // An IPv6 address only in brackets, an IPv4 one only without.
+        Ok(addr) if addr.is_ipv6() == bracketed => {
+            addr == ip || (ip.is_loopback() && addr.is_loopback()) || ip.is_unspecified()
+        }
+        Ok(_) => false,
+        Err(_) => {
+            !bracketed && name.eq_ignore_ascii_case("localhost") && (ip.is_loopback() || ip.is_unspecified())
+        }
+    }
+}
+
 fn reason(status: u16) -> &'static str {
     match status {
         200 => "OK",
@@ -101,6 +148,8 @@ fn reason(status: u16) -> &'static str {
         403 => "Forbidden",
         404 => "Not Found",
         405 => "Method Not Allowed",
+        408 => "Request Timeout",
+        421 => "Misdirected Request",
         426 => "Upgrade Required",
         431 => "Request Header Fields Too Large",
         503 => "Service Unavailable",
@@ -176,6 +225,56 @@ mod tests {
         assert!(req.header_has("connection", "upgrade"));
         assert!(!req.header_has("connection", "close"));
         assert!(rest.starts_with(b"rest") || rest.is_empty());
+    }
+
+    #[test]
+    fn the_host_must_name_the_bound_address() {
+        let local: SocketAddr = "127.0.0.1:8080".parse().unwrap();
+        for host in [
+            "127.0.0.1:8080",
+            "localhost:8080",
+            "LocalHost:8080",
+            "[::1]:8080",
+            "127.0.0.2:8080",
+        ] {
+            assert!(host_names_server(host, local), "{host}");
+        }
+        for host in [
+            "rebind.attacker.example:8080",
+            "localhost.attacker.example:8080",
+            "127.0.0.1.nip.io:8080",
+            "127.0.0.1:8081",
+            "127.0.0.1",
+            "localhost",
+            "127.0.0.1:",
+            "127.0.0.1:+8080",
+            "127.0.0.1:08080x",
+            "[127.0.0.1]:8080",
+            "::1:8080",
+            "[::1:8080",
+            "[::1]8080",
+            "10.0.0.1:8080",
+            "",
+            ":8080",
+        ] {
+            assert!(!host_names_server(host, local), "{host}");
+        }
+        let on_80: SocketAddr = "127.0.0.1:80".parse().unwrap();
+        assert!(host_names_server("localhost", on_80));
+        assert!(host_names_server("127.0.0.1:80", on_80));
+        let lan: SocketAddr = "192.168.1.5:9000".parse().unwrap();
+        assert!(host_names_server("192.168.1.5:9000", lan));
+        assert!(!host_names_server("localhost:9000", lan));
+        assert!(!host_names_server("127.0.0.1:9000", lan));
+        assert!(!host_names_server("mybox.example:9000", lan));
+        let all: SocketAddr = "0.0.0.0:9000".parse().unwrap();
+        assert!(host_names_server("192.168.1.5:9000", all));
+        assert!(host_names_server("localhost:9000", all));
+        assert!(!host_names_server("mybox.example:9000", all));
+        let v6: SocketAddr = "[::1]:9000".parse().unwrap();
+        assert!(host_names_server("[::1]:9000", v6));
+        assert!(host_names_server("localhost:9000", v6));
+        assert!(!host_names_server("[::2]:9000", v6));
     }
 
     #[test]

@@ -219,6 +219,9 @@ pub(crate) fn serve(bind: IpAddr, port: u16) -> io::Result<()> {
     })
     .map_err(io::Error::other)?;
     let url = server.url();
+    if let Some(warning) = server.exposure_warning() {
+        let _ = writeln!(io::stderr(), "polysect: {warning}");
+    }
     std::thread::spawn(move || {
         let why = server
             .run()

@@ -369,25 +369,41 @@ impl LinkedPolygon {
     }
 
     /// The point stored at position `pos` (positions are `0..len`, valid until the next edit).
+    ///
+    /// # Panics
+    /// `pos` is not below [`len`](Self::len).
     #[inline]
+    #[track_caller]
     pub fn point_at(&self, pos: usize) -> Point {
         self.nodes[pos].point
     }
 
     /// Position of the counter-clockwise successor of the vertex at `pos`.
+    ///
+    /// # Panics
+    /// `pos` is not below [`len`](Self::len).
     #[inline]
+    #[track_caller]
     pub fn next_at(&self, pos: usize) -> usize {
         self.nodes[pos].next as usize
     }
 
     /// Position of the counter-clockwise predecessor of the vertex at `pos`.
+    ///
+    /// # Panics
+    /// `pos` is not below [`len`](Self::len).
     #[inline]
+    #[track_caller]
     pub fn prev_at(&self, pos: usize) -> usize {
         self.nodes[pos].prev as usize
     }
 
     /// The stable handle of the vertex at `pos`.
+    ///
+    /// # Panics
+    /// `pos` is not below [`len`](Self::len).
     #[inline]
+    #[track_caller]
     pub fn id_at(&self, pos: usize) -> VertexId {
         let slot = self.nodes[pos].slot;
         VertexId {

@@ -35,8 +35,11 @@
 //!
 //! # Bounds
 //! At most [`MAX_POLYGONS`] polygons of [`MIN_VERTICES`]..=[`MAX_VERTICES`] vertices,
-//! [`MAX_TOTAL_VERTICES`] in all; speed in 0..=[`MAX_SPEED`]; each polygon hands out at
-//! most [`MAX_VERTEX_IDS`] vertex ids.
+//! [`MAX_TOTAL_VERTICES`] in all (checked for a new scene and for every insertion);
+//! speed in 0..=[`MAX_SPEED`]; each polygon hands out at most [`MAX_VERTEX_IDS`] vertex
+//! ids. The map from wire ids to vertices holds the live vertices only (a removed
+//! vertex's id leaves it), so a session's memory is bounded by its live scene whatever
+//! its history of edits.
 
 use super::contact::{separation_normal, witness_normal};
 use crate::intersect::{Algorithm, Certificate, Trace, trace_rng};
@@ -146,7 +149,7 @@ impl Settings {
         }
         if !(0.0..=MAX_SPEED).contains(&self.speed) {
             return Err(format!(
-                "speed must be between 0 and {MAX_SPEED}, not {}",
+                "speed must be between 0 and {MAX_SPEED}, not {:?}",
                 self.speed
             ));
         }
@@ -171,6 +174,10 @@ macro_rules! on_scene {
     };
 }
 
+// After the macro: it is in scope only below its definition.
+mod edits;
+use edits::VertexIds;
+
 impl Store {
     fn new(precision: Precision, strategy: Strategy) -> Store {
         let mut store = match precision {
@@ -191,8 +198,8 @@ struct Body {
     velocity: [f64; 2],
     /// Proportional to the area.
     mass: f64,
-    /// Wire vertex id → vertex handle (`None` once removed). Ids are never reused.
-    ids: Vec<Option<VertexId>>,
+    /// Wire vertex id → vertex handle, live vertices only.
+    ids: VertexIds,
 }
 
 /// Milliseconds spent in each part of a frame on the server.
@@ -275,6 +282,8 @@ pub struct Simulation {
     /// Per candidate pair `[i, j]`, `i < j`: the contact normal from `i` to `j` given by
     /// the separating edge of the last frame that found the pair disjoint.
     separators: HashMap<[usize; 2], [f64; 2]>,
+    /// Vertices in all polygons (at most [`MAX_TOTAL_VERTICES`], edits included).
+    vertices: usize,
 }
 
 impl Simulation {
@@ -292,6 +301,7 @@ impl Simulation {
             scene,
             frame: 0,
             separators: HashMap::new(),
+            vertices: 0,
         };
         let mut rng = SmallRng::seed_from_u64(settings.seed);
         for (points, velocity) in generate(&settings, &mut rng) {
@@ -300,8 +310,9 @@ impl Simulation {
                 // Snapping made some vertices collinear: keep their hull (still on the grid).
                 Err(_) => LinkedPolygon::from_convex(&convex_hull(&points).map_err(|e| e.to_string())?),
             };
-            let ids = polygon.iter().map(|(v, _)| Some(v)).collect();
+            let ids = VertexIds::new(polygon.iter().map(|(v, _)| v));
             let mass = area(polygon.iter().map(|(_, p)| p));
+            sim.vertices += polygon.len();
             let id = on_scene!(&mut sim.store, s => s.insert(polygon));
             sim.index.insert(id, sim.bodies.len());
             sim.bodies.push(Body {
@@ -606,130 +617,6 @@ impl Simulation {
         Ok((p.vertices().to_vec(), q.vertices().to_vec(), t))
     }
 
-    fn body(&self, polygon: usize) -> Result<&Body, EditFailure> {
-        self.bodies.get(polygon).ok_or_else(|| {
-            EditFailure::Invalid(format!(
-                "no polygon {polygon} (the scene has {} polygons, numbered from 0)",
-                self.bodies.len()
-            ))
-        })
-    }
-
-    fn vertex(&self, polygon: usize, vertex: u32) -> Result<VertexId, EditFailure> {
-        match self.body(polygon)?.ids.get(vertex as usize) {
-            Some(Some(v)) => Ok(*v),
-            Some(None) => Err(EditFailure::Invalid(format!(
-                "vertex {vertex} of polygon {polygon} was removed"
-            ))),
-            None => Err(EditFailure::Invalid(format!(
-                "polygon {polygon} has no vertex {vertex}"
-            ))),
-        }
-    }
-
-    /// Validates an edit target and snaps it to the grid.
-    fn target(point: [f64; 2]) -> Result<Point, EditFailure> {
-        for axis in 0..2 {
-            if !(AREA_MIN[axis]..=AREA_MAX[axis]).contains(&point[axis]) {
-                return Err(EditFailure::Invalid(format!(
-                    "point ({}, {}) is outside the area [{}, {}] × [{}, {}]",
-                    point[0], point[1], AREA_MIN[0], AREA_MAX[0], AREA_MIN[1], AREA_MAX[1]
-                )));
-            }
-        }
-        Ok(Point::new(snap(point[0]), snap(point[1])))
-    }
-
-    fn base(&self, polygon: usize, p: Point) -> [f64; 2] {
-        let o = self.bodies[polygon].offset;
-        [p.x - o[0], p.y - o[1]]
-    }
-
-    fn edited(&mut self, polygon: usize) {
-        let id = self.bodies[polygon].id;
-        let p = on_scene!(&self.store, s => s.polygon(id)).expect("live polygon");
-        self.bodies[polygon].mass = area(p.iter().map(|(_, p)| p));
-    }
-
-    /// Moves vertex `vertex` (a wire id) of polygon `polygon` to `to` (box coordinates,
-    /// snapped to the grid) through [`Scene::move_vertex`]. O(1) plus the polygon's new
-    /// mass, O(n).
-    ///
-    /// # Errors
-    /// `Invalid` for an unknown polygon or vertex or a point outside the area; `Refused`
-    /// when the store refuses the move (it would break convexity).
-    pub fn move_vertex(&mut self, polygon: usize, vertex: u32, to: [f64; 2]) -> Result<Edit, EditFailure> {
-        let v = self.vertex(polygon, vertex)?;
-        let p = Self::target(to)?;
-        let id = self.bodies[polygon].id;
-        on_scene!(&mut self.store, s => s.move_vertex(id, v, p)).map_err(refused)?;
-        self.edited(polygon);
-        Ok(Edit {
-            polygon,
-            kind: "move",
-            vertex,
-            after: None,
-            point: Some(self.base(polygon, p)),
-        })
-    }
-
-    /// Inserts `point` after vertex `after` (its counter-clockwise successor) through
-    /// [`Scene::insert_vertex`]; the new vertex takes the polygon's next wire id.
-    ///
-    /// # Errors
-    /// As [`move_vertex`](Self::move_vertex), and `Invalid` once the polygon has handed
-    /// out [`MAX_VERTEX_IDS`] ids.
-    pub fn insert_vertex(
-        &mut self,
-        polygon: usize,
-        after: u32,
-        point: [f64; 2],
-    ) -> Result<Edit, EditFailure> {
-        let a = self.vertex(polygon, after)?;
-        let p = Self::target(point)?;
-        let next = self.bodies[polygon].ids.len();
-        if next >= MAX_VERTEX_IDS {
-            return Err(EditFailure::Invalid(format!(
-                "polygon {polygon} has used all its {MAX_VERTEX_IDS} vertex ids; start a new scene"
-            )));
-        }
-        let id = self.bodies[polygon].id;
-        if on_scene!(&self.store, s => s.polygon(id)).map_or(0, |p| p.len()) >= MAX_VERTICES {
-            return Err(EditFailure::Invalid(format!(
-                "polygon {polygon} already has {MAX_VERTICES} vertices, the page's limit"
-            )));
-        }
-        let v = on_scene!(&mut self.store, s => s.insert_vertex(id, a, p)).map_err(refused)?;
-        self.bodies[polygon].ids.push(Some(v));
-        self.edited(polygon);
-        Ok(Edit {
-            polygon,
-            kind: "insert",
-            vertex: next as u32,
-            after: Some(after),
-            point: Some(self.base(polygon, p)),
-        })
-    }
-
-    /// Removes vertex `vertex` through [`Scene::remove_vertex`].
-    ///
-    /// # Errors
-    /// `Invalid` for an unknown polygon or vertex; `Refused` when only three remain.
-    pub fn remove_vertex(&mut self, polygon: usize, vertex: u32) -> Result<Edit, EditFailure> {
-        let v = self.vertex(polygon, vertex)?;
-        let id = self.bodies[polygon].id;
-        on_scene!(&mut self.store, s => s.remove_vertex(id, v)).map_err(refused)?;
-        self.bodies[polygon].ids[vertex as usize] = None;
-        self.edited(polygon);
-        Ok(Edit {
-            polygon,
-            kind: "remove",
-            vertex,
-            after: None,
-            point: None,
-        })
-    }
-
     /// Checks that every store vertex is its base vertex plus the offset and lies on the
     /// grid (the module docs' claim), and the store's own invariants.
     ///
@@ -754,18 +641,6 @@ impl Simulation {
             }
         }
         Ok(())
-    }
-}
-
-/// The page names polygons by index: the reason is the edit's own message, without the
-/// store's handle.
-fn refused(e: SceneError) -> EditFailure {
-    match e {
-        SceneError::Edit(_, crate::EditError::StaleHandle) | SceneError::StalePolygon(_) => {
-            EditFailure::Invalid(e.to_string())
-        }
-        SceneError::Edit(_, reason) => EditFailure::Refused(reason.to_string()),
-        e => EditFailure::Refused(e.to_string()),
     }
 }
 
@@ -862,243 +737,4 @@ fn generate(settings: &Settings, rng: &mut SmallRng) -> Vec<(Vec<Point>, [f64; 2
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::ConvexPolygon;
-    use crate::intersect::{ArrayIntersection, Linear};
-
-    fn reference_pairs(polygons: &[Vec<Point>]) -> Vec<[usize; 2]> {
-        let convex: Vec<ConvexPolygon> = polygons
-            .iter()
-            .map(|p| ConvexPolygon::new(p.iter().copied()).expect("valid"))
-            .collect();
-        let mut out = Vec::new();
-        for i in 0..convex.len() {
-            for j in i + 1..convex.len() {
-                if Linear.intersects(&convex[i], &convex[j]) {
-                    out.push([i, j]);
-                }
-            }
-        }
-        out
-    }
-
-    #[test]
-    fn settings_out_of_bounds_are_refused_with_the_field_named() {
-        let ok = Settings::default();
-        assert!(ok.validate().is_ok());
-        for (bad, word) in [
-            (Settings { polygons: 0, ..ok }, "polygons"),
-            (Settings { polygons: 1001, ..ok }, "polygons"),
-            (Settings { vertices: 2, ..ok }, "vertices"),
-            (
-                Settings {
-                    vertices: 65_537,
-                    ..ok
-                },
-                "vertices",
-            ),
-            (
-                Settings {
-                    polygons: 100,
-                    vertices: 65_536,
-                    ..ok
-                },
-                "in all",
-            ),
-            (Settings { speed: -1.0, ..ok }, "speed"),
-            (
-                Settings {
-                    speed: f64::NAN,
-                    ..ok
-                },
-                "speed",
-            ),
-        ] {
-            let e = bad.validate().expect_err("out of bounds");
-            assert!(e.contains(word), "{e}");
-        }
-    }
-
-    /// Frames of the default scene, under every strategy and both precisions: the
-    /// store's coordinates stay base + offset exactly and on the grid, and the pairs the
-    /// frame reports are the exact reference's pairs on those coordinates.
-    #[test]
-    fn frames_keep_exact_positions_and_report_the_reference_pairs() {
-        for strategy in Strategy::ALL {
-            for precision in Precision::ALL {
-                let settings = Settings {
-                    polygons: 24,
-                    vertices: 7,
-                    seed: 3,
-                    strategy,
-                    precision,
-                    speed: 3.0,
-                    ..Settings::default()
-                };
-                let mut sim = Simulation::new(settings, 1).expect("valid settings");
-                let (_, base) = sim.base_vertices();
-                let mut collided = 0;
-                for _ in 0..120 {
-                    let f = sim.frame(true);
-                    let now = sim.current_vertices();
-                    if precision == Precision::Exact {
-                        assert_eq!(f.pairs, reference_pairs(&now), "{strategy:?} frame {}", f.frame);
-                    }
-                    assert_eq!(f.offsets.len(), 2 * sim.len());
-                    collided += f.pairs.len();
-                }
-                sim.debug_validate(&base).expect("exact positions");
-                assert!(collided > 0, "the scene collides");
-            }
-        }
-    }
-
-    #[test]
-    fn the_default_scene_collides_within_a_second() {
-        let mut sim = Simulation::new(Settings::default(), 1).expect("valid");
-        let first = (0..60).find(|_| !sim.frame(true).pairs.is_empty());
-        assert!(first.is_some(), "no collision in 60 frames");
-    }
-
-    #[test]
-    fn polygons_stay_in_the_box() {
-        let mut sim = Simulation::new(
-            Settings {
-                polygons: 10,
-                speed: MAX_SPEED,
-                ..Settings::default()
-            },
-            1,
-        )
-        .expect("valid");
-        for _ in 0..2000 {
-            sim.frame(true);
-        }
-        for poly in sim.current_vertices() {
-            for p in poly {
-                assert!((-MAX_STEP..=WORLD[0] + MAX_STEP).contains(&p.x), "{p:?}");
-                assert!((-MAX_STEP..=WORLD[1] + MAX_STEP).contains(&p.y), "{p:?}");
-            }
-        }
-    }
-
-    #[test]
-    fn elastic_bounce_conserves_momentum_and_energy() {
-        let (va, vb, ma, mb) = ([2.0, 0.5], [-1.0, 0.25], 3.0, 1.5);
-        let n = [0.6, 0.8];
-        let (ua, ub) = elastic(va, vb, ma, mb, n).expect("approaching");
-        for axis in 0..2 {
-            let before = ma * va[axis] + mb * vb[axis];
-            let after = ma * ua[axis] + mb * ub[axis];
-            assert!((before - after).abs() < 1e-12);
-        }
-        let energy =
-            |a: [f64; 2], b: [f64; 2]| ma * (a[0] * a[0] + a[1] * a[1]) + mb * (b[0] * b[0] + b[1] * b[1]);
-        assert!((energy(va, vb) - energy(ua, ub)).abs() < 1e-12);
-        let rel_after = (ub[0] - ua[0]) * n[0] + (ub[1] - ua[1]) * n[1];
-        assert!(rel_after > 0.0, "they separate afterwards");
-        assert_eq!(
-            elastic(ua, ub, ma, mb, n),
-            None,
-            "separating pairs do not bounce again"
-        );
-    }
-
-    #[test]
-    fn edits_go_through_the_store_and_keep_positions_exact() {
-        let settings = Settings {
-            polygons: 4,
-            vertices: 8,
-            ..Settings::default()
-        };
-        let mut sim = Simulation::new(settings, 1).expect("valid");
-        for _ in 0..10 {
-            sim.frame(true);
-        }
-        let (_, mut base) = sim.base_vertices();
-        let now = sim.current_vertices();
-        // Pull vertex 0 of polygon 0 outwards a little, away from the centre.
-        let c = now[0]
-            .iter()
-            .fold((0.0, 0.0), |s, p| (s.0 + p.x / 8.0, s.1 + p.y / 8.0));
-        let v = now[0][0];
-        let to = [v.x + 0.1 * (v.x - c.0), v.y + 0.1 * (v.y - c.1)];
-        let e = sim.move_vertex(0, 0, to).expect("valid move");
-        let p = e.point.expect("a point");
-        base[0] = p[0];
-        base[1] = p[1];
-        sim.debug_validate(&base).expect("base + offset");
-        // Into the centre: refused with the store's reason.
-        match sim.move_vertex(0, 0, [c.0, c.1]) {
-            Err(EditFailure::Refused(r)) => assert!(r.contains("non-convex"), "{r}"),
-            other => panic!("expected a refusal, got {other:?}"),
-        }
-        // Remove down to three, then refused.
-        for w in 3..8 {
-            sim.remove_vertex(0, w).expect("removal above three vertices");
-        }
-        assert!(matches!(sim.remove_vertex(0, 0), Err(EditFailure::Refused(_))));
-        assert!(matches!(sim.remove_vertex(0, 5), Err(EditFailure::Invalid(m)) if m.contains("was removed")));
-        assert!(
-            matches!(sim.remove_vertex(0, 99), Err(EditFailure::Invalid(m)) if m.contains("no vertex 99"))
-        );
-        assert!(
-            matches!(sim.remove_vertex(9, 0), Err(EditFailure::Invalid(m)) if m.contains("no polygon 9"))
-        );
-        assert!(
-            matches!(sim.move_vertex(1, 0, [1e9, 0.0]), Err(EditFailure::Invalid(m)) if m.contains("outside"))
-        );
-    }
-
-    /// Inserting and removing one vertex over and over uses up the polygon's ids (they
-    /// are never reused); then insertions are refused with a message, removals go on.
-    #[test]
-    fn vertex_ids_are_bounded() {
-        let mut sim = Simulation::new(
-            Settings {
-                polygons: 1,
-                ..Settings::default()
-            },
-            1,
-        )
-        .expect("valid");
-        let poly = &sim.current_vertices()[0];
-        let (a, b) = (poly[0], poly[1]);
-        let (ex, ey) = (b.x - a.x, b.y - a.y);
-        // Just outside the middle of edge 0 → 1 (outward is to the right of a → b).
-        let out = [0.5 * (a.x + b.x) + 0.01 * ey, 0.5 * (a.y + b.y) - 0.01 * ex];
-        let first = sim.settings().vertices as u32;
-        for k in first..MAX_VERTEX_IDS as u32 {
-            let e = sim.insert_vertex(0, 0, out).expect("valid insertion");
-            assert_eq!(e.vertex, k);
-            sim.remove_vertex(0, k).expect("removal");
-        }
-        match sim.insert_vertex(0, 0, out) {
-            Err(EditFailure::Invalid(m)) => assert!(m.contains("used all its"), "{m}"),
-            other => panic!("expected the id limit, got {other:?}"),
-        }
-        sim.remove_vertex(0, 5).expect("removals still work");
-    }
-
-    #[test]
-    fn switching_precision_keeps_polygons_handles_and_offsets() {
-        let mut sim = Simulation::new(Settings::default(), 1).expect("valid");
-        for _ in 0..5 {
-            sim.frame(true);
-        }
-        let before = sim.current_vertices();
-        let s = sim.settings();
-        sim.adjust(Strategy::Sampled, Precision::Fast, 2.0, true)
-            .expect("valid");
-        assert_eq!(sim.current_vertices(), before);
-        assert_eq!(sim.settings().precision, Precision::Fast);
-        let f = sim.frame(false);
-        assert_eq!(f.totals.conversions, 0, "the sampled strategy converts nothing");
-        sim.remove_vertex(0, 1)
-            .expect("the old wire ids still name vertices");
-        sim.adjust(s.strategy, Precision::Exact, 1.0, false)
-            .expect("valid");
-        assert!(sim.adjust(s.strategy, Precision::Exact, 9.0, false).is_err());
-    }
-}
+mod tests;
