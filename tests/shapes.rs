@@ -469,3 +469,22 @@ fn hull_of_is_the_hull_and_refuses_what_the_hull_refuses() {
         Err(PolygonError::TooFewVertices { distinct: 0 })
     ));
 }
+
+/// Numbers in error messages print in their shortest round-trip form (`-1e308`, not the
+/// 309 digits of its decimal expansion), so a message stays readable at any scale.
+#[test]
+fn error_messages_print_numbers_shortest() {
+    let err = ConvexPolygon::regular((0.0, 0.0), -1e308, 5, 0.0)
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("-1e308"), "{err}");
+    assert!(err.len() < 120, "{err}");
+    let err = ConvexPolygon::circle((0.0, 0.0), 1.0, -5e-324)
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("-5e-324"), "{err}");
+    let err = polysect::generate::try_regular_polygon(5, -1e300)
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("-1e300"), "{err}");
+}

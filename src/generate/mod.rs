@@ -362,7 +362,7 @@ pub fn try_regular_polygon(n: usize, radius: f64) -> Result<ConvexPolygon, Gener
     check_size(n)?;
     if !(radius.is_finite() && radius > 0.0) {
         return Err(GenerateError::InvalidParameters(format!(
-            "a regular polygon needs a finite radius > 0, got {radius}"
+            "a regular polygon needs a finite radius > 0, got {radius:?}"
         )));
     }
     let n = n.max(3);
@@ -375,7 +375,7 @@ pub fn try_regular_polygon(n: usize, radius: f64) -> Result<ConvexPolygon, Gener
     ConvexPolygon::new(pts.iter().copied())
         .or_else(|_| convex_hull(&pts))
         .map_err(|e| {
-            GenerateError::InvalidParameters(format!("radius {radius} rounds the points together: {e}"))
+            GenerateError::InvalidParameters(format!("radius {radius:?} rounds the points together: {e}"))
         })
 }
 

@@ -115,12 +115,12 @@ impl PointDistribution {
             PointDistribution::Normal { mean, sigma } => {
                 if !(mean.is_finite() && sigma.is_finite() && sigma > 0.0) {
                     return bad(format!(
-                        "normal distribution needs a finite mean and sigma > 0 (got {mean}, {sigma})"
+                        "normal distribution needs a finite mean and sigma > 0 (got {mean:?}, {sigma:?})"
                     ));
                 }
                 if !(mean.abs() + BOX_MULLER_MAX_RADIUS * sigma).is_finite() {
                     return bad(format!(
-                        "normal samples reach mean ± {BOX_MULLER_MAX_RADIUS}·sigma, which overflows f64 (mean {mean}, sigma {sigma})"
+                        "normal samples reach mean ± {BOX_MULLER_MAX_RADIUS}·sigma, which overflows f64 (mean {mean:?}, sigma {sigma:?})"
                     ));
                 }
             }

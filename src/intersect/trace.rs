@@ -731,6 +731,14 @@ impl Probe for Tracer<'_> {
 /// and Convert link the polygons in shuffled order and draw from a generator seeded
 /// from the operating system ([`trace_rng`] for reproducible runs).
 ///
+/// # Cost
+/// Unbounded by design: the trace keeps every step, and a step keeps the points of its
+/// marks (a chain's vertices for Dobkin–Souvaine, the LP's point sets for CLM), so time
+/// and memory grow as O((n + m) log(n + m)) points. Two polygons of 2^20 vertices under
+/// Dobkin–Souvaine give tens of millions of points (hundreds of megabytes, seconds);
+/// the live page traces polygons of at most a few thousand vertices. Bound the inputs
+/// before tracing; the plain and certified calls allocate nothing of this.
+///
 /// ```
 /// use polysect::intersect::{Algorithm, trace};
 /// use polysect::{ConvexPolygon, Exact};

@@ -37,7 +37,7 @@ fn positive(parameter: &'static str, x: f64) -> Result<f64, PolygonError> {
     if x.is_finite() && x > 0.0 {
         Ok(x)
     } else {
-        Err(bad(parameter, format!("must be finite and positive, got {x}")))
+        Err(bad(parameter, format!("must be finite and positive, got {x:?}")))
     }
 }
 
@@ -45,7 +45,7 @@ fn finite(parameter: &'static str, x: f64) -> Result<f64, PolygonError> {
     if x.is_finite() {
         Ok(x)
     } else {
-        Err(bad(parameter, format!("must be finite, got {x}")))
+        Err(bad(parameter, format!("must be finite, got {x:?}")))
     }
 }
 
