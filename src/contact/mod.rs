@@ -185,7 +185,7 @@ pub fn separation_with<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygo
 }
 
 /// Below this many vertices in all, the distance walks D whole instead of searching it.
-const LINEAR_BELOW: usize = 24;
+const LINEAR_BELOW: usize = 40;
 
 /// How far apart two disjoint polygons are, correctly rounded: a [`Separation`]
 /// without its exact rationals, answered without big integers when a floating-point
