@@ -140,7 +140,7 @@ impl Dd {
     /// operands' errors add `(e_x + |x/y|·e_y)/(|ỹ| − e_y)`.
     fn div(self, y: Dd) -> Option<Dd> {
         let low = y.low();
-        if !(low > 0.0) {
+        if low.is_nan() || low <= 0.0 {
             return None;
         }
         let q1 = self.hi / y.hi;
@@ -148,7 +148,7 @@ impl Dd {
         let q2 = r.hi / y.hi;
         let (hi, lo) = two_sum(q1, q2);
         let yt = (y.hi.abs() - y.lo.abs()) * (1.0 - 4.0 * U);
-        if !(yt > 0.0) {
+        if yt.is_nan() || yt <= 0.0 {
             return None;
         }
         let own =
@@ -168,7 +168,7 @@ impl Dd {
     /// bounded with `s ≥ s₁(1 − 2^-40)`; the operand's error adds `e_x/√(x̃ − e_x)`.
     fn sqrt(self) -> Option<Dd> {
         let low = self.low();
-        if !(low > 0.0) || self.hi <= 0.0 {
+        if low.is_nan() || low <= 0.0 || self.hi <= 0.0 {
             return None;
         }
         let s1 = self.hi.sqrt();
