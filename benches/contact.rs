@@ -1,9 +1,15 @@
 //! Contact queries against parry2d-f64 (`query::distance` and `query::contact` on
 //! `ConvexPolygon`s with identity poses), for n = 16, 256, 4,096 and 65,536 vertices per
-//! polygon, on disjoint pairs (distance) and overlapping pairs (depth, normal, overlap
-//! polygon and area for polysect; parry's contact gives depth, normal and points, no
-//! overlap). Pairs come from the generators' rotated ellipses (`generate::pair`); the
-//! expected relation is asserted inside every iteration.
+//! polygon, side by side in one run:
+//! * `contact-distance`, disjoint pairs: polysect's `distance_with` (distance and a
+//!   closest pair, correctly rounded) under both kernels, `contact_with` (the same plus
+//!   the exact rationals), parry's `distance`;
+//! * `contact-depth`, overlapping pairs: polysect's `contact_with` (depth, normal,
+//!   overlap polygon and area) beside parry's `contact` (depth, normal and points; it has
+//!   no overlap polygon).
+//!
+//! Pairs come from the generators' rotated ellipses (`generate::pair`); the expected
+//! relation is asserted inside every iteration.
 //!
 //! Quick run: `cargo bench --bench contact -- --warm-up-time 1 --measurement-time 3`.
 
@@ -11,7 +17,7 @@ use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query::{contact as parry_contact, distance as parry_distance};
 use parry2d_f64::shape::ConvexPolygon as ParryPolygon;
-use polysect::contact::{Contact, contact_with};
+use polysect::contact::{Contact, contact_with, distance_with};
 use polysect::generate::{self, Family, Relation};
 use polysect::intersect::{ArrayIntersection, Linear};
 use polysect::{ConvexPolygon, Exact, Fast};
@@ -44,10 +50,22 @@ fn bench(c: &mut Criterion) {
     for n in SIZES {
         let (p, q) = pair(n, Relation::Disjoint, &mut rng);
         group.bench_function(BenchmarkId::new("polysect", n), |b| {
-            b.iter(|| assert!(!contact_with(Exact, black_box(&p), black_box(&q)).intersects()))
+            b.iter(|| {
+                assert!(
+                    distance_with(Exact, black_box(&p), black_box(&q))
+                        .is_some_and(|d| d.distance > Some(0.0))
+                )
+            })
         });
         group.bench_function(BenchmarkId::new("polysect-fast", n), |b| {
-            b.iter(|| assert!(!contact_with(Fast, black_box(&p), black_box(&q)).intersects()))
+            b.iter(|| {
+                assert!(
+                    distance_with(Fast, black_box(&p), black_box(&q)).is_some_and(|d| d.distance > Some(0.0))
+                )
+            })
+        });
+        group.bench_function(BenchmarkId::new("polysect-contact", n), |b| {
+            b.iter(|| assert!(!contact_with(Exact, black_box(&p), black_box(&q)).intersects()))
         });
         let (pp, pq) = (parry_polygon(&p), parry_polygon(&q));
         group.bench_function(BenchmarkId::new("parry2d", n), |b| {
@@ -59,6 +77,8 @@ fn bench(c: &mut Criterion) {
     }
     group.finish();
     let mut group = c.benchmark_group("contact-depth");
+    // The exact overlap of large pairs takes milliseconds to seconds per query.
+    group.sample_size(10);
     for n in SIZES {
         let (p, q) = pair(n, Relation::Intersecting, &mut rng);
         group.bench_function(BenchmarkId::new("polysect", n), |b| {

@@ -85,6 +85,7 @@
 
 mod construct;
 mod overlap;
+mod rounded;
 mod search;
 mod walk;
 
@@ -184,30 +185,78 @@ pub fn separation_with<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygo
 }
 
 /// Below this many vertices in all, the distance walks D whole instead of searching it.
-const LINEAR_BELOW: usize = 24;
+const LINEAR_BELOW: usize = 40;
 
-/// The separation of two polygons the kernel found disjoint. When the kernel's walk
-/// certifies no feature (a misjudging kernel), the exact kernel decides again, and
-/// when they do meet after all, their exact separation is the touching point's
-/// (distance 0).
-fn separation_of<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Separation {
+/// How far apart two disjoint polygons are, correctly rounded: a [`Separation`]
+/// without its exact rationals, answered without big integers when a floating-point
+/// bound decides every rounding (nearly always), else rounded from the exact values.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Distance {
+    /// The distance, correctly rounded; `None` when that overflows.
+    pub distance: Option<f64>,
+    /// A closest pair, first on P then on Q, each coordinate correctly rounded.
+    pub closest: [Point; 2],
+    /// The feature of the Minkowski difference the pair comes from.
+    pub feature: Feature,
+}
+
+/// The distance and a closest pair of `p` and `q`, decisions by `kernel`, or `None`
+/// when they meet: the same values as [`Separation`]'s (the same feature), without
+/// allocating when the certified double-double rounding decides them (inputs between
+/// 2^-250 and 2^250 in magnitude, the exact value not within about 2^-100 of a midpoint
+/// between doubles); O(log n + log m) on ordinary input (module docs).
+pub fn distance_with<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Option<Distance> {
+    if Barba.intersects_with(kernel, p, q) {
+        return None;
+    }
     let (pv, qv) = (p.vertices(), q.vertices());
+    let feature = nearest_feature(kernel, pv, qv);
+    Some(match rounded::separation(pv, qv, feature) {
+        Some((d, closest)) => Distance {
+            distance: Some(d),
+            closest,
+            feature,
+        },
+        None => {
+            let s = construct::separation(pv, qv, feature);
+            Distance {
+                distance: s.distance,
+                closest: s.closest,
+                feature,
+            }
+        }
+    })
+}
+
+/// [`distance_with`] under the exact kernel.
+pub fn distance(p: &ConvexPolygon, q: &ConvexPolygon) -> Option<Distance> {
+    distance_with(Exact, p, q)
+}
+
+/// The nearest feature of D for two polygons the kernel found disjoint. When the
+/// kernel's walk certifies no feature (a misjudging kernel), the exact kernel decides
+/// again, and when they do meet after all, the feature is the touching point's
+/// (distance 0).
+fn nearest_feature<K: Kernel>(kernel: K, pv: &[Point], qv: &[Point]) -> Feature {
     // Small pairs: the whole walk costs less than the search's setup.
     let searched = if pv.len() + qv.len() > LINEAR_BELOW {
         search::nearest_feature(kernel, pv, qv)
     } else {
         None
     };
-    let feature = searched
+    searched
         .or_else(|| walk::nearest_feature(kernel, pv, qv))
         .or_else(|| walk::nearest_feature(Exact, pv, qv))
-        .or_else(|| touching_feature(pv, qv));
-    match feature {
-        Some(f) => construct::separation(pv, qv, f),
+        .or_else(|| touching_feature(pv, qv))
         // Only reachable when the polygons overlap properly but the kernel said
-        // disjoint: report the first vertex pair at its exact distance.
-        None => construct::separation(pv, qv, Feature::Vertices { p: 0, q: 0 }),
-    }
+        // disjoint: the first vertex pair, at its exact distance.
+        .unwrap_or(Feature::Vertices { p: 0, q: 0 })
+}
+
+/// The separation of two polygons the kernel found disjoint ([`nearest_feature`]).
+fn separation_of<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Separation {
+    let (pv, qv) = (p.vertices(), q.vertices());
+    construct::separation(pv, qv, nearest_feature(kernel, pv, qv))
 }
 
 /// A feature of D through the origin, when the polygons only touch.

@@ -106,8 +106,10 @@ fn gjk_direction(p: &[Point], q: &[Point]) -> Option<(f64, f64)> {
     };
     let (cp, cq) = (centre(p), centre(q));
     let mut x = support(p, q, (cp.0 - cq.0, cp.1 - cq.1)).2;
-    // The simplex: one or two points of D; `x` its point nearest the origin.
-    let mut simplex: Vec<(f64, f64)> = vec![x];
+    // The simplex: one or two points of D (`len` of them); `x` its point nearest the
+    // origin.
+    let mut simplex = [x, x];
+    let mut len = 1;
     for _ in 0..48 {
         let w = support(p, q, (-x.0, -x.1)).2;
         let xx = dot(x, x);
@@ -118,19 +120,19 @@ fn gjk_direction(p: &[Point], q: &[Point]) -> Option<(f64, f64)> {
         if xx - dot(x, w) <= 1e-12 * xx {
             break;
         }
-        match simplex.as_slice() {
-            [a] => {
-                let a = *a;
+        match len {
+            1 => {
+                let a = simplex[0];
                 let (nx, inside) = nearest_on_segment(a, w);
                 x = nx;
-                simplex = match inside {
-                    Some(true) => vec![a, w],
-                    Some(false) => vec![a],
-                    None => vec![w],
+                (simplex, len) = match inside {
+                    Some(true) => ([a, w], 2),
+                    Some(false) => ([a, a], 1),
+                    None => ([w, w], 1),
                 };
             }
-            [a, b] => {
-                let (a, b) = (*a, *b);
+            _ => {
+                let [a, b] = simplex;
                 // Keep the better of the two segments through w (the origin lies outside D).
                 let (xa, ia) = nearest_on_segment(a, w);
                 let (xb, ib) = nearest_on_segment(b, w);
@@ -140,13 +142,12 @@ fn gjk_direction(p: &[Point], q: &[Point]) -> Option<(f64, f64)> {
                     (xb, b, ib)
                 };
                 x = nx;
-                simplex = match inside {
-                    Some(true) => vec![keep, w],
-                    Some(false) => vec![keep],
-                    None => vec![w],
+                (simplex, len) = match inside {
+                    Some(true) => ([keep, w], 2),
+                    Some(false) => ([keep, keep], 1),
+                    None => ([w, w], 1),
                 };
             }
-            _ => return None,
         }
     }
     let u = (-x.0, -x.1);
