@@ -87,3 +87,29 @@ fn parallel_closest_edges_are_certified() {
     let f = search::nearest_feature(Exact, pv, qv).expect("certified");
     assert_eq!(super::construct::separation(pv, qv, f).squared_distance, exact);
 }
+
+#[test]
+fn depth_alone_equals_the_contacts_penetration() {
+    let mut rng = SmallRng::seed_from_u64(19);
+    let (mut meeting, mut apart) = (0, 0);
+    for _ in 0..400 {
+        let (n, m) = (rng.random_range(3..200), rng.random_range(3..200));
+        let p = ellipse_polygon(&mut rng, n, &Density::Uniform, true);
+        let q0 = ellipse_polygon(&mut rng, m, &Density::Uniform, true);
+        let a: f64 = rng.random_range(0.0..std::f64::consts::TAU);
+        let r = rng.random_range(0.0..3.0);
+        let start = rng.random_range(0..q0.len());
+        let q = shifted(&q0, r * a.cos(), r * a.sin(), start);
+        match (super::contact(&p, &q), super::depth(&p, &q)) {
+            (super::Contact::Overlapping(full), Some(d)) => {
+                meeting += 1;
+                assert_eq!(d.squared_depth, full.squared_depth);
+                assert_eq!(d.depth, full.depth);
+                assert_eq!(d.normal, full.normal);
+            }
+            (super::Contact::Separated(_), None) => apart += 1,
+            (c, d) => panic!("contact says {} but depth says {d:?}", c.intersects()),
+        }
+    }
+    assert!(meeting > 50 && apart > 50, "{meeting} meeting, {apart} apart");
+}

@@ -5,25 +5,27 @@
 //!   not, the store's certificate is a separating edge ([`Certificate::Separated`]);
 //!   its outward unit normal, oriented from `a` towards `b`, is the direction in which
 //!   the two meet: [`separation_normal`].
-//! * **From the contact witness**, when the pair was never seen disjoint with
-//!   overlapping boxes (placed or edited into contact): [`witness_normal`]. For a
-//!   vertex of one polygon inside the other, the outward normal of the other polygon's
-//!   edge nearest that vertex; for two crossing edges, the difference of their outward
-//!   normals (each edge pushes the other polygon out along its own normal).
+//! * **From the penetration**, when the pair was never seen disjoint with overlapping
+//!   boxes (placed or edited into contact): the library's penetration normal
+//!   ([`crate::contact::depth_with`]), the direction of the shortest translation of `b`
+//!   that leaves the two only touching: [`penetration_normal`].
 //!
 //! Both are oriented from `a` (the certificate's P) towards `b`.
 //!
 //! # Complexity
-//! O(1) from a separating edge; O(m) for a vertex witness (the nearest edge of the
-//! other polygon, whose vertices the caller walked), O(1) for crossing edges.
+//! O(1) from a separating edge; O(n + m) from the penetration (the vertices the caller
+//! walked, validated into arrays, and the library's walk over their Minkowski
+//! difference's edges).
 //!
 //! # Precision
-//! Plain floating point: a normal is a direction for the physics, not a predicate, and
-//! nothing is decided from it. `None` where the edges are degenerate (zero or
-//! non-finite length) or the two normals of crossing edges cancel.
+//! A separating edge's normal is plain floating point: a direction for the physics, not
+//! a predicate, and nothing is decided from it (`None` for a degenerate edge). The
+//! penetration normal is the library's: each component correctly rounded from the
+//! exact direction.
 
 use crate::intersect::{Certificate, Which};
-use crate::kernel::Point;
+use crate::kernel::{Exact, Point};
+use crate::polygon::ConvexPolygon;
 
 /// The outward unit normal of the counter-clockwise edge `from` → `to` (the edge
 /// turned clockwise), or `None` for a degenerate edge.
@@ -31,11 +33,6 @@ fn outward(from: Point, to: Point) -> Option<[f64; 2]> {
     let (dx, dy) = (to.x - from.x, to.y - from.y);
     let len = dx.hypot(dy);
     (len > 0.0 && len.is_finite()).then(|| [dy / len, -dx / len])
-}
-
-fn unit(v: [f64; 2]) -> Option<[f64; 2]> {
-    let len = v[0].hypot(v[1]);
-    (len > 0.0 && len.is_finite()).then(|| [v[0] / len, v[1] / len])
 }
 
 fn neg(v: [f64; 2]) -> [f64; 2] {
@@ -64,38 +61,24 @@ pub fn separation_normal(certificate: &Certificate) -> Option<[f64; 2]> {
     }
 }
 
-/// The unit normal from `a` towards `b` given by an intersection witness (module docs),
-/// with `a` and `b` the two polygons' vertices, counter-clockwise; `None` for a
-/// separating certificate or a degenerate witness.
-pub fn witness_normal(certificate: &Certificate, a: &[Point], b: &[Point]) -> Option<[f64; 2]> {
-    match *certificate {
-        Certificate::Separated { .. } => None,
-        Certificate::VertexInside { of, point } => {
-            let other = if of == Which::P { b } else { a };
-            let u = nearest_edge_normal(other, point)?;
-            // The other polygon's edge pushes the vertex out along u.
-            Some(if of == Which::P { neg(u) } else { u })
-        }
-        Certificate::CrossingEdges { p, q } => {
-            let (up, uq) = (outward(p[0], p[1])?, outward(q[0], q[1])?);
-            unit([up[0] - uq[0], up[1] - uq[1]])
-        }
-    }
-}
-
-/// The outward unit normal of the edge of `poly` nearest `x` (a point inside it).
-fn nearest_edge_normal(poly: &[Point], x: Point) -> Option<[f64; 2]> {
-    let n = poly.len();
-    (0..n)
-        .filter_map(|i| {
-            let (s, e) = (poly[i], poly[(i + 1) % n]);
-            let u = outward(s, e)?;
-            // Distance from x to the edge's line (x is inside: the line's distance).
-            let d = (u[0] * (s.x - x.x) + u[1] * (s.y - x.y)).abs();
-            Some((d, u))
-        })
-        .min_by(|a, b| a.0.total_cmp(&b.0))
-        .map(|(_, u)| u)
+/// The unit normal from `a` towards `b` of two polygons that meet: the library's
+/// penetration normal ([`crate::contact::depth_with`] under the exact kernel), the
+/// direction of the shortest translation of `b` after which the two only touch, with
+/// `a` and `b` the two polygons' vertices, counter-clockwise. `None` when they do not
+/// meet or a vertex list is not a strictly convex polygon. O(n + m).
+///
+/// ```
+/// use polysect::Point;
+/// use polysect::serve::penetration_normal;
+/// let square = |x: f64, y: f64| [(x, y), (x + 2.0, y), (x + 2.0, y + 2.0), (x, y + 2.0)].map(Point::from).to_vec();
+/// // b overlaps a's right side by 0.2: b leaves along +x.
+/// assert_eq!(penetration_normal(&square(0.0, 0.0), &square(1.8, 0.5)), Some([1.0, 0.0]));
+/// ```
+pub fn penetration_normal(a: &[Point], b: &[Point]) -> Option<[f64; 2]> {
+    let p = ConvexPolygon::new(a.iter().copied()).ok()?;
+    let q = ConvexPolygon::new(b.iter().copied()).ok()?;
+    let normal = crate::contact::depth_with(Exact, &p, &q)?.normal;
+    normal.iter().all(|c| c.is_finite()).then_some(normal)
 }
 
 #[cfg(test)]
@@ -125,7 +108,6 @@ mod tests {
             to: b[0],
         };
         assert_eq!(separation_normal(&c), Some([1.0, 0.0]));
-        assert_eq!(witness_normal(&c, &a, &b), None);
         let degenerate = Certificate::Separated {
             of: Which::P,
             from: a[0],
@@ -135,33 +117,28 @@ mod tests {
     }
 
     #[test]
-    fn witnesses_give_the_nearest_edge_or_the_crossing_edges_normals() {
-        let (a, b) = (square(0.0, 0.0), square(1.8, 0.5));
-        // b's vertex (1.8, 0.5) lies in a, nearest a's right edge: from a to b is +x.
-        let c = Certificate::VertexInside {
-            of: Which::Q,
-            point: b[0],
-        };
-        assert_eq!(witness_normal(&c, &a, &b), Some([1.0, 0.0]));
-        // a's vertex (2, 2) lies in b, nearest b's left edge (outward -x): +x again.
-        let c = Certificate::VertexInside {
-            of: Which::P,
-            point: a[2],
-        };
-        assert_eq!(witness_normal(&c, &a, &b), Some([1.0, 0.0]));
-        // a's top edge crosses b's left edge: the normals (0, 1) and (-1, 0) give (1, 1)/√2.
-        let c = Certificate::CrossingEdges {
-            p: [a[2], a[3]],
-            q: [b[3], b[0]],
-        };
-        let n = witness_normal(&c, &a, &b).unwrap();
-        assert!((n[0] - n[1]).abs() < 1e-15 && n[0] > 0.0);
-        assert_eq!(separation_normal(&c), None);
-        // Parallel edges of the same direction cancel: no normal.
-        let c = Certificate::CrossingEdges {
-            p: [a[1], a[2]],
-            q: [a[1], a[2]],
-        };
-        assert_eq!(witness_normal(&c, &a, &a), None);
+    fn meeting_pairs_take_the_librarys_penetration_normal() {
+        let a = square(0.0, 0.0);
+        // b overlaps a's right side by 0.2 (and its top by 1.5): the shortest way out is +x.
+        assert_eq!(penetration_normal(&a, &square(1.8, 0.5)), Some([1.0, 0.0]));
+        // b overlaps a's top by 0.1: +y.
+        assert_eq!(penetration_normal(&a, &square(0.5, 1.9)), Some([0.0, 1.0]));
+        // From b towards a it is the opposite.
+        assert_eq!(penetration_normal(&square(0.5, 1.9), &a), Some([0.0, -1.0]));
+        // Touching along an edge: depth 0, a direction that separates them.
+        assert_eq!(penetration_normal(&a, &square(2.0, 0.0)), Some([1.0, 0.0]));
+        // Apart, or not a polygon: none.
+        assert_eq!(penetration_normal(&a, &square(3.0, 0.0)), None);
+        assert_eq!(penetration_normal(&a, &a[..2]), None);
+        // Equal to the library's normal on random overlapping pairs.
+        let mut rng = <rand::rngs::SmallRng as rand::SeedableRng>::seed_from_u64(5);
+        for _ in 0..200 {
+            use rand::Rng;
+            let p = crate::generate::ellipse_polygon(&mut rng, 24, &crate::generate::Density::Uniform, true);
+            let (dx, dy) = (rng.random_range(-1.5..1.5), rng.random_range(-1.5..1.5));
+            let q = p.map(|v| Point::new(v.x + dx, v.y + dy)).unwrap();
+            let want = crate::contact::depth(&p, &q).map(|d| d.normal);
+            assert_eq!(penetration_normal(p.vertices(), q.vertices()), want);
+        }
     }
 }

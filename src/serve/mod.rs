@@ -43,7 +43,7 @@ pub mod protocol;
 pub mod sim;
 pub mod trace;
 
-pub use contact::{separation_normal, witness_normal};
+pub use contact::{penetration_normal, separation_normal};
 pub use protocol::{Reply, Session};
 pub use sim::{Settings, Simulation};
 

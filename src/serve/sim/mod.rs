@@ -18,7 +18,7 @@
 //!    query). Each intersecting pair takes
 //!    its contact normal from the separating edge of its last disjoint frame
 //!    ([`separation_normal`]), or, when it has none (it was never seen disjoint with
-//!    overlapping boxes), from its intersection certificate ([`witness_normal`]); a
+//!    overlapping boxes), from the library's penetration normal ([`penetration_normal`]); a
 //!    pair approaching along its normal exchanges momentum along it, an elastic
 //!    collision with masses proportional to area.
 //!
@@ -41,7 +41,7 @@
 //! vertex's id leaves it), so a session's memory is bounded by its live scene whatever
 //! its history of edits.
 
-use super::contact::{separation_normal, witness_normal};
+use super::contact::{penetration_normal, separation_normal};
 use crate::intersect::{Algorithm, Certificate, Trace, trace_rng};
 use crate::kernel::{Exact, Fast, Point, Precision};
 use crate::polygon::{ConvexPolygon, LinkedPolygon, VertexId, convex_hull};
@@ -547,7 +547,7 @@ impl Simulation {
         }
         let mut walked: HashMap<usize, Vec<Point>> = HashMap::new();
         let mut normals = Vec::with_capacity(hits.len());
-        for (pair, certificate) in hits {
+        for (pair, _) in hits {
             let [i, j] = *pair;
             let n = match self.separators.get(pair) {
                 Some(&n) => {
@@ -562,7 +562,7 @@ impl Simulation {
                             polygon.iter().map(|(_, p)| p).collect()
                         });
                     }
-                    witness_normal(certificate, &walked[&i], &walked[&j])
+                    penetration_normal(&walked[&i], &walked[&j])
                 }
             };
             normals.push(n);
