@@ -5,8 +5,8 @@
 //!   closest pair, correctly rounded) under both kernels, `contact_with` (the same plus
 //!   the exact rationals), parry's `distance`;
 //! * `contact-depth`, overlapping pairs: polysect's `contact_with` (depth, normal,
-//!   overlap polygon and area) beside parry's `contact` (depth, normal and points; it has
-//!   no overlap polygon).
+//!   overlap polygon and area) and `depth_with` (depth and normal only) beside parry's
+//!   `contact` (depth, normal and points; it has no overlap polygon).
 //!
 //! Pairs come from the generators' rotated ellipses (`generate::pair`); the expected
 //! relation is asserted inside every iteration.
@@ -17,7 +17,7 @@ use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query::{contact as parry_contact, distance as parry_distance};
 use parry2d_f64::shape::ConvexPolygon as ParryPolygon;
-use polysect::contact::{Contact, contact_with, distance_with};
+use polysect::contact::{Contact, contact_with, depth_with, distance_with};
 use polysect::generate::{self, Family, Relation};
 use polysect::intersect::{ArrayIntersection, Linear};
 use polysect::{ConvexPolygon, Exact, Fast};
@@ -88,6 +88,9 @@ fn bench(c: &mut Criterion) {
                 };
                 assert!(o.overlap.len() >= 3)
             })
+        });
+        group.bench_function(BenchmarkId::new("polysect-depth", n), |b| {
+            b.iter(|| assert!(depth_with(Exact, black_box(&p), black_box(&q)).is_some()))
         });
         let (pp, pq) = (parry_polygon(&p), parry_polygon(&q));
         group.bench_function(BenchmarkId::new("parry2d", n), |b| {
