@@ -10,7 +10,7 @@
 
 use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
-use polysect::contact::{Contact, contact_linked_with, contact_with};
+use polysect::contact::{Contact, contact_linked_with, contact_with, depth_with, distance_with};
 use polysect::polygon::convex_hull;
 use polysect::{ConvexPolygon, Exact, Fast, LinkedPolygon, Point};
 use rand::rngs::SmallRng;
@@ -518,6 +518,29 @@ fn check_exact(p: &ConvexPolygon, q: &ConvexPolygon, what: &str) -> bool {
     // Linked polygons give the same contact.
     let (lp, lq) = (LinkedPolygon::from_convex(p), LinkedPolygon::from_convex(q));
     assert_eq!(contact_linked_with(Exact, &lp, &lq), got, "{what}: linked");
+    // The lighter queries give the checked contact's values.
+    match &got {
+        Contact::Separated(s) => {
+            let d = distance_with(Exact, p, q).expect("apart");
+            assert_eq!(
+                (d.distance, d.closest),
+                (s.distance, s.closest),
+                "{what}: distance_with"
+            );
+            assert!(
+                depth_with(Exact, p, q).is_none(),
+                "{what}: depth_with of a separated pair"
+            );
+        }
+        Contact::Overlapping(o) => {
+            let d = depth_with(Exact, p, q).expect("meeting");
+            assert_eq!((d.depth, d.normal), (o.depth, o.normal), "{what}: depth_with");
+            assert!(
+                distance_with(Exact, p, q).is_none(),
+                "{what}: distance_with of a meeting pair"
+            );
+        }
+    }
     // The fast kernel never panics, and its constructions are exact roundings of
     // whatever it decided.
     let _ = contact_with(Fast, p, q);
@@ -774,4 +797,44 @@ fn touching_has_zero_depth_and_a_separating_normal() {
     };
     assert_eq!(o.overlap, [Point::new(1.0, 0.0), Point::new(1.0, 1.0)]);
     assert_eq!(o.normal, [1.0, 0.0]);
+}
+
+/// The scene's contacts of all intersecting pairs: exactly the pairs the reference finds
+/// meeting, each with the contact the checked function gives, on grid polygons that
+/// touch, share edges and contain each other.
+#[test]
+fn scene_contacts_are_the_reference_pairs_with_their_contacts() {
+    let mut rng = SmallRng::seed_from_u64(SEED + 7);
+    let mut scene = polysect::store::Scene::new();
+    let mut polygons = Vec::new();
+    for _ in 0..60 {
+        let k = rng.random_range(3..8);
+        let c = (rng.random_range(-20..=20), rng.random_range(-20..=20));
+        let p = grid_polygon(&mut rng, k, 6, c);
+        let id = scene.insert(LinkedPolygon::from_convex(&p));
+        polygons.push((id, p));
+    }
+    let mut want = Vec::new();
+    for (i, (a, p)) in polygons.iter().enumerate() {
+        for (b, q) in &polygons[i + 1..] {
+            if ref_intersects(&Poly::of(p), &Poly::of(q)) {
+                want.push(if a < b { (*a, *b) } else { (*b, *a) });
+            }
+        }
+    }
+    want.sort();
+    let contacts = scene.contacts();
+    let mut got: Vec<_> = contacts
+        .iter()
+        .map(|(a, b, _)| if a < b { (*a, *b) } else { (*b, *a) })
+        .collect();
+    got.sort();
+    assert_eq!(got, want);
+    assert!(want.len() > 20, "{} meeting pairs", want.len());
+    let of = |id| &polygons.iter().find(|(k, _)| *k == id).expect("inserted").1;
+    for (a, b, c) in &contacts {
+        assert!(c.intersects());
+        assert_eq!(c, &contact_with(Exact, of(*a), of(*b)), "{a} and {b}");
+        check_exact(of(*a), of(*b), "scene pair");
+    }
 }
