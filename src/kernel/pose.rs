@@ -65,6 +65,17 @@ pub enum PoseError {
     },
     /// `c = s = 0`: the map would collapse every shape onto one point.
     ZeroRotation,
+    /// The image of this shape point has a coordinate that overflows.
+    Overflow {
+        /// The shape point whose image overflows.
+        point: Point,
+    },
+    /// The rounded image is not strictly convex (or not counter-clockwise, winding once)
+    /// at this world point.
+    NotConvex {
+        /// The first world point (counter-clockwise) where the image breaks convexity.
+        point: Point,
+    },
 }
 
 impl fmt::Display for PoseError {
@@ -79,6 +90,13 @@ impl fmt::Display for PoseError {
                 rotation[0], rotation[1], translation[0], translation[1]
             ),
             PoseError::ZeroRotation => write!(f, "pose rotation [0, 0]: cosine and sine are both zero"),
+            PoseError::Overflow { point } => {
+                write!(f, "the pose maps shape point {point} outside the finite range")
+            }
+            PoseError::NotConvex { point } => write!(
+                f,
+                "the posed polygon, each coordinate rounded, is not strictly convex at {point}"
+            ),
         }
     }
 }
