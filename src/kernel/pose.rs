@@ -15,14 +15,15 @@
 //!
 //! # Complexity
 //! O(1). The fast path computes the two products exactly (a product and its error by
-//! fused multiply-add), adds the three leading terms with two-sums (exact) and the
+//! Dekker's two-product), adds the three leading terms with two-sums (exact) and the
 //! four small error terms in plain arithmetic under a certified bound, and accepts the
 //! rounded sum when the bound proves that no rounding midpoint lies within reach: about
 //! twenty floating-point operations. It falls back to exact rationals
 //! ([`Rational`](super::Rational), a few big-integer products and one division) when
 //! the bound cannot decide: exact ties and values within about 2⁻¹⁰⁰ of a midpoint
 //! relative to the terms, products below 2⁻⁹⁶⁰ (where the product's error is not
-//! representable), and results near overflow or in the subnormal range.
+//! representable), factors above 2⁹⁹⁵ (where the splitting would overflow), and
+//! results near overflow or in the subnormal range.
 //!
 //! # Degeneracies
 //! Cancellation (`c·x ≈ s·y`) is handled like any other input: the error terms carry
@@ -197,6 +198,28 @@ impl Pose {
 const TINY_PRODUCT: f64 = 1.0e-289; // below 2^-960
 const U: f64 = f64::EPSILON / 2.0;
 
+/// Factors below this split without overflow (Veltkamp's splitting multiplies by 2^27 + 1).
+const SPLIT_LIMIT: f64 = 1.0e299; // below 2^995
+
+/// Veltkamp's split: `hi + lo = v` exactly, each with at most 26 significant bits.
+#[inline(always)]
+fn split(v: f64) -> (f64, f64) {
+    let c = 134_217_729.0 * v; // 2^27 + 1
+    let hi = c - (c - v);
+    (hi, v - hi)
+}
+
+/// Dekker's two-product: `a·b − p` exactly, for `p = a·b` finite with a representable
+/// error (`|p| ≥ 2^-960` or a zero factor) and `|a|, |b|` zero or in `[2^-996, 2^995)`. Plain operations, no
+/// fused multiply-add: without the target feature `mul_add` is a library call, several
+/// times slower than these seventeen operations.
+#[inline(always)]
+fn product_error(a: f64, b: f64, p: f64) -> f64 {
+    let (ah, al) = split(a);
+    let (bh, bl) = split(b);
+    ((ah * bh - p) + ah * bl + al * bh) + al * bl
+}
+
 /// Knuth's two-sum: `s + e = a + b` exactly (finite operands, finite `s`).
 #[inline(always)]
 fn two_sum(a: f64, b: f64) -> (f64, f64) {
@@ -222,11 +245,19 @@ fn fast_affine(a: f64, x: f64, b: f64, y: f64, t: f64) -> Option<f64> {
     // Each product's error is exact when the product is finite and not tiny (or exactly
     // zero because a factor is).
     let exact_product = |p: f64, f: f64, g: f64| p.abs() >= TINY_PRODUCT || f == 0.0 || g == 0.0;
-    if !(p1.is_finite() && p2.is_finite() && exact_product(p1, a, x) && exact_product(p2, b, y)) {
+    // Splitting is exact for factors in the normal range, far from overflow.
+    let normal = |v: f64| v == 0.0 || v.abs() >= 1.0e-300;
+    let splittable = a.abs().max(x.abs()).max(b.abs()).max(y.abs()) < SPLIT_LIMIT
+        && normal(a)
+        && normal(x)
+        && normal(b)
+        && normal(y);
+    if !(splittable && p1.is_finite() && p2.is_finite() && exact_product(p1, a, x) && exact_product(p2, b, y))
+    {
         return None;
     }
-    let e1 = a.mul_add(x, -p1);
-    let e2 = b.mul_add(y, -p2);
+    let e1 = product_error(a, x, p1);
+    let e2 = product_error(b, y, p2);
     let (s1, t1) = two_sum(p1, -p2);
     let (s2, t2) = two_sum(s1, t);
     if !s2.is_finite() {
