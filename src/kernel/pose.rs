@@ -269,7 +269,7 @@ fn fast_affine(a: f64, x: f64, b: f64, y: f64, t: f64) -> Option<f64> {
     let sum_abs = ((t1.abs() + t2.abs()) + e1.abs()) + e2.abs();
     let delta = sum_abs * (4.0 * U) + f64::from_bits(1);
     let (r, r_err) = two_sum(s2, tail);
-    if !(r.abs() < f64::MAX) {
+    if r.is_nan() || r.abs() >= f64::MAX {
         return None;
     }
     // X ∈ [r + r_err − δ, r + r_err + δ]; r is its rounding when that interval lies
