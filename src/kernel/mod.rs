@@ -27,11 +27,13 @@ mod bbox;
 pub mod exact;
 #[cfg(feature = "serde")]
 mod point_serde;
+mod pose;
 pub mod rational;
 mod segment;
 
 pub use bbox::BoundingBox;
 pub use exact::{Exact, ExactWithin};
+pub use pose::{Pose, PoseError};
 pub use rational::Rational;
 pub use segment::{SegmentContact, point_on_segment, segment_contact, segments_intersect};
 

@@ -23,7 +23,7 @@ use super::json::shown;
 use super::line::{Channel, Stop, each_line, json_string};
 use super::{certified_answer_json, write_point};
 use crate::intersect::proven_linked;
-use crate::kernel::{Exact, Kernel, Point};
+use crate::kernel::{Exact, Kernel, Point, Pose};
 use crate::polygon::{ConvexPolygon, EditError, LinkedPolygon, VertexId};
 use crate::store::{PolygonId, Scene, SceneError, Strategy};
 use std::collections::{BTreeMap, HashMap};
@@ -91,10 +91,21 @@ impl SceneSession<Exact> {
 /// The object every line should be, for messages.
 const SHAPE: &str = r#"{"op": ..., ...}"#;
 
-const OPS: &str = "add, drop, insert, remove, move, translate, intersects, contact, pairs, vertices";
+const OPS: &str = "add, drop, insert, remove, move, translate, pose, intersects, contact, pairs, vertices";
 
-const KEYS: [&str; 10] = [
-    "op", "name", "points", "after", "point", "vertex", "to", "by", "a", "b",
+const KEYS: [&str; 12] = [
+    "op",
+    "name",
+    "points",
+    "after",
+    "point",
+    "vertex",
+    "to",
+    "by",
+    "a",
+    "b",
+    "rotation",
+    "translation",
 ];
 
 /// One line's fields, each typed as its key says wherever it appears.
@@ -110,6 +121,8 @@ struct OpLine {
     by: Option<Point>,
     a: Option<String>,
     b: Option<String>,
+    rotation: Option<Point>,
+    translation: Option<Point>,
 }
 
 fn parse_op<R: Read, W: Write>(ch: &mut Channel<R, W>) -> Result<OpLine, Stop> {
@@ -126,7 +139,9 @@ fn parse_op<R: Read, W: Write>(ch: &mut Channel<R, W>) -> Result<OpLine, Stop> {
             6 => l.to = ch.point(field)?,
             7 => l.by = ch.point(field)?,
             8 => l.a = ch.string(field)?,
-            _ => l.b = ch.string(field)?,
+            9 => l.b = ch.string(field)?,
+            10 => l.rotation = ch.point(field)?,
+            _ => l.translation = ch.point(field)?,
         }
         Ok(())
     })?;
@@ -379,6 +394,18 @@ impl<K: Kernel> SceneSession<K> {
                 })?;
                 Ok(OK.into())
             }
+            "pose" => {
+                let name = l.name.ok_or_else(|| need("name"))?;
+                let rotation = l.rotation.unwrap_or(Point::new(1.0, 0.0));
+                let translation = l.translation.unwrap_or(Point::new(0.0, 0.0));
+                let pid = self.named(&name)?.id;
+                let pose = Pose::new([rotation.x, rotation.y], [translation.x, translation.y])
+                    .map_err(|e| format!("pose refused: {e}"))?;
+                self.scene
+                    .set_pose(pid, pose)
+                    .map_err(|e| format!("pose refused: {}", reason(&e)))?;
+                Ok(OK.into())
+            }
             "intersects" => {
                 let a = l.a.ok_or_else(|| need("a"))?;
                 let b = l.b.ok_or_else(|| need("b"))?;
@@ -549,6 +576,23 @@ impl<K: Kernel> SceneSession<K> {
         id_text.push_str("], ");
         point_text.push(']');
         id_text.push_str(&point_text);
+        if self.scene.pose(named.id).ok().flatten().is_some() {
+            let shape = self
+                .scene
+                .shape(named.id)
+                .map_err(|e| format!("internal error: {e}"))?;
+            let walk = shape
+                .iter_from(start)
+                .map_err(|e| format!("internal error: {e}"))?;
+            id_text.push_str(", \"shape\": [");
+            for (i, (_, p)) in walk.enumerate() {
+                if i > 0 {
+                    id_text.push(',');
+                }
+                write_point(&mut id_text, p);
+            }
+            id_text.push(']');
+        }
         Ok(id_text)
     }
 }
@@ -565,6 +609,7 @@ fn quoted(name: &str) -> String {
 fn reason(e: &SceneError) -> String {
     match e {
         SceneError::Edit(_, edit) => edit.to_string(),
+        SceneError::Pose(_, pose) => pose.to_string(),
         other => other.to_string(),
     }
 }

@@ -8,7 +8,7 @@ use super::lazy::LazyLinked;
 use super::route::QueryWorkspace;
 use super::warm::{WarmCache, WarmStats};
 use crate::kernel::BoundingBox;
-use crate::kernel::{Exact, Kernel, Point};
+use crate::kernel::{Exact, Kernel, Point, Pose, PoseError};
 use crate::polygon::{ConvexPolygon, EditError, Identity, LinkedPolygon, PolygonError, VertexId};
 use rand::SeedableRng;
 use rand::rngs::SmallRng;
@@ -56,6 +56,9 @@ pub enum SceneError {
     Edit(PolygonId, EditError),
     /// A polygon to insert is invalid.
     Polygon(PolygonError),
+    /// A pose of this polygon (set, moved by a translation, or kept through a vertex
+    /// edit) was refused: the image overflows or is not strictly convex once rounded.
+    Pose(PolygonId, PoseError),
 }
 
 impl SceneError {
@@ -63,9 +66,10 @@ impl SceneError {
     /// that was never inserted).
     pub fn polygon(&self) -> Option<PolygonId> {
         match self {
-            SceneError::StalePolygon(id) | SceneError::ForeignPolygon(id) | SceneError::Edit(id, _) => {
-                Some(*id)
-            }
+            SceneError::StalePolygon(id)
+            | SceneError::ForeignPolygon(id)
+            | SceneError::Edit(id, _)
+            | SceneError::Pose(id, _) => Some(*id),
             SceneError::Polygon(_) => None,
         }
     }
@@ -85,6 +89,7 @@ impl fmt::Display for SceneError {
             }
             SceneError::Edit(id, e) => write!(f, "polygon {id}: {e}"),
             SceneError::Polygon(e) => write!(f, "invalid polygon: {e}"),
+            SceneError::Pose(id, e) => write!(f, "polygon {id}: {e}"),
         }
     }
 }
@@ -95,6 +100,7 @@ impl std::error::Error for SceneError {
             SceneError::StalePolygon(_) | SceneError::ForeignPolygon(_) => None,
             SceneError::Edit(_, e) => Some(e),
             SceneError::Polygon(e) => Some(e),
+            SceneError::Pose(_, e) => Some(e),
         }
     }
 }
@@ -129,6 +135,31 @@ pub(super) struct Entry {
     /// Scratch of the plan being made: chosen for conversion, and what a snapshot would
     /// save the planned queries (and how many) that involve this polygon.
     pub(super) plan: PlanMark,
+    /// The shape and the pose of a posed polygon (`polygon` is then its world image).
+    pub(super) posed: Option<Box<Posed>>,
+}
+
+/// A posed polygon's shape (edited in shape coordinates) and its pose. The entry's
+/// `polygon` is the shape's image, a twin of `shape` (the same vertex handles), with no
+/// translation pending.
+#[derive(Clone, Debug)]
+pub(super) struct Posed {
+    pub(super) pose: Pose,
+    pub(super) shape: LinkedPolygon,
+}
+
+/// The image of `shape` under `pose`, each coordinate correctly rounded, checked exactly.
+fn world_of(shape: &LinkedPolygon, pose: &Pose) -> Result<LinkedPolygon, PoseError> {
+    shape.mapped_twin(|p| pose.apply(p)).map_err(|e| match e {
+        EditError::NonFinite { point } => PoseError::Overflow { point },
+        EditError::RoundingBreaksConvexity { point } | EditError::WouldBreakConvexity { point } => {
+            PoseError::NotConvex { point }
+        }
+        // `mapped_twin` refuses nothing else; name a vertex all the same.
+        _ => PoseError::NotConvex {
+            point: shape.point_at(0),
+        },
+    })
 }
 
 /// Per-polygon marks of one plan, so that planning a batch is O(1) per pair; every
@@ -344,6 +375,7 @@ impl<K: Kernel> Scene<K> {
             .iter()
             .map(|(_, e)| {
                 e.polygon.arena_bytes()
+                    + e.posed.as_ref().map_or(0, |p| p.shape.arena_bytes())
                     + e.snapshot
                         .as_ref()
                         .map_or(0, |s| std::mem::size_of_val(s.vertices()))
@@ -375,6 +407,7 @@ impl<K: Kernel> Scene<K> {
             rounding_margin: 0.0,
             grid,
             plan: PlanMark::default(),
+            posed: None,
         });
         self.broad.mark(key);
         PolygonId {
@@ -396,7 +429,8 @@ impl<K: Kernel> Scene<K> {
         Ok(self.insert(LinkedPolygon::from_points(points)?))
     }
 
-    /// Removes a polygon, returning it (its vertex handles stay valid on it).
+    /// Removes a polygon, returning it as [`polygon`](Self::polygon) shows it (for a
+    /// posed polygon, its world polygon; its vertex handles stay valid on it).
     ///
     /// # Errors
     /// `StalePolygon`, `ForeignPolygon`.
@@ -474,6 +508,9 @@ impl<K: Kernel> Scene<K> {
         p: Point,
     ) -> Result<VertexId, SceneError> {
         let key = self.key(id)?;
+        if self.entries[key].posed.is_some() {
+            return self.edit_posed(id, key, |shape| shape.insert_after(after, p));
+        }
         let e = &mut self.entries[key];
         let v = e
             .polygon
@@ -493,6 +530,9 @@ impl<K: Kernel> Scene<K> {
     /// `ForeignHandle`, `TooFewVertices`).
     pub fn remove_vertex(&mut self, id: PolygonId, v: VertexId) -> Result<Point, SceneError> {
         let key = self.key(id)?;
+        if self.entries[key].posed.is_some() {
+            return self.edit_posed(id, key, |shape| shape.remove(v));
+        }
         let e = &mut self.entries[key];
         let old = e
             .polygon
@@ -513,6 +553,9 @@ impl<K: Kernel> Scene<K> {
     /// `ForeignHandle`, `NonFinite`, `WouldBreakConvexity`).
     pub fn move_vertex(&mut self, id: PolygonId, v: VertexId, p: Point) -> Result<Point, SceneError> {
         let key = self.key(id)?;
+        if self.entries[key].posed.is_some() {
+            return self.edit_posed(id, key, |shape| shape.move_vertex(v, p));
+        }
         let e = &mut self.entries[key];
         let old = e
             .polygon
@@ -563,6 +606,13 @@ impl<K: Kernel> Scene<K> {
     /// ```
     pub fn translate(&mut self, id: PolygonId, dx: f64, dy: f64) -> Result<(), SceneError> {
         let key = self.key(id)?;
+        if let Some(posed) = &self.entries[key].posed {
+            let pose = posed
+                .pose
+                .translated(dx, dy)
+                .map_err(|err| SceneError::Pose(id, err))?;
+            return self.set_pose(id, pose);
+        }
         let e = &mut self.entries[key];
         let mut exact = false;
         let shifted = BoundingBox {
@@ -631,6 +681,132 @@ impl<K: Kernel> Scene<K> {
         Ok(())
     }
 
+    /// Places the polygon's shape in the world by `pose`, replacing any previous pose
+    /// (absolute: nothing drifts however often it is set). The *shape* is the polygon as
+    /// it stood when it was first posed, with the vertex edits made since; from then on
+    /// [`polygon`](Self::polygon), [`bounding_box`](Self::bounding_box) and every query
+    /// (pairs, certificates, contact) read the *world polygon*: each shape vertex mapped
+    /// by [`Pose::apply`], each coordinate the exact value rounded to nearest. Vertex
+    /// handles are the shape's, valid on the world polygon too. O(n): the image, its
+    /// exact strict-convexity check and its box in a few sequential passes; the array
+    /// snapshot, when the polygon had one, is rebuilt from the image.
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`; [`SceneError::Pose`] with
+    /// [`PoseError::Overflow`] when a world coordinate would overflow, or
+    /// [`PoseError::NotConvex`] when the rounded image is not strictly convex. Nothing
+    /// changes on error.
+    ///
+    /// ```
+    /// use polysect::store::Scene;
+    /// use polysect::kernel::Pose;
+    /// use polysect::Point;
+    /// let mut scene = Scene::new();
+    /// let a = scene.insert_points([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+    /// let b = scene.insert_points([[3.0, 0.0], [4.0, 0.0], [4.0, 1.0]])?;
+    /// assert!(!scene.intersects(a, b)?);
+    /// // A quarter turn about the origin, then right by 2: b's corners land at (2, 3),
+    /// // (2, 4), (1, 4), still apart. A half turn, then right by 6: (4, 0) lands on a's
+    /// // corner (2, 0).
+    /// scene.set_pose(b, Pose::new([0.0, 1.0], [2.0, 0.0])?)?;
+    /// assert!(!scene.intersects(a, b)?);
+    /// scene.set_pose(b, Pose::new([-1.0, 0.0], [6.0, 0.0])?)?;
+    /// assert!(scene.intersects(a, b)?);
+    /// assert_eq!(scene.world_points(b)?[0], Point::new(3.0, 0.0));
+    /// assert_eq!(scene.shape(b)?.point_at(0), Point::new(3.0, 0.0));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn set_pose(&mut self, id: PolygonId, pose: Pose) -> Result<(), SceneError> {
+        let key = self.key(id)?;
+        let e = &mut self.entries[key];
+        let world = match &e.posed {
+            Some(posed) => world_of(&posed.shape, &pose),
+            None => world_of(e.polygon.materialized(), &pose),
+        }
+        .map_err(|err| SceneError::Pose(id, err))?;
+        let old = std::mem::replace(&mut e.polygon, LazyLinked::new(world));
+        match &mut e.posed {
+            Some(posed) => posed.pose = pose,
+            None => {
+                e.posed = Some(Box::new(Posed {
+                    pose,
+                    shape: old.into_inner(),
+                }));
+            }
+        }
+        self.placed(key);
+        Ok(())
+    }
+
+    /// The polygon's pose: `None` while it was never posed.
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`.
+    pub fn pose(&self, id: PolygonId) -> Result<Option<Pose>, SceneError> {
+        self.key(id)
+            .map(|k| self.entries[k].posed.as_ref().map(|p| p.pose))
+    }
+
+    /// The polygon's shape: for a posed polygon the vertices as added and edited, in
+    /// shape coordinates (the same vertex handles as the world polygon); otherwise the
+    /// polygon itself, as [`polygon`](Self::polygon).
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`.
+    pub fn shape(&self, id: PolygonId) -> Result<&LinkedPolygon, SceneError> {
+        let k = self.key(id)?;
+        let e = &self.entries[k];
+        Ok(match &e.posed {
+            Some(posed) => &posed.shape,
+            None => e.polygon.get(),
+        })
+    }
+
+    /// The world polygon's vertices counter-clockwise from the linked polygon's first
+    /// position (what every query reads; for a polygon never posed, its own vertices).
+    /// O(n).
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`.
+    pub fn world_points(&self, id: PolygonId) -> Result<Vec<Point>, SceneError> {
+        Ok(self.polygon(id)?.to_convex().into_vertices())
+    }
+
+    /// A vertex edit of a posed polygon: `edit` on a twin of the shape, then its image
+    /// under the pose; both must stay strictly convex, else nothing changes.
+    fn edit_posed<T>(
+        &mut self,
+        id: PolygonId,
+        key: usize,
+        edit: impl FnOnce(&mut LinkedPolygon) -> Result<T, EditError>,
+    ) -> Result<T, SceneError> {
+        let e = &mut self.entries[key];
+        let posed = e.posed.as_mut().expect("a posed polygon");
+        let mut shape = posed.shape.translated_twin(&[]);
+        let out = edit(&mut shape).map_err(|err| SceneError::Edit(id, err))?;
+        let world = world_of(&shape, &posed.pose).map_err(|err| SceneError::Pose(id, err))?;
+        posed.shape = shape;
+        e.polygon = LazyLinked::new(world);
+        e.account.edited();
+        self.placed(key);
+        Ok(out)
+    }
+
+    /// After a posed polygon's world image changed: its box, its snapshot (rebuilt when
+    /// it had one), its version, the broad phase.
+    fn placed(&mut self, key: usize) {
+        let e = &mut self.entries[key];
+        let world = e.polygon.get();
+        e.bbox = world.bounding_box();
+        e.bbox_tight = true;
+        e.rounding_margin = 0.0;
+        e.version += 1;
+        if e.snapshot.is_some() {
+            e.snapshot = Some(world.to_convex());
+        }
+        self.broad.mark(key);
+    }
+
     fn grow_box(&mut self, key: usize, p: Point) {
         let e = &mut self.entries[key];
         let before = e.bbox;
@@ -687,6 +863,23 @@ impl<K: Kernel> Scene<K> {
                     "polygon {k}: box {b:?}, true box {exact:?}, tight {}",
                     e.bbox_tight
                 ));
+            }
+            if let Some(posed) = &e.posed {
+                posed
+                    .shape
+                    .debug_validate()
+                    .map_err(|m| format!("polygon {k}: shape: {m}"))?;
+                if posed.shape.len() != polygon.len() {
+                    return Err(format!("polygon {k}: world and shape sizes differ"));
+                }
+                for pos in 0..polygon.len() {
+                    let (w, sp) = (polygon.point_at(pos), posed.shape.point_at(pos));
+                    if posed.pose.apply(sp) != Some(w) || polygon.id_at(pos) != posed.shape.id_at(pos) {
+                        return Err(format!(
+                            "polygon {k}: world vertex {pos} is not the shape's image"
+                        ));
+                    }
+                }
             }
             if let Some(s) = &e.snapshot {
                 let mut now = polygon.to_convex().into_vertices();

@@ -224,6 +224,34 @@ impl LinkedPolygon {
         twin
     }
 
+    /// The image of this polygon with every vertex mapped by `f`, built beside it as a
+    /// twin (as [`translated_twin`](Self::translated_twin): the same owner and links, so
+    /// every vertex handle of this polygon is valid on it), checked exactly to be
+    /// strictly convex, counter-clockwise and winding once. `f` returns `None` where the
+    /// image overflows. For a holder of a shape that shows its placed image through a
+    /// shared reference and never edits the image itself. O(n): one pass in storage
+    /// order, one walk along the links.
+    ///
+    /// # Errors
+    /// [`EditError::NonFinite`] naming the first vertex (in storage order) whose image
+    /// overflows; [`EditError::RoundingBreaksConvexity`] naming the first image vertex
+    /// where the image is not strictly convex.
+    pub(crate) fn mapped_twin(&self, f: impl Fn(Point) -> Option<Point>) -> Result<LinkedPolygon, EditError> {
+        let mut nodes = self.nodes.clone();
+        for node in &mut nodes {
+            node.point = f(node.point).ok_or(EditError::NonFinite { point: node.point })?;
+        }
+        let twin = LinkedPolygon {
+            owner: Identity(self.owner.get()),
+            nodes,
+            slots: self.slots.clone(),
+            next_generation: self.next_generation,
+            relinks: self.relinks,
+        };
+        twin.check_translation(0.0, 0.0)?;
+        Ok(twin)
+    }
+
     /// Whether `v` may sit between the vertices at positions a and b = next(a) (or
     /// replace the single vertex between them): strictly right of a→b, strict left
     /// turns at a and at b.
