@@ -478,8 +478,8 @@ fn median(v: &mut [f64]) -> f64 {
     v[v.len() / 2]
 }
 
-/// A polygon's planner account since its last edit: the ski-rental rent and the history
-/// of queries between edits.
+/// A polygon's planner account since its last edit: what answering without a snapshot
+/// has cost so far, and the history of queries between edits.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Account {
     /// What the missing snapshot of this polygon has cost the queries since its last
@@ -488,7 +488,7 @@ pub(crate) struct Account {
     /// Queries (past the bounding boxes) since the last edit.
     queries_since_edit: u32,
     /// Moving average of the number of queries between two edits (infinite until the
-    /// first edit: no history, plain ski rental).
+    /// first edit: no history, convert once the cost so far reaches the conversion's).
     queries_per_edit: f64,
 }
 
@@ -503,7 +503,7 @@ impl Default for Account {
 }
 
 impl Account {
-    /// An edit: the snapshot is gone, the rent starts again, the history learns how many
+    /// An edit: the snapshot is gone, the cost so far starts again at 0, the history learns how many
     /// queries came between the last two edits.
     pub(crate) fn edited(&mut self) {
         self.rent_ns = 0.0;
@@ -521,7 +521,7 @@ impl Account {
         self.queries_since_edit = self.queries_since_edit.saturating_add(1);
     }
 
-    /// A query answered without this polygon's snapshot: rent of `saving_ns`.
+    /// A query answered without this polygon's snapshot, which cost it `saving_ns` more.
     pub(crate) fn pay(&mut self, saving_ns: f64) {
         self.rent_ns += saving_ns;
     }
@@ -530,9 +530,9 @@ impl Account {
     /// `known` queries being planned now (one query, or a batch's), `cost_ns` the
     /// conversion.
     ///
-    /// Ski rental, with the queries at hand counted: buy at once when they alone pay for
-    /// it; otherwise buy once the rent since the last edit plus their saving reaches the
-    /// price, unless the queries expected before the next edit (the average between
+    /// Convert at once when the queries at hand alone pay for the conversion; otherwise
+    /// convert once the extra cost since the last edit plus their saving reaches the
+    /// conversion's cost, unless the queries expected before the next edit (the average between
     /// edits so far, less those already seen; as many again as already seen once past
     /// the average) would not pay for it.
     pub(crate) fn should_convert(&self, cost_ns: f64, known_ns: f64, known: u32) -> bool {

@@ -1,5 +1,5 @@
-//! Planning a batch of queries on a [`Scene`]: bounding boxes, the ski-rental choice of
-//! conversions, and the route of each pair (the rule is in the module docs of
+//! Planning a batch of queries on a [`Scene`]: bounding boxes, the choice of conversions
+//! (convert once answering without a snapshot has cost as much as converting), and the route of each pair (the rule is in the module docs of
 //! [`store`](super)); warm starts decide what they can first. The cost model it asks is
 //! `cost.rs`; answering the routes is `query.rs`.
 
@@ -193,7 +193,7 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// The route of a live pair once conversions are chosen, and its estimated cost;
-    /// unconverted polygons pay their rent.
+    /// unconverted polygons add what they cost to their accounts.
     fn finish_route(&mut self, a: usize, b: usize) -> (Route, f64) {
         let (pa, pb) = (self.entries[a].polygon.arena(), self.entries[b].polygon.arena());
         let (na, nb) = (pa.vertices, pb.vertices);

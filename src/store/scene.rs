@@ -124,7 +124,8 @@ pub(super) struct Entry {
     pub(super) version: u64,
     /// The array form, present only while the polygon is unchanged since it was built.
     pub(super) snapshot: Option<ConvexPolygon>,
-    /// The planner's ski-rental account.
+    /// What answering without a snapshot has cost this polygon's queries since its last
+    /// edit (the planner converts once that reaches the conversion's cost).
     pub(super) account: Account,
     /// A translation whose rounding moves no coordinate by this much or more keeps the
     /// polygon strictly convex (0: unknown); see `Scene::translate`.
