@@ -556,3 +556,44 @@ fn output_failures_exit_1_and_closed_pipes_exit_0() {
     assert_eq!(out.status.code(), Some(0));
     assert!(out.stderr.is_empty(), "{}", String::from_utf8_lossy(&out.stderr));
 }
+
+/// A line's own `"certificate"` decides for that `intersects` line (over the session's
+/// `--certificate`); on any other op it is an error that changes nothing.
+#[test]
+fn a_lines_certificate_field_is_honoured_or_refused() {
+    let input = r#"{"op": "add", "name": "p", "points": [[0,0],[2,0],[2,2],[0,2]]}
+{"op": "add", "name": "q", "points": [[3,0],[4,0],[4,1]]}
+{"op": "intersects", "a": "p", "b": "q", "certificate": true}
+{"op": "intersects", "a": "p", "b": "q", "certificate": false}
+{"op": "intersects", "a": "p", "b": "q"}
+{"op": "translate", "name": "q", "by": [-5, 0], "certificate": true}
+{"op": "intersects", "a": "p", "b": "q", "certificate": null}
+{"op": "vertices", "name": "q"}
+"#;
+    for (args, plain_default) in [(&["scene"][..], true), (&["scene", "--certificate"][..], false)] {
+        let got = replies(args, input);
+        assert_eq!(got.len(), 8);
+        assert_eq!(got[0], json!({"ok": true}));
+        let edge = &got[2]["certificate"]["separating_edge"];
+        assert_eq!(got[2]["intersects"], json!(false), "{}", got[2]);
+        assert!(edge["from"].is_array() && edge["to"].is_array(), "{}", got[2]);
+        assert_eq!(got[3], json!({"intersects": false}));
+        if plain_default {
+            assert_eq!(got[4], json!({"intersects": false}));
+        } else {
+            assert!(got[4]["certificate"].is_object(), "{}", got[4]);
+        }
+        assert!(
+            got[5]["error"].as_str().unwrap().contains("certificate"),
+            "{}",
+            got[5]
+        );
+        assert!(
+            got[6]["error"].as_str().unwrap().contains("certificate"),
+            "{}",
+            got[6]
+        );
+        // The refused translate changed nothing.
+        assert_eq!(got[7]["points"], json!([[3.0, 0.0], [4.0, 0.0], [4.0, 1.0]]));
+    }
+}

@@ -93,7 +93,7 @@ const SHAPE: &str = r#"{"op": ..., ...}"#;
 
 const OPS: &str = "add, drop, insert, remove, move, translate, pose, intersects, contact, pairs, vertices";
 
-const KEYS: [&str; 12] = [
+const KEYS: [&str; 13] = [
     "op",
     "name",
     "points",
@@ -106,6 +106,7 @@ const KEYS: [&str; 12] = [
     "b",
     "rotation",
     "translation",
+    "certificate",
 ];
 
 /// One line's fields, each typed as its key says wherever it appears.
@@ -123,6 +124,7 @@ struct OpLine {
     b: Option<String>,
     rotation: Option<Point>,
     translation: Option<Point>,
+    certificate: Option<bool>,
 }
 
 fn parse_op<R: Read, W: Write>(ch: &mut Channel<R, W>) -> Result<OpLine, Stop> {
@@ -141,7 +143,8 @@ fn parse_op<R: Read, W: Write>(ch: &mut Channel<R, W>) -> Result<OpLine, Stop> {
             8 => l.a = ch.string(field)?,
             9 => l.b = ch.string(field)?,
             10 => l.rotation = ch.point(field)?,
-            _ => l.translation = ch.point(field)?,
+            11 => l.translation = ch.point(field)?,
+            _ => l.certificate = ch.boolean(field)?,
         }
         Ok(())
     })?;
@@ -348,6 +351,11 @@ impl<K: Kernel> SceneSession<K> {
     fn apply(&mut self, l: OpLine) -> Result<String, String> {
         let op = l.op.ok_or("missing field `op`")?;
         let need = |field: &str| format!("op `{op}` needs the field `{field}`");
+        if l.certificate.is_some() && op != "intersects" {
+            return Err(format!(
+                "the field `certificate` applies only to op `intersects`, not to `{op}`"
+            ));
+        }
         match op.as_str() {
             "add" => {
                 let name = l.name.ok_or_else(|| need("name"))?;
@@ -409,7 +417,7 @@ impl<K: Kernel> SceneSession<K> {
             "intersects" => {
                 let a = l.a.ok_or_else(|| need("a"))?;
                 let b = l.b.ok_or_else(|| need("b"))?;
-                self.intersects(&a, &b)
+                self.intersects(&a, &b, l.certificate.unwrap_or(self.certificate))
             }
             "contact" => {
                 let a = l.a.ok_or_else(|| need("a"))?;
@@ -482,14 +490,15 @@ impl<K: Kernel> SceneSession<K> {
         Ok(format!("\"vertex\": {id}"))
     }
 
-    /// The `intersects` reply; with certificates, the certificate for the pair (`a` is
+    /// The `intersects` reply; with certificates (the line's `"certificate"`, else the
+    /// session's option), the certificate for the pair (`a` is
     /// its P, `b` its Q) after the answer, in the format of `check --certificate`. Under
     /// a kernel other than the exact one the certificate is verified exactly before it
     /// is printed (O(n + m)) and replaced by the exact reference's if it fails, so every
     /// printed certificate verifies.
-    fn intersects(&mut self, a: &str, b: &str) -> Result<String, String> {
+    fn intersects(&mut self, a: &str, b: &str, certificate: bool) -> Result<String, String> {
         let (ia, ib) = (self.named(a)?.id, self.named(b)?.id);
-        if self.certificate {
+        if certificate {
             let internal = |e: SceneError| format!("internal error: {e}");
             let mut certificate = self.scene.intersects_certified(ia, ib).map_err(internal)?;
             if K::NAME != Exact::NAME {
