@@ -32,8 +32,12 @@
 use super::{Point, Rational};
 use std::fmt;
 
-/// A rotation (with the scale `√(c² + s²)`) followed by a translation; see the
-/// [module docs](self). Every field is finite and `(c, s) ≠ (0, 0)`.
+/// A rotation (with the scale `√(c² + s²)`) followed by a translation. Every field is
+/// finite and `(c, s) ≠ (0, 0)`. [`apply`](Self::apply) rounds each coordinate of an
+/// image once from its exact value (nearest, ties to even), so a pose set absolutely
+/// every frame never drifts: O(1), about twenty floating-point operations, with exact
+/// rationals only where a certified bound cannot decide the rounding (ties, values
+/// within about 2⁻¹⁰⁰ of a midpoint, extreme exponents).
 ///
 /// ```
 /// use polysect::kernel::Pose;
@@ -182,7 +186,7 @@ impl Pose {
 
     /// The image of `p`, each coordinate correctly rounded (nearest, ties to even; an
     /// exact zero is `+0`), or `None` when a coordinate's rounding overflows or `p` is
-    /// not finite. See the [module docs](self) for the cost.
+    /// not finite. O(1) (the type's docs give the cost).
     #[inline]
     pub fn apply(&self, p: Point) -> Option<Point> {
         if !p.is_finite() {
