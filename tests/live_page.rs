@@ -1003,7 +1003,11 @@ fn the_served_page_has_the_help_the_numbers_and_the_trace_controls() {
         .to_string();
     let fetch = |path: &str| -> String {
         let mut s = TcpStream::connect(&addr).expect("connects");
-        write!(s, "GET {path} HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n").expect("sends");
+        write!(
+            s,
+            "GET {path} HTTP/1.1\r\nHost: {addr}\r\nConnection: close\r\n\r\n"
+        )
+        .expect("sends");
         let mut out = String::new();
         s.read_to_string(&mut out).expect("reads");
         out
