@@ -37,27 +37,39 @@ mod barba;
 mod certificate;
 mod chazelle_dobkin;
 mod clm;
+#[cfg(feature = "instrument")]
 mod counts;
 mod dobkin;
 mod fallback;
+mod kept;
 mod linear;
 mod linear_linked;
 mod linked;
+#[cfg(feature = "instrument")]
 mod trace;
 
 pub(crate) use crate::seeding::fresh_rng;
-pub use barba::{Barba, BarbaVariant};
+pub use barba::Barba;
+#[cfg(feature = "instrument")]
+pub use barba::BarbaVariant;
 pub use certificate::{Certificate, CertificateError, Derivation, Which, verify, verify_linked};
 pub use chazelle_dobkin::ChazelleDobkin;
-pub use clm::{Clm, ClmVariant, ClmWithFactor, ClmWorkspace, LpOrder, Sampling};
+pub use clm::{Clm, ClmWorkspace};
+#[cfg(feature = "instrument")]
+pub use clm::{ClmVariant, ClmWithFactor, LpOrder, Sampling};
+#[cfg(feature = "instrument")]
 pub use counts::{Counts, CountsSummary, LpCall};
-pub use dobkin::{Dobkin, DobkinVariant};
+pub use dobkin::Dobkin;
+#[cfg(feature = "instrument")]
+pub use dobkin::DobkinVariant;
 pub use fallback::{exact_certificate, proven, proven_linked};
+pub use kept::{Kept, Span};
 pub use linear::{Linear, brute_force};
 pub use linear_linked::LinearLinked;
 pub(crate) use linear_linked::separating_edge_at;
 pub use linked::{Convert, ConvertWorkspace, LinkedIntersection};
-pub use trace::{Kept, Mark, Role, Shape, Span, Trace, TraceStep, Tracer, trace, trace_rng};
+#[cfg(feature = "instrument")]
+pub use trace::{Mark, Role, Shape, Trace, TraceStep, Tracer, trace, trace_rng};
 
 use crate::kernel::{Exact, Fast, Kernel, Point, Precision};
 use crate::lp::{ArenaPoints, LpError, Separation};

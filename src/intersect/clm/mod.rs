@@ -240,6 +240,8 @@ pub enum Sampling {
 }
 
 /// Who puts the LP's constraints in random order in [`ClmVariant`].
+// Only the research variants (`instrument`) choose `Lp`.
+#[cfg_attr(not(feature = "instrument"), allow(dead_code))]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum LpOrder {
     /// Every LP shuffles all its points (Seidel's algorithm as written).
