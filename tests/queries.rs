@@ -714,59 +714,37 @@ fn every_query_answers_the_same_from_any_start_vertex() {
 
 // ---------- work ----------
 
-use std::sync::atomic::{AtomicU64, Ordering as AtomicOrdering};
-
-static PREDICATES: AtomicU64 = AtomicU64::new(0);
-
-/// The exact kernel, counting its predicate calls.
-#[derive(Clone, Copy, Debug, Default)]
-struct Counting;
-
-impl Kernel for Counting {
-    const NAME: &'static str = "counting";
-    type Within = Counting;
-    fn within(self, _boxes: [polysect::BoundingBox; 2]) -> Counting {
-        self
-    }
-    fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
-        PREDICATES.fetch_add(1, AtomicOrdering::Relaxed);
-        Exact.orient(a, b, c)
-    }
-    fn sign<P: polysect::kernel::Polynomial>(self, poly: &P) -> Sign {
-        PREDICATES.fetch_add(1, AtomicOrdering::Relaxed);
-        Exact.sign(poly)
-    }
-}
-
 /// The sampled queries' work, counted in predicates (not timed): O(√n) per query on
 /// average, over many random points and directions.
+#[cfg(feature = "instrument")]
 #[test]
 fn sampled_queries_do_sublinear_work() {
+    use polysect::kernel::Counted;
     let mut rng = SmallRng::seed_from_u64(SEED + 9);
     for log2 in [10u32, 14, 18] {
         let p = generate::ellipse_polygon(&mut rng, 1 << log2, &generate::Density::Uniform, true);
         let linked = shuffled(&p, &mut rng);
         let polysect::BoundingBox { min: lo, max: hi } = p.bounding_box();
         let queries = 400;
-        PREDICATES.store(0, AtomicOrdering::Relaxed);
+        Counted::<Exact>::take();
         for _ in 0..queries {
             let x = Point::new(rng.random_range(lo.x..hi.x), rng.random_range(lo.y..hi.y));
             assert_eq!(
-                linked.contains_point_with(Counting, x, &mut rng),
+                linked.contains_point_with(Counted(Exact), x, &mut rng),
                 p.contains_point(x)
             );
         }
-        let contains = PREDICATES.swap(0, AtomicOrdering::Relaxed) as f64 / queries as f64;
+        let contains = Counted::<Exact>::take() as f64 / queries as f64;
         for _ in 0..queries {
             let t: f64 = rng.random_range(0.0..std::f64::consts::TAU);
             let d = Point::new(t.cos(), t.sin());
-            let v = linked.extreme_vertex_with(Counting, d, &mut rng).unwrap();
+            let v = linked.extreme_vertex_with(Counted(Exact), d, &mut rng).unwrap();
             assert_eq!(
                 linked.point(v).unwrap(),
                 p.vertices()[p.extreme_vertex(d).unwrap()]
             );
         }
-        let extreme = PREDICATES.swap(0, AtomicOrdering::Relaxed) as f64 / queries as f64;
+        let extreme = Counted::<Exact>::take() as f64 / queries as f64;
         // Measured: about 2.3·√n and 1.6·√n; a linear walk would be n.
         let root = (p.len() as f64).sqrt();
         assert!(

@@ -24,6 +24,8 @@
 //! real answer (collinear, parallel, perpendicular), never an error.
 
 mod bbox;
+#[cfg(feature = "instrument")]
+mod counted;
 pub mod exact;
 #[cfg(feature = "serde")]
 mod point_serde;
@@ -32,6 +34,8 @@ pub mod rational;
 mod segment;
 
 pub use bbox::BoundingBox;
+#[cfg(feature = "instrument")]
+pub use counted::Counted;
 pub use exact::{Exact, ExactWithin};
 pub use pose::{Pose, PoseError};
 pub use rational::Rational;
@@ -237,11 +241,25 @@ pub trait Polynomial {
     fn eval<R: Ring>(&self) -> R;
 }
 
+/// Kernels are the crate's own ([`Fast`], [`Exact`], [`ExactWithin`], and with the
+/// `instrument` feature `Counted`): the algorithms rely on contracts a predicate cannot
+/// state in its signature (what [`Kernel::within`] may assume, which calls
+/// [`Kernel::EXACT`] lets them skip), so the trait is sealed.
+pub(crate) mod sealed {
+    /// Implemented by the crate's kernels only.
+    pub trait Sealed {}
+}
+
 /// Geometric predicates, answered either quickly ([`Fast`]) or exactly ([`Exact`]).
 ///
 /// All methods take finite coordinates. `orient` is the hot predicate and has a
 /// dedicated implementation; everything else goes through [`Kernel::sign`].
-pub trait Kernel: Copy + Clone + Default + fmt::Debug + Send + Sync + 'static {
+///
+/// The trait is sealed: the crate's kernels implement it, and no other type can (the
+/// algorithms rely on contracts a signature cannot state, such as what a
+/// [`within`](Kernel::within) kernel may assume). To count the predicates an algorithm
+/// asks, the `instrument` feature has `kernel::Counted`.
+pub trait Kernel: sealed::Sealed + Copy + Clone + Default + fmt::Debug + Send + Sync + 'static {
     /// A short name (`"fast"` or `"exact"`).
     const NAME: &'static str;
 
@@ -536,6 +554,8 @@ pub fn line_meet_side<K: Kernel>(
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct ShortEdges<K>(pub(crate) K);
 
+impl<K: Kernel> sealed::Sealed for ShortEdges<K> {}
+
 impl<K: Kernel> Kernel for ShortEdges<K> {
     const NAME: &'static str = K::NAME;
     const EXACT: bool = K::EXACT;
@@ -610,6 +630,8 @@ impl<K: Kernel> Kernel for ShortEdges<K> {
 /// (overflow and underflow). Measured per input family in docs/results.md.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Fast;
+
+impl sealed::Sealed for Fast {}
 
 impl Kernel for Fast {
     const NAME: &'static str = "fast";

@@ -93,6 +93,8 @@ use super::{BoundingBox, DirectedLine, Kernel, Orientation, Point, Polynomial, S
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Exact;
 
+impl crate::kernel::sealed::Sealed for Exact {}
+
 impl Kernel for Exact {
     const NAME: &'static str = "exact";
     const EXACT: bool = true;

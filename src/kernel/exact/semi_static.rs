@@ -179,6 +179,8 @@ impl ExactWithin {
     }
 }
 
+impl crate::kernel::sealed::Sealed for ExactWithin {}
+
 impl Kernel for ExactWithin {
     const NAME: &'static str = "exact";
     const EXACT: bool = true;
