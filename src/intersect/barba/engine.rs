@@ -1,10 +1,9 @@
 //! The search: ranges of P and Q, the pruning steps, the small-Q end game and the
 //! segment table, generic over what a run records ([`Mode`]).
 
-use super::witness::{completed, derivation, segment_certificate, segment_derivation};
 use super::{Variant, known};
 use crate::intersect::certificate::{same_direction, turn_gt};
-use crate::intersect::{ArrayIntersection, Certificate, Derivation, Linear, Probe, Which};
+use crate::intersect::{ArrayIntersection, Linear, Probe};
 use crate::kernel::{Kernel, Orientation, Point, ShortEdges, line_meet_side, segments_intersect};
 use crate::polygon::ConvexPolygon;
 use Orientation::{Ccw, Collinear, Cw};
@@ -147,7 +146,7 @@ pub(super) enum Exit {
 }
 
 /// What a run returns: the plain call's answer ([`Plain`]), the [`Exit`] ([`Record`]),
-/// or the certified call's [`Derivation`] ([`Derive`]), the last two built only in those
+/// or the certified call's [`Derivation`](crate::intersect::Derivation) (`witness::Derive`), the last two built only in those
 /// cases. The algorithm is written once.
 pub(super) trait Mode {
     type Out;
@@ -198,70 +197,6 @@ impl Mode for Record {
         exit: impl FnOnce() -> Exit,
     ) -> Exit {
         exit()
-    }
-}
-
-/// The certified call: the exit turned into a certificate where it ends, so that no
-/// [`Exit`] is returned and matched again.
-pub(super) struct Derive;
-
-impl Mode for Derive {
-    type Out = Derivation;
-    const CERTIFY: bool = true;
-    #[inline(always)]
-    fn done<K: Kernel, V: Variant>(
-        k: K,
-        pv: &[Point],
-        qv: &[Point],
-        _: bool,
-        exit: impl FnOnce() -> Exit,
-    ) -> Derivation {
-        // A vertex inside is its own certificate, built where the run ends (each call
-        // site's exit is a known variant, so this match folds away there); the other
-        // exits go out of line.
-        match exit() {
-            Exit::PInside(i) => Derivation::Certified(Certificate::VertexInside {
-                of: Which::P,
-                point: pv[i],
-            }),
-            Exit::QInside(j) => Derivation::Certified(Certificate::VertexInside {
-                of: Which::Q,
-                point: qv[j],
-            }),
-            Exit::Segment(exit) => segment_derivation(k, pv, qv, exit),
-            other => derivation::<K, V>(k, pv, qv, other),
-        }
-    }
-}
-
-/// The certified call without a probe: [`Derive`]'s derivation completed where the run
-/// ends ([`Searches`](crate::intersect::certificate::Searches) where it gives only the
-/// answer), so that the certificate is written once, in the caller's place.
-pub(super) struct Certify;
-
-impl Mode for Certify {
-    type Out = Certificate;
-    const CERTIFY: bool = true;
-    #[inline(always)]
-    fn done<K: Kernel, V: Variant>(
-        k: K,
-        pv: &[Point],
-        qv: &[Point],
-        _: bool,
-        exit: impl FnOnce() -> Exit,
-    ) -> Certificate {
-        match exit() {
-            Exit::PInside(i) => Certificate::VertexInside {
-                of: Which::P,
-                point: pv[i],
-            },
-            Exit::QInside(j) => Certificate::VertexInside {
-                of: Which::Q,
-                point: qv[j],
-            },
-            Exit::Segment(exit) => segment_certificate(k, pv, qv, exit),
-            other => completed::<K, V>(k, pv, qv, other),
-        }
     }
 }
 

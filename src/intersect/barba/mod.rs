@@ -132,7 +132,8 @@ mod tests;
 use super::{ArrayIntersection, Certificate, Derivation, Probe};
 use crate::kernel::Kernel;
 use crate::polygon::ConvexPolygon;
-use engine::{Certify, Derive, Plain, Range, SMALL_Q, run};
+use engine::{Plain, Range, SMALL_Q, run};
+use witness::{Certify, Derive};
 
 /// The Barba–Langerman O(log n) test; see the module docs.
 ///

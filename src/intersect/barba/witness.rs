@@ -1,7 +1,8 @@
-//! Certificates from what a run found: separating edges, vertices inside, crossing edges,
+//! The certified modes of a run ([`Derive`], [`Certify`]) and the certificates they build
+//! from what a run found: separating edges, vertices inside, crossing edges,
 //! and the lift of the small-Q end game.
 
-use super::engine::{Exit, Range, Record, SMALL_Q, SegmentExit, SegmentTable, Sep, SmallQ, run};
+use super::engine::{Exit, Mode, Range, Record, SMALL_Q, SegmentExit, SegmentTable, Sep, SmallQ, run};
 use super::{Ours, Variant};
 use crate::intersect::certificate::{
     Complete, Reduced, Searches, crossing, edge_between, endpoint_on_other, extreme_left, reduce_chord,
@@ -10,6 +11,70 @@ use crate::intersect::certificate::{
 use crate::intersect::{Certificate, Derivation, Which};
 use crate::kernel::{Kernel, Orientation, Point, SegmentContact, point_on_segment};
 use Orientation::{Ccw, Collinear, Cw};
+
+/// The certified call: the exit turned into a certificate where it ends, so that no
+/// [`Exit`] is returned and matched again.
+pub(super) struct Derive;
+
+impl Mode for Derive {
+    type Out = Derivation;
+    const CERTIFY: bool = true;
+    #[inline(always)]
+    fn done<K: Kernel, V: Variant>(
+        k: K,
+        pv: &[Point],
+        qv: &[Point],
+        _: bool,
+        exit: impl FnOnce() -> Exit,
+    ) -> Derivation {
+        // A vertex inside is its own certificate, built where the run ends (each call
+        // site's exit is a known variant, so this match folds away there); the other
+        // exits go out of line.
+        match exit() {
+            Exit::PInside(i) => Derivation::Certified(Certificate::VertexInside {
+                of: Which::P,
+                point: pv[i],
+            }),
+            Exit::QInside(j) => Derivation::Certified(Certificate::VertexInside {
+                of: Which::Q,
+                point: qv[j],
+            }),
+            Exit::Segment(exit) => segment_derivation(k, pv, qv, exit),
+            other => derivation::<K, V>(k, pv, qv, other),
+        }
+    }
+}
+
+/// The certified call without a probe: [`Derive`]'s derivation completed where the run
+/// ends ([`Searches`](crate::intersect::certificate::Searches) where it gives only the
+/// answer), so that the certificate is written once, in the caller's place.
+pub(super) struct Certify;
+
+impl Mode for Certify {
+    type Out = Certificate;
+    const CERTIFY: bool = true;
+    #[inline(always)]
+    fn done<K: Kernel, V: Variant>(
+        k: K,
+        pv: &[Point],
+        qv: &[Point],
+        _: bool,
+        exit: impl FnOnce() -> Exit,
+    ) -> Certificate {
+        match exit() {
+            Exit::PInside(i) => Certificate::VertexInside {
+                of: Which::P,
+                point: pv[i],
+            },
+            Exit::QInside(j) => Certificate::VertexInside {
+                of: Which::Q,
+                point: qv[j],
+            },
+            Exit::Segment(exit) => segment_certificate(k, pv, qv, exit),
+            other => completed::<K, V>(k, pv, qv, other),
+        }
+    }
+}
 
 /// [`Certify`]'s certificate for an exit other than a vertex inside or a segment.
 /// [`derivation`]'s body is written out here (no call, no [`Derivation`] moved).

@@ -174,6 +174,7 @@
 //! capped at n steps, so the test always terminates.
 
 mod certify;
+mod lp_call;
 mod ordering;
 mod quads;
 mod query;

@@ -228,3 +228,32 @@ pub(super) fn drawn_witness<K: Kernel, R: Rng + ?Sized>(
     }
     None
 }
+
+/// A point of `a` (points of P's sample) in `qb` (a quadrilateral of Q's sample,
+/// [`Quad::spread`]), or of `b` (Q's) in `qa` (P's), taken alternately: how many points
+/// were tested, and the point found with the polygon it is a vertex of. Each
+/// quadrilateral has sample vertices for corners, so it lies inside its polygon and a
+/// point in it is a vertex inside, an intersection with its certificate. O(|a| + |b|);
+/// each test computes `f64` signs, then (only for a point they put inside) exact
+/// orientations ([`Quad::contains`]). A miss (a point rounding puts outside, or on the
+/// chord's line) only leaves the query to the LP.
+#[inline(never)]
+pub(super) fn prefix_inside<K: Kernel>(
+    k: K,
+    (a, qa): (&[Point], &Quad),
+    (b, qb): (&[Point], &Quad),
+) -> (u64, Option<(Which, Point)>) {
+    for i in 0..a.len().max(b.len()) {
+        if let Some(&y) = b.get(i)
+            && qa.contains(k, y)
+        {
+            return (2 * i as u64 + 1, Some((Which::Q, y)));
+        }
+        if let Some(&x) = a.get(i)
+            && qb.contains(k, x)
+        {
+            return (2 * i as u64 + 2, Some((Which::P, x)));
+        }
+    }
+    ((a.len() + b.len()) as u64, None)
+}

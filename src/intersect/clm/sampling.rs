@@ -1,9 +1,7 @@
 //! Drawing the samples: uniform vertex positions, the generator's integers, shuffles,
 //! and the prefixes of a sample that a first LP tries.
 
-use super::quads::Quad;
-use crate::intersect::Which;
-use crate::kernel::{Kernel, Point};
+use crate::kernel::Point;
 use crate::lp::ArenaPoints;
 use crate::polygon::{LinkedPolygon, SampleWorkspace};
 use rand::Rng;
@@ -151,35 +149,6 @@ pub(super) fn arena<'a>(polygon: &'a LinkedPolygon, positions: &'a [u32]) -> Are
 /// The [`NEXT`] points of a sample after its prefix (fewer if it has fewer).
 pub(super) fn next_points(sample: &[Point]) -> &[Point] {
     &sample[PREFIX.min(sample.len())..(PREFIX + NEXT).min(sample.len())]
-}
-
-/// A point of `a` (points of P's sample) in `qb` (a quadrilateral of Q's sample,
-/// [`Quad::spread`]), or of `b` (Q's) in `qa` (P's), taken alternately: how many points
-/// were tested, and the point found with the polygon it is a vertex of. Each
-/// quadrilateral has sample vertices for corners, so it lies inside its polygon and a
-/// point in it is a vertex inside, an intersection with its certificate. O(|a| + |b|);
-/// each test computes `f64` signs, then (only for a point they put inside) exact
-/// orientations ([`Quad::contains`]). A miss (a point rounding puts outside, or on the
-/// chord's line) only leaves the query to the LP.
-#[inline(never)]
-pub(super) fn prefix_inside<K: Kernel>(
-    k: K,
-    (a, qa): (&[Point], &Quad),
-    (b, qb): (&[Point], &Quad),
-) -> (u64, Option<(Which, Point)>) {
-    for i in 0..a.len().max(b.len()) {
-        if let Some(&y) = b.get(i)
-            && qa.contains(k, y)
-        {
-            return (2 * i as u64 + 1, Some((Which::Q, y)));
-        }
-        if let Some(&x) = a.get(i)
-            && qb.contains(k, x)
-        {
-            return (2 * i as u64 + 2, Some((Which::P, x)));
-        }
-    }
-    ((a.len() + b.len()) as u64, None)
 }
 
 /// ⌈c·√n⌉, at least 3.

@@ -1,7 +1,7 @@
 //! Walking the chains the LP's line cuts off, in lockstep on both polygons, and the
 //! LPs of chain against chain.
 
-use super::query::{counted_lp, walk_or_lp};
+use super::lp_call::{counted_lp, walk_or_lp};
 use super::sampling::shuffle;
 use super::{ClmWorkspace, Set};
 use crate::intersect::{Probe, Which};
