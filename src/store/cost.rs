@@ -92,7 +92,7 @@ pub struct CostModel {
 /// What the cost model needs to know of a linked polygon: its size and how far its
 /// arena is from boundary order (0 in order, 1 shuffled).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ArenaProfile {
+pub(crate) struct ArenaProfile {
     /// Number of vertices.
     pub vertices: usize,
     /// How far the arena is from boundary order: 0 in order, 1 shuffled.
@@ -101,7 +101,7 @@ pub struct ArenaProfile {
 
 impl ArenaProfile {
     /// The polygon's size and arena disorder. O(1).
-    pub fn of(polygon: &LinkedPolygon) -> ArenaProfile {
+    pub(crate) fn of(polygon: &LinkedPolygon) -> ArenaProfile {
         ArenaProfile {
             vertices: polygon.len(),
             disorder: polygon.arena_disorder(),
@@ -109,7 +109,7 @@ impl ArenaProfile {
     }
 
     /// An arena in boundary order.
-    pub fn ordered(vertices: usize) -> ArenaProfile {
+    pub(crate) fn ordered(vertices: usize) -> ArenaProfile {
         ArenaProfile {
             vertices,
             disorder: 0.0,
@@ -257,29 +257,29 @@ impl CostModel {
     }
 
     /// Estimated cost of converting the polygon.
-    pub fn convert_cost(&self, a: ArenaProfile) -> f64 {
+    pub(crate) fn convert_cost(&self, a: ArenaProfile) -> f64 {
         Self::walk(&self.convert_ordered_ns, &self.convert_ns, a)
     }
 
     /// Estimated cost of the sampled test on the two polygons (governed by the larger).
-    pub fn sampled_cost(&self, a: ArenaProfile, b: ArenaProfile) -> f64 {
+    pub(crate) fn sampled_cost(&self, a: ArenaProfile, b: ArenaProfile) -> f64 {
         lookup(&self.sampled_ns, a.vertices.max(b.vertices))
     }
 
     /// Estimated cost of the linear test walking the two polygons.
-    pub fn linear_cost(&self, a: ArenaProfile, b: ArenaProfile) -> f64 {
+    pub(crate) fn linear_cost(&self, a: ArenaProfile, b: ArenaProfile) -> f64 {
         0.5 * (Self::walk(&self.linear_ordered_ns, &self.linear_ns, a)
             + Self::walk(&self.linear_ordered_ns, &self.linear_ns, b))
     }
 
     /// Whether a pair of snapshots of `n` and `m` vertices is tested linearly rather
     /// than by Barba–Langerman.
-    pub fn array_is_linear(&self, n: usize, m: usize) -> bool {
+    pub(crate) fn array_is_linear(&self, n: usize, m: usize) -> bool {
         n + m <= 2 * self.array_linear_max
     }
 
     /// Estimated cost of the array test on snapshots of `n` and `m` vertices.
-    pub fn array_cost(&self, n: usize, m: usize) -> f64 {
+    pub(crate) fn array_cost(&self, n: usize, m: usize) -> f64 {
         if self.array_is_linear(n, m) {
             lookup(&self.array_ns, (n + m) / 2)
         } else {
@@ -289,18 +289,18 @@ impl CostModel {
 
     /// Whether the linear walk is the cheaper test on the two linked polygons
     /// (otherwise the sampled test).
-    pub fn prefers_linear(&self, a: ArenaProfile, b: ArenaProfile) -> bool {
+    pub(crate) fn prefers_linear(&self, a: ArenaProfile, b: ArenaProfile) -> bool {
         self.linear_cost(a, b) <= self.sampled_cost(a, b)
     }
 
     /// Estimated cost of the cheaper test on the two linked polygons.
-    pub fn linked_cost(&self, a: ArenaProfile, b: ArenaProfile) -> f64 {
+    pub(crate) fn linked_cost(&self, a: ArenaProfile, b: ArenaProfile) -> f64 {
         self.linear_cost(a, b).min(self.sampled_cost(a, b))
     }
 
     /// What snapshots of both polygons save one query between them: the cheaper linked
     /// test less the array test (never negative).
-    pub fn saving(&self, a: ArenaProfile, b: ArenaProfile) -> f64 {
+    pub(crate) fn saving(&self, a: ArenaProfile, b: ArenaProfile) -> f64 {
         (self.linked_cost(a, b) - self.array_cost(a.vertices, b.vertices)).max(0.0)
     }
 

@@ -87,6 +87,6 @@ mod warm;
 pub mod workload;
 
 pub use crate::kernel::BoundingBox;
-pub use cost::{ArenaProfile, COST_SIZES, CostModel, PlannerStats, Strategy};
+pub use cost::{COST_SIZES, CostModel, PlannerStats, Strategy};
 pub use scene::{PolygonId, Scene, SceneError};
 pub use warm::WarmStats;

@@ -112,7 +112,7 @@ impl LpWorkspace {
     /// sides of p rule out the direction of d₀ itself. The earlier points and the
     /// bounding pair are not needed. `None` for every other witness (a mixed pair of
     /// bounds needs the previous optimum's points: [`witness`](Self::witness)).
-    pub fn straddle(&self) -> Option<[WitnessPoint; 5]> {
+    pub(crate) fn straddle(&self) -> Option<[WitnessPoint; 5]> {
         let w = &self.witness;
         if w.len != WITNESS || w.points[0].index.is_none() {
             return None;
@@ -135,7 +135,7 @@ impl LpWorkspace {
     /// line (p beyond it, x on or before it) and the ray from p through x, so it
     /// usually lies in the triangle p, x, t (and the caller tests that, falling back
     /// to [`witness`](Self::witness)). `None` for every other witness.
-    pub fn mixed(&self) -> Option<[WitnessPoint; 5]> {
+    pub(crate) fn mixed(&self) -> Option<[WitnessPoint; 5]> {
         let w = &self.witness;
         if w.len != WITNESS || w.points[0].index.is_none() {
             return None;
