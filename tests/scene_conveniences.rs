@@ -168,3 +168,116 @@ fn contains_point_refuses_stale_and_foreign_handles() {
         Err(SceneError::StalePolygon(a))
     );
 }
+
+/// User data against a plain map kept beside the scene: random inserts (with and
+/// without a value), removals (slots reused), sets, vertex edits, translations, poses
+/// and queries that build snapshots; every live handle reads its value, every removed
+/// one is `StalePolygon` (also once its slot holds another polygon), a clone's handles
+/// read the same values in slot order, and refused calls change nothing.
+#[test]
+fn user_data_stays_with_its_polygon_through_everything() {
+    use std::collections::HashMap;
+    let mut rng = SmallRng::seed_from_u64(0x05e2_da7a);
+    for strategy in Strategy::ALL {
+        let mut scene = Scene::new();
+        scene.set_strategy(strategy);
+        scene.seed(3);
+        let mut model: HashMap<PolygonId, u128> = HashMap::new();
+        let mut removed: Vec<PolygonId> = Vec::new();
+        for step in 0..3_000 {
+            let live: Vec<PolygonId> = scene.ids().collect();
+            let pick = |rng: &mut SmallRng| live[rng.random_range(0..live.len())];
+            match rng.random_range(0..10) {
+                _ if live.len() < 4 => {
+                    let n = rng.random_range(3..40);
+                    let (cx, cy) = (rng.random_range(-20.0..20.0), rng.random_range(-20.0..20.0));
+                    let pts: Vec<Point> = regular_polygon(n, rng.random_range(0.5..5.0))
+                        .vertices()
+                        .iter()
+                        .map(|p| Point::new(p.x + cx, p.y + cy))
+                        .collect();
+                    let polygon = LinkedPolygon::from_points(pts).unwrap();
+                    let (id, value) = if rng.random_bool(0.5) {
+                        let value: u128 = rng.random();
+                        (scene.insert_with_user_data(polygon, value), value)
+                    } else {
+                        (scene.insert(polygon), 0)
+                    };
+                    model.insert(id, value);
+                }
+                0 => {
+                    let id = pick(&mut rng);
+                    scene.remove(id).unwrap();
+                    model.remove(&id);
+                    removed.push(id);
+                }
+                1 | 2 => {
+                    let id = pick(&mut rng);
+                    let value = if rng.random_bool(0.2) {
+                        u128::MAX
+                    } else {
+                        rng.random()
+                    };
+                    let old = scene.set_user_data(id, value).unwrap();
+                    assert_eq!(Some(old), model.insert(id, value), "step {step}");
+                }
+                3 => {
+                    let id = pick(&mut rng);
+                    let v = scene.polygon(id).unwrap().first();
+                    let _ = scene.remove_vertex(id, v);
+                    let (v, w) = {
+                        let p = scene.polygon(id).unwrap();
+                        let v = p.first();
+                        (v, p.next(v).unwrap())
+                    };
+                    let (a, b) = (
+                        scene.polygon(id).unwrap().point(v).unwrap(),
+                        scene.polygon(id).unwrap().point(w).unwrap(),
+                    );
+                    let _ = scene.insert_vertex(
+                        id,
+                        v,
+                        Point::new(a.x / 2.0 + b.x / 2.0, a.y / 2.0 + b.y / 2.0 - 1e-3),
+                    );
+                }
+                4 | 5 => {
+                    let id = pick(&mut rng);
+                    // Refused likewise where rounding would flatten a corner.
+                    let _ = scene.translate(id, rng.random_range(-1.0..1.0), rng.random_range(-1.0..1.0));
+                }
+                6 => {
+                    let id = pick(&mut rng);
+                    let t = rng.random_range(0.0..std::f64::consts::TAU);
+                    let pose = Pose::new([t.cos(), t.sin()], [rng.random_range(-9.0..9.0), 0.0]).unwrap();
+                    // Refused (changing nothing) when rounding the turned image
+                    // flattens a corner that an insertion made nearly straight.
+                    let _ = scene.set_pose(id, pose);
+                }
+                7 => {
+                    scene.intersecting_pairs();
+                }
+                _ => {
+                    // Refused calls on stale handles change nothing.
+                    if let Some(&gone) = removed.last() {
+                        assert_eq!(scene.user_data(gone), Err(SceneError::StalePolygon(gone)));
+                        assert_eq!(scene.set_user_data(gone, 1), Err(SceneError::StalePolygon(gone)));
+                    }
+                }
+            }
+            for (&id, &value) in &model {
+                assert_eq!(scene.user_data(id), Ok(value), "{strategy:?} step {step}");
+            }
+            assert_eq!(model.len(), scene.len());
+        }
+        for &gone in &removed {
+            assert_eq!(scene.user_data(gone), Err(SceneError::StalePolygon(gone)));
+        }
+        let copy = scene.clone();
+        let original: Vec<u128> = scene.ids().map(|id| scene.user_data(id).unwrap()).collect();
+        let copied: Vec<u128> = copy.ids().map(|id| copy.user_data(id).unwrap()).collect();
+        assert_eq!(original, copied);
+        let some = scene.ids().next().unwrap();
+        assert_eq!(copy.user_data(some), Err(SceneError::ForeignPolygon(some)));
+        scene.debug_validate().unwrap();
+    }
+}
