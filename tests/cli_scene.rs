@@ -597,3 +597,176 @@ fn a_lines_certificate_field_is_honoured_or_refused() {
         assert_eq!(got[7]["points"], json!([[3.0, 0.0], [4.0, 0.0], [4.0, 1.0]]));
     }
 }
+
+/// Answers each line of `input` in one session, as parsed values.
+fn session_replies(input: &str) -> Vec<Value> {
+    let mut session = SceneSession::new(SceneOptions::default());
+    input
+        .lines()
+        .map(|line| {
+            let reply = session.answer_line(line.as_bytes());
+            serde_json::from_str(&reply).unwrap_or_else(|e| panic!("{e}: {reply}"))
+        })
+        .collect()
+}
+
+/// The ops beyond the contract's (`names`, `meeting`, `bbox`, `contains`, `replace`,
+/// `stats`, `clear`; docs/store.md): each answer, each refusal (naming its line), the
+/// `"id"` echo, world polygons for posed ones, and a refused `replace` changing
+/// nothing. tests/scene_differential.rs checks them against a reference model on long
+/// random streams.
+#[test]
+fn the_other_ops_answer_refuse_and_echo() {
+    let input = r#"{"op": "add", "name": "sq", "points": [[0,0],[4,0],[4,4],[0,4]]}
+{"op": "add", "name": "b", "points": [[4,1],[6,1],[5,3]]}
+{"op": "add", "name": "a", "points": [[10,10],[11,10],[10,11]]}
+{"id": "n", "op": "names"}
+{"op": "meeting", "name": "sq"}
+{"op": "meeting", "name": "a"}
+{"id": 5, "op": "bbox", "name": "b"}
+{"op": "contains", "name": "sq", "point": [4, 2]}
+{"op": "contains", "name": "sq", "point": [4.000000000000001, 2]}
+{"op": "contains", "name": "sq", "point": [0, 0]}
+{"op": "contains", "name": "b", "point": [1e300, -1e300]}
+{"op": "replace", "name": "b", "points": [[5,5],[5,5],[9,5],[7,8]]}
+{"op": "vertices", "name": "b"}
+{"op": "meeting", "name": "sq"}
+{"op": "replace", "name": "b", "points": [[0,0],[1,1],[2,2]]}
+{"op": "replace", "name": "zz", "points": [[0,0],[1,0],[0,1]]}
+{"op": "vertices", "name": "b"}
+{"op": "pose", "name": "a", "rotation": [0, 1], "translation": [-6, -6]}
+{"op": "bbox", "name": "a"}
+{"op": "contains", "name": "a", "point": [-16, 4]}
+{"op": "contains", "name": "a", "point": [10, 10]}
+{"op": "meeting", "name": "sq"}
+{"op": "stats"}
+{"op": "replace", "name": "a", "points": [[10,10],[11,10],[10,11]]}
+{"op": "vertices", "name": "a"}
+{"op": "meeting", "name": "nobody"}
+{"op": "bbox"}
+{"op": "contains", "name": "sq"}
+{"op": "contains", "name": "sq", "point": [1, "2"]}
+{"op": "replace", "name": "sq"}
+{"op": "names", "certificate": true}
+{"id": [1], "op": "clear"}
+{"op": "names"}
+{"op": "stats"}
+{"op": "add", "name": "sq", "points": [[0,0],[1,0],[0,1]]}
+{"op": "names"}
+"#;
+    let got = session_replies(input);
+    let ok = json!({"ok": true});
+    let error = |i: usize| -> String {
+        let message = got[i]["error"]
+            .as_str()
+            .unwrap_or_else(|| panic!("line {}: {}", i + 1, got[i]));
+        let line = format!("line {}", i + 1);
+        assert!(
+            message.starts_with(&format!("{line}: ")) || message.starts_with(&format!("{line}, column ")),
+            "{message}"
+        );
+        message.to_string()
+    };
+    assert_eq!(got[..3], [ok.clone(), ok.clone(), ok.clone()]);
+    assert_eq!(got[3], json!({"id": "n", "names": ["a", "b", "sq"]}));
+    // b's corner (4, 1) lies on sq's edge: touching meets.
+    assert_eq!(got[4], json!({"names": ["b"]}));
+    assert_eq!(got[5], json!({"names": []}));
+    assert_eq!(got[6], json!({"id": 5, "min": [4.0, 1.0], "max": [6.0, 3.0]}));
+    assert_eq!(got[7], json!({"contains": true}), "on an edge");
+    assert_eq!(got[8], json!({"contains": false}), "one ulp outside");
+    assert_eq!(got[9], json!({"contains": true}), "a vertex");
+    assert_eq!(got[10], json!({"contains": false}));
+    assert_eq!(got[11], ok);
+    // New ids as for `add`: the repeat at input 1 gets none.
+    assert_eq!(
+        got[12],
+        json!({"ids": [0, 2, 3], "points": [[5.0, 5.0], [9.0, 5.0], [7.0, 8.0]]})
+    );
+    assert_eq!(got[13], json!({"names": []}));
+    assert!(error(14).contains("points"), "{}", got[14]);
+    assert!(error(15).contains(r#"no polygon is named "zz""#), "{}", got[15]);
+    // The refused replacements changed nothing.
+    assert_eq!(got[16], got[12]);
+    assert_eq!(got[17], ok);
+    // A quarter turn, then (-6, -6): a's world corners are (-16, 4), (-16, 5), (-17, 4).
+    assert_eq!(got[18], json!({"min": [-17.0, 4.0], "max": [-16.0, 5.0]}));
+    assert_eq!(got[19], json!({"contains": true}), "a world vertex");
+    assert_eq!(got[20], json!({"contains": false}), "not the shape's image");
+    assert_eq!(got[21], json!({"names": []}));
+    let stats = &got[22];
+    assert_eq!(
+        (&stats["polygons"], &stats["vertices"], &stats["posed"]),
+        (&json!(3), &json!(10), &json!(1)),
+        "{stats}"
+    );
+    assert!(
+        stats["snapshots"].is_u64() && stats["heap_bytes"].as_u64() > Some(0),
+        "{stats}"
+    );
+    for counter in [
+        "box_rejects",
+        "array_tests",
+        "sampled_tests",
+        "linear_tests",
+        "conversions",
+        "throwaway_conversions",
+        "invalidations",
+    ] {
+        assert!(stats["planner"][counter].is_u64(), "{counter}: {stats}");
+    }
+    // Replacing a posed polygon gives a polygon never posed: no "shape".
+    assert_eq!(got[23], ok);
+    assert_eq!(
+        got[24],
+        json!({"ids": [0, 1, 2], "points": [[10.0, 10.0], [11.0, 10.0], [10.0, 11.0]]})
+    );
+    assert!(
+        error(25).contains(r#"no polygon is named "nobody""#),
+        "{}",
+        got[25]
+    );
+    assert!(error(26).contains("needs the field `name`"), "{}", got[26]);
+    assert!(error(27).contains("needs the field `point`"), "{}", got[27]);
+    assert!(error(28).contains("point"), "{}", got[28]);
+    assert!(error(29).contains("needs the field `points`"), "{}", got[29]);
+    assert!(error(30).contains("certificate"), "{}", got[30]);
+    assert_eq!(got[31], json!({"id": [1], "ok": true}));
+    assert_eq!(got[32], json!({"names": []}));
+    assert_eq!(
+        (&got[33]["polygons"], &got[33]["vertices"], &got[33]["posed"]),
+        (&json!(0), &json!(0), &json!(0))
+    );
+    assert_eq!(got[34], ok, "a cleared name is free");
+    assert_eq!(got[35], json!({"names": ["sq"]}));
+    assert_eq!(got.len(), 36);
+}
+
+/// An unknown op's message lists every op, the new ones too.
+#[test]
+fn an_unknown_op_lists_every_op() {
+    let got = session_replies(r#"{"op": "explode"}"#);
+    let message = got[0]["error"].as_str().unwrap();
+    for op in [
+        "add",
+        "drop",
+        "insert",
+        "remove",
+        "move",
+        "translate",
+        "pose",
+        "replace",
+        "clear",
+        "intersects",
+        "contact",
+        "pairs",
+        "meeting",
+        "contains",
+        "vertices",
+        "bbox",
+        "names",
+        "stats",
+    ] {
+        assert!(message.contains(op), "{op}: {message}");
+    }
+}

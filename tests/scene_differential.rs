@@ -38,6 +38,9 @@ const BASE_SEED: u64 = 0xd1ff_5ce0;
 #[derive(Clone, Debug, PartialEq)]
 enum Expect {
     Reply(Value),
+    /// A reply holding at least these fields with these values (`stats`, whose other
+    /// fields depend on the strategy).
+    Fields(Value),
     Error,
 }
 
@@ -92,8 +95,8 @@ impl Reference {
         use Expect::*;
         let ok = || Reply(json!({"ok": true}));
         match op {
-            Op::Add(name, points) => {
-                if self.polygons.contains_key(name) {
+            Op::Add(name, points) | Op::Replace(name, points) => {
+                if self.polygons.contains_key(name) != matches!(op, Op::Replace(..)) {
                     return Error;
                 }
                 let Ok(poly) = ConvexPolygon::new(points.iter().copied()) else {
@@ -215,6 +218,50 @@ impl Reference {
                     "points": v.iter().map(|&(_, p)| pt(p)).collect::<Vec<_>>(),
                 }))
             }
+            Op::Names => Reply(json!({"names": self.polygons.keys().collect::<Vec<_>>()})),
+            Op::Meeting(name) => {
+                let Some(p) = self.polygons.get(name) else {
+                    return Error;
+                };
+                let names: Vec<&String> = self
+                    .polygons
+                    .iter()
+                    .filter(|&(other, q)| other != name && Linear.intersects(&p.convex(), &q.convex()))
+                    .map(|(other, _)| other)
+                    .collect();
+                Reply(json!({ "names": names }))
+            }
+            Op::Bbox(name) => {
+                let Some(p) = self.polygons.get(name) else {
+                    return Error;
+                };
+                let pts = p.points();
+                let fold =
+                    |f: fn(f64, f64) -> f64, c: fn(&Point) -> f64| pts.iter().map(c).reduce(f).unwrap();
+                Reply(json!({
+                    "min": [fold(f64::min, |p| p.x), fold(f64::min, |p| p.y)],
+                    "max": [fold(f64::max, |p| p.x), fold(f64::max, |p| p.y)],
+                }))
+            }
+            Op::Contains(name, x) => {
+                let Some(p) = self.polygons.get(name) else {
+                    return Error;
+                };
+                // Closed and counter-clockwise: inside iff strictly right of no edge.
+                let v = p.points();
+                let n = v.len();
+                let inside = (0..n).all(|i| Exact.orient(v[i], v[(i + 1) % n], *x) != Orientation::Cw);
+                Reply(json!({ "contains": inside }))
+            }
+            Op::Stats => Fields(json!({
+                "polygons": self.polygons.len(),
+                "vertices": self.polygons.values().map(|p| p.vertices.len()).sum::<usize>(),
+                "posed": 0,
+            })),
+            Op::Clear => {
+                self.polygons.clear();
+                ok()
+            }
             Op::Raw(_) => Error,
         }
     }
@@ -233,6 +280,13 @@ enum Op {
     Intersects(String, String),
     Pairs,
     Vertices(String),
+    Replace(String, Vec<Point>),
+    Names,
+    Meeting(String),
+    Bbox(String),
+    Contains(String, Point),
+    Stats,
+    Clear,
     /// A line the contract refuses (its text).
     Raw(String),
 }
@@ -253,6 +307,15 @@ impl Op {
             Op::Intersects(a, b) => json!({"op": "intersects", "a": a, "b": b}),
             Op::Pairs => json!({"op": "pairs"}),
             Op::Vertices(name) => json!({"op": "vertices", "name": name}),
+            Op::Replace(name, points) => {
+                json!({"op": "replace", "name": name, "points": points.iter().map(|&p| pt(p)).collect::<Vec<_>>()})
+            }
+            Op::Names => json!({"op": "names"}),
+            Op::Meeting(name) => json!({"op": "meeting", "name": name}),
+            Op::Bbox(name) => json!({"op": "bbox", "name": name}),
+            Op::Contains(name, p) => json!({"op": "contains", "name": name, "point": pt(*p)}),
+            Op::Stats => json!({"op": "stats"}),
+            Op::Clear => json!({"op": "clear"}),
             Op::Raw(text) => return text.clone(),
         };
         if let Some(id) = id {
@@ -272,12 +335,22 @@ impl Op {
             Op::Intersects(..) => "intersects",
             Op::Pairs => "pairs",
             Op::Vertices(..) => "vertices",
+            Op::Replace(..) => "replace",
+            Op::Names => "names",
+            Op::Meeting(..) => "meeting",
+            Op::Bbox(..) => "bbox",
+            Op::Contains(..) => "contains",
+            Op::Stats => "stats",
+            Op::Clear => "clear",
             Op::Raw(..) => "raw",
         }
     }
 
     fn is_query(&self) -> bool {
-        matches!(self, Op::Intersects(..) | Op::Pairs)
+        matches!(
+            self,
+            Op::Intersects(..) | Op::Pairs | Op::Meeting(..) | Op::Contains(..)
+        )
     }
 }
 
@@ -565,16 +638,55 @@ impl Gen {
                 let by = self.translation(poly.as_ref());
                 Op::Translate(name, by)
             }
-            79..=86 => Op::Intersects(name, self.name()),
-            87..=91 => Op::Vertices(name),
-            92..=93 => Op::Pairs,
+            79..=83 => Op::Intersects(name, self.name()),
+            84..=85 => Op::Vertices(name),
+            86 => Op::Pairs,
+            87 => Op::Names,
+            88 => Op::Meeting(name),
+            89 => Op::Bbox(name),
+            90..=91 => {
+                let point = self.probe(poly.as_ref());
+                Op::Contains(name, point)
+            }
+            92 => Op::Replace(name, self.add_points()),
+            93 if self.rng.random_bool(0.2) => {
+                self.dropped.extend(reference.polygons.keys().cloned());
+                Op::Clear
+            }
+            93 => Op::Stats,
             _ => Op::Raw(self.bad_line()),
+        }
+    }
+
+    /// A point to test for containment in `poly`: a vertex, a point near an edge (on
+    /// it, an ulp off it, outside it), a corner of its box, or anywhere.
+    fn probe(&mut self, poly: Option<&RefPolygon>) -> Point {
+        let Some(p) = poly else {
+            return Point::new(0.0, 0.0);
+        };
+        let v = p.points();
+        let i = self.rng.random_range(0..v.len());
+        match self.rng.random_range(0..5) {
+            0 => v[i],
+            1 | 2 => self.near_edge(v[i], v[(i + 1) % v.len()]),
+            3 => Point::new(
+                v.iter().map(|p| p.x).fold(f64::INFINITY, f64::min),
+                v.iter().map(|p| p.y).fold(f64::INFINITY, f64::min),
+            ),
+            _ => Point::new(
+                v[i].x * self.rng.random_range(-2.0..2.0),
+                v[i].y * self.rng.random_range(-2.0..2.0),
+            ),
         }
     }
 
     /// A line the protocol must refuse without changing anything.
     fn bad_line(&mut self) -> String {
-        const BAD: [&str; 10] = [
+        const BAD: [&str; 14] = [
+            r#"{"op": "contains", "name": "a", "point": [1]}"#,
+            r#"{"op": "contains", "name": "a"}"#,
+            r#"{"op": "replace", "name": "a"}"#,
+            r#"{"op": "meeting", "name": "a", "certificate": true}"#,
             r#"{"op": "add", "name": "a", "points": [[0,0],[1,0],[0,1e400]]}"#,
             r#"{"op": "insert", "name": "a", "after": "0", "point": [1, 1]}"#,
             r#"{"op": "remove", "name": "a", "vertex": -1}"#,
@@ -618,7 +730,7 @@ fn run_stream(seed: u64, ops: usize, tally: &mut Tally) {
         };
         let expect = reference.apply(&op);
         match &expect {
-            Expect::Reply(_) => *tally.accepted.entry(op.kind()).or_default() += 1,
+            Expect::Reply(_) | Expect::Fields(_) => *tally.accepted.entry(op.kind()).or_default() += 1,
             Expect::Error => *tally.refused.entry(op.kind()).or_default() += 1,
         }
         stream.push((op, id, expect));
@@ -669,6 +781,14 @@ fn compare<K: Kernel>(
                 }
             }
             Expect::Reply(want) => assert_eq!(&got, want, "{}", at()),
+            Expect::Fields(want) => {
+                for (key, value) in want.as_object().unwrap() {
+                    assert_eq!(got.get(key), Some(value), "{key}: {}", at());
+                }
+                for key in ["snapshots", "heap_bytes", "planner"] {
+                    assert!(got.get(key).is_some(), "{key}: {}", at());
+                }
+            }
         }
         if step % 16 == 0 {
             session
@@ -709,14 +829,21 @@ fn scene_protocol_matches_the_reference_model() {
         "pairs",
         "vertices",
         "drop",
+        "replace",
+        "names",
+        "meeting",
+        "bbox",
+        "contains",
+        "stats",
     ] {
         let (a, r) = (
             tally.accepted.get(kind).copied().unwrap_or(0),
             tally.refused.get(kind).copied().unwrap_or(0),
         );
         assert!(a >= tally.lines / 500, "too few accepted {kind}: {a}");
-        if kind != "pairs" {
+        if !matches!(kind, "pairs" | "names" | "stats") {
             assert!(r > 0, "no refused {kind}");
         }
     }
+    assert!(tally.accepted.get("clear").copied().unwrap_or(0) > 0, "no clear");
 }

@@ -15,9 +15,31 @@
 //! is bounded by the live polygons whatever the history. An edit is O(log n) on top of
 //! the scene's O(1); `vertices` is O(n).
 //!
+//! # Queries and housekeeping beyond the contract's ops
+//! docs/store.md ("The `scene` protocol's other ops") gives the wire format and the
+//! decisions behind it:
+//! * `{"op":"names"}` → `{"names":[...]}`, every name in string order (by code point);
+//!   O(P log P) for P polygons.
+//! * `{"op":"meeting","name":N}` → `{"names":[...]}`: the polygons other than N that
+//!   intersect it, in string order ([`Scene::intersecting`], planned like `pairs`).
+//! * `{"op":"bbox","name":N}` → `{"min":[x,y],"max":[x,y]}`: the tight box of the
+//!   polygon (its world polygon when posed), O(n).
+//! * `{"op":"contains","name":N,"point":[x,y]}` → `{"contains":true|false}`: boundary
+//!   included, decided by the session's kernel ([`Scene::contains_point`]).
+//! * `{"op":"replace","name":N,"points":[...]}` → `{"ok":true}`: `drop` then `add`
+//!   under the same name in one line. Refused, changing nothing, unless N is in use and
+//!   the points are valid as for `add`. The new polygon is a new polygon: its ids are
+//!   given as by `add` (from 0), and it is not posed (its points are world points).
+//! * `{"op":"stats"}` → `{"polygons":P,"vertices":V,"posed":k,"snapshots":s,
+//!   "heap_bytes":b,"planner":{...}}`, the planner's counters ([`Scene::stats`]) inside;
+//!   O(P).
+//! * `{"op":"clear"}` → `{"ok":true}`: drops every polygon (names become free); the
+//!   session's options and line numbers go on. O(P).
+//!
 //! # Precision
 //! Edits are always validated with the exact kernel (that is how [`LinkedPolygon`]
-//! edits work); the session's kernel `K` decides queries only.
+//! edits work); the session's kernel `K` decides queries only (`intersects`, `pairs`,
+//! `meeting`, `contains`, `contact`).
 
 use super::json::shown;
 use super::line::{Channel, Stop, each_line, json_string};
@@ -91,7 +113,8 @@ impl SceneSession<Exact> {
 /// The object every line should be, for messages.
 const SHAPE: &str = r#"{"op": ..., ...}"#;
 
-const OPS: &str = "add, drop, insert, remove, move, translate, pose, intersects, contact, pairs, vertices";
+const OPS: &str = "add, drop, insert, remove, move, translate, pose, replace, clear, intersects, contact, pairs, \
+     meeting, contains, vertices, bbox, names, stats";
 
 const KEYS: [&str; 13] = [
     "op",
@@ -176,6 +199,36 @@ fn survivor_ids(input: &[Point], cleaned: &[Point]) -> Option<Vec<u64>> {
         }
         (j == m).then_some(ids)
     })
+}
+
+/// A validated polygon for `add` or `replace`: the linked polygon, its ids, the next id.
+type Prepared = (LinkedPolygon, BTreeMap<u64, VertexId>, u64);
+
+/// Validates and cleans `points` and gives each survivor its id (module docs).
+fn prepare(points: Vec<Point>) -> Result<Prepared, String> {
+    let polygon = ConvexPolygon::new(points.iter().copied()).map_err(|e| format!("points: {e}"))?;
+    let ids = survivor_ids(&points, polygon.vertices())
+        .ok_or("internal error: the cleaned polygon's vertices were not found in the input")?;
+    let next_id = points.len() as u64;
+    drop(points);
+    let linked = LinkedPolygon::from_convex(&polygon);
+    drop(polygon);
+    // `from_convex` links the vertices in boundary order from `first`.
+    let vertices: BTreeMap<u64, VertexId> = ids.into_iter().zip(linked.iter().map(|(v, _)| v)).collect();
+    Ok((linked, vertices, next_id))
+}
+
+/// `"names": [...]`, each name a JSON string.
+fn names_json<'a>(names: impl IntoIterator<Item = &'a str>) -> String {
+    let mut out = String::from("\"names\": [");
+    for (i, name) in names.into_iter().enumerate() {
+        if i > 0 {
+            out.push(',');
+        }
+        out.push_str(&json_string(name));
+    }
+    out.push(']');
+    out
 }
 
 impl<K: Kernel> SceneSession<K> {
@@ -432,6 +485,21 @@ impl<K: Kernel> SceneSession<K> {
                 String::from_utf8(out).map_err(|e| format!("internal error: {e}"))
             }
             "vertices" => self.vertices(&l.name.ok_or_else(|| need("name"))?),
+            "replace" => {
+                let name = l.name.ok_or_else(|| need("name"))?;
+                let points = l.points.ok_or_else(|| need("points"))?;
+                self.replace(name, points)
+            }
+            "clear" => self.clear(),
+            "names" => Ok(self.names_reply()),
+            "meeting" => self.meeting(&l.name.ok_or_else(|| need("name"))?),
+            "contains" => {
+                let name = l.name.ok_or_else(|| need("name"))?;
+                let point = l.point.ok_or_else(|| need("point"))?;
+                self.contains(&name, point)
+            }
+            "bbox" => self.bbox(&l.name.ok_or_else(|| need("name"))?),
+            "stats" => Ok(self.stats_reply()),
             other => Err(format!("unknown op {} (valid: {OPS})", quoted(other))),
         }
     }
@@ -440,15 +508,13 @@ impl<K: Kernel> SceneSession<K> {
         if self.polygons.contains_key(&name) {
             return Err(format!("the name {} is in use", quoted(&name)));
         }
-        let polygon = ConvexPolygon::new(points.iter().copied()).map_err(|e| format!("points: {e}"))?;
-        let ids = survivor_ids(&points, polygon.vertices())
-            .ok_or("internal error: the cleaned polygon's vertices were not found in the input")?;
-        let next_id = points.len() as u64;
-        drop(points);
-        let linked = LinkedPolygon::from_convex(&polygon);
-        drop(polygon);
-        // `from_convex` links the vertices in boundary order from `first`.
-        let vertices: BTreeMap<u64, VertexId> = ids.into_iter().zip(linked.iter().map(|(v, _)| v)).collect();
+        let prepared = prepare(points)?;
+        self.install(name, prepared);
+        Ok(OK.into())
+    }
+
+    /// Gives `name` the prepared polygon (the name is free).
+    fn install(&mut self, name: String, (linked, vertices, next_id): Prepared) {
         let id = self.scene.insert(linked);
         self.names.insert(id, name.clone());
         self.polygons.insert(
@@ -459,7 +525,106 @@ impl<K: Kernel> SceneSession<K> {
                 next_id,
             },
         );
+    }
+
+    /// `replace`: `drop` then `add` under the same name in one line, refused (changing
+    /// nothing) unless the name is in use and the points are a valid polygon.
+    fn replace(&mut self, name: String, points: Vec<Point>) -> Result<String, String> {
+        self.named(&name)?;
+        let prepared = prepare(points)?;
+        self.drop_polygon(&name)?;
+        self.install(name, prepared);
         Ok(OK.into())
+    }
+
+    /// `clear`: drops every polygon. O(polygons).
+    fn clear(&mut self) -> Result<String, String> {
+        for (_, named) in self.polygons.drain() {
+            self.scene
+                .remove(named.id)
+                .map_err(|e| format!("internal error: {e}"))?;
+        }
+        self.names.clear();
+        Ok(OK.into())
+    }
+
+    /// The names in string order (by Unicode code point, as Rust orders strings).
+    fn sorted_names(&self) -> Vec<&str> {
+        let mut names: Vec<&str> = self.polygons.keys().map(String::as_str).collect();
+        names.sort_unstable();
+        names
+    }
+
+    fn names_reply(&self) -> String {
+        names_json(self.sorted_names())
+    }
+
+    /// `meeting`: the polygons intersecting `name` (itself not included), in string order.
+    fn meeting(&mut self, name: &str) -> Result<String, String> {
+        let id = self.named(name)?.id;
+        let hits = self
+            .scene
+            .intersecting(id)
+            .map_err(|e| format!("internal error: {e}"))?;
+        let mut names: Vec<&str> = hits
+            .iter()
+            .filter_map(|h| self.names.get(h).map(String::as_str))
+            .collect();
+        names.sort_unstable();
+        Ok(names_json(names))
+    }
+
+    /// `contains`: whether the polygon (its world polygon when posed) holds `point`,
+    /// boundary included.
+    fn contains(&mut self, name: &str, point: Point) -> Result<String, String> {
+        let id = self.named(name)?.id;
+        let inside = self
+            .scene
+            .contains_point(id, point)
+            .map_err(|e| format!("internal error: {e}"))?;
+        Ok(format!("\"contains\": {inside}"))
+    }
+
+    /// `bbox`: the tight bounding box of the polygon (its world polygon when posed). O(n).
+    fn bbox(&self, name: &str) -> Result<String, String> {
+        let id = self.named(name)?.id;
+        let b = self
+            .scene
+            .polygon(id)
+            .map_err(|e| format!("internal error: {e}"))?
+            .bounding_box();
+        let mut out = String::from("\"min\": ");
+        write_point(&mut out, b.min);
+        out.push_str(", \"max\": ");
+        write_point(&mut out, b.max);
+        Ok(out)
+    }
+
+    /// `stats`: counts of the scene and the planner's counters. O(polygons).
+    fn stats_reply(&self) -> String {
+        let scene = &self.scene;
+        let (mut vertices, mut posed) = (0usize, 0usize);
+        for id in scene.ids() {
+            vertices += scene.polygon(id).map_or(0, LinkedPolygon::len);
+            posed += usize::from(scene.pose(id).ok().flatten().is_some());
+        }
+        let s = scene.stats();
+        format!(
+            "\"polygons\": {}, \"vertices\": {vertices}, \"posed\": {posed}, \"snapshots\": {}, \
+             \"heap_bytes\": {}, \"planner\": {{\"box_rejects\": {}, \"array_tests\": {}, \
+             \"sampled_tests\": {}, \"linear_tests\": {}, \"conversions\": {}, \
+             \"throwaway_conversions\": {}, \"invalidations\": {}}}",
+            scene.len(),
+            scene.snapshot_count(),
+            scene.heap_bytes(),
+            s.box_rejects,
+            s.array_tests,
+            s.sampled_tests,
+            s.linear_tests,
+            s.conversions,
+            s.throwaway_conversions,
+            s.invalidations,
+        )
     }
 
     fn drop_polygon(&mut self, name: &str) -> Result<String, String> {

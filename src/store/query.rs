@@ -9,7 +9,7 @@ use super::route::{
 };
 use super::scene::{PolygonId, Scene, SceneError};
 use crate::intersect::{Certificate, Which};
-use crate::kernel::{Exact, Kernel};
+use crate::kernel::{Exact, Kernel, Point};
 use crate::polygon::ConvexPolygon;
 use rand::rngs::SmallRng;
 use rand::{RngCore, SeedableRng};
@@ -313,6 +313,46 @@ impl<K: Kernel> Scene<K> {
             .zip(answers)
             .map(|((a, b), c)| (self.id_of(a), self.id_of(b), c))
             .collect()
+    }
+
+    /// Whether `point` lies in the polygon (its world polygon when posed), boundary
+    /// included, decided with the scene's kernel: exact under [`Exact`] for every finite
+    /// point; a NaN or infinite point is in no polygon.
+    ///
+    /// # Complexity
+    /// O(1) when the point is outside the bounding box; otherwise O(log n) on the array
+    /// snapshot when the polygon has one, else the sampled test on the linked polygon,
+    /// expected O(√n) over the scene generator's draws
+    /// ([`LinkedPolygon::contains_point_with`](crate::LinkedPolygon::contains_point_with)).
+    /// It converts nothing and leaves the planner's counters alone.
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon`.
+    ///
+    /// ```
+    /// use polysect::store::Scene;
+    /// let mut scene = Scene::new();
+    /// let a = scene.insert_points([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+    /// assert!(scene.contains_point(a, [2.0, 1.0])?); // on an edge
+    /// assert!(!scene.contains_point(a, [2.0f64.next_up(), 1.0])?);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn contains_point(&mut self, id: PolygonId, point: impl Into<Point>) -> Result<bool, SceneError> {
+        let key = self.key(id)?;
+        let x = point.into();
+        let e = &mut self.entries[key];
+        // The box contains the polygon and its comparisons are exact, so a point outside
+        // it is outside the polygon; a NaN fails every comparison and is refused here too.
+        if !e.bbox.contains_point(x) {
+            return Ok(false);
+        }
+        Ok(match &e.snapshot {
+            Some(s) => s.contains_point_with(self.kernel, x),
+            None => e
+                .polygon
+                .materialized()
+                .contains_point_with(self.kernel, x, &mut self.rng),
+        })
     }
 
     /// Pairs of polygons whose bounding boxes overlap (the broad phase's candidates).

@@ -139,6 +139,8 @@ pub(super) struct Entry {
     pub(super) plan: PlanMark,
     /// The shape and the pose of a posed polygon (`polygon` is then its world image).
     pub(super) posed: Option<Box<Posed>>,
+    /// The caller's value for this polygon (`user.rs`); nothing in the scene reads it.
+    pub(super) user_data: u128,
 }
 
 /// Per-polygon marks of one plan, so that planning a batch is O(1) per pair; every
@@ -387,6 +389,7 @@ impl<K: Kernel> Scene<K> {
             grid,
             plan: PlanMark::default(),
             posed: None,
+            user_data: 0,
         });
         self.broad.mark(key);
         PolygonId {
@@ -780,6 +783,7 @@ fn grid_of(p: Point) -> f64 {
 }
 
 mod pose;
+mod user;
 
 #[cfg(test)]
 mod tests;
