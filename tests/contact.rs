@@ -527,6 +527,9 @@ fn check_exact(p: &ConvexPolygon, q: &ConvexPolygon, what: &str) -> bool {
                 (s.distance, s.closest),
                 "{what}: distance_with"
             );
+            // Bit for bit: `==` on doubles would let a −0 pass for +0.
+            let bits = |c: &[Point; 2]| c.map(|v| (v.x.to_bits(), v.y.to_bits()));
+            assert_eq!(bits(&d.closest), bits(&s.closest), "{what}: distance_with bits");
             assert!(
                 depth_with(Exact, p, q).is_none(),
                 "{what}: depth_with of a separated pair"
@@ -836,5 +839,89 @@ fn scene_contacts_are_the_reference_pairs_with_their_contacts() {
         assert!(c.intersects());
         assert_eq!(c, &contact_with(Exact, of(*a), of(*b)), "{a} and {b}");
         check_exact(of(*a), of(*b), "scene pair");
+    }
+}
+
+/// `Scene::distance` on the scene's polygons where they stand, posed ones included:
+/// the reference's distance and a closest pair on the world polygons, `None` exactly
+/// for the pairs the reference finds meeting, errors for removed handles.
+#[test]
+fn scene_distance_is_the_reference_distance_of_the_world_polygons() {
+    use polysect::kernel::Pose;
+    let mut rng = SmallRng::seed_from_u64(SEED + 8);
+    let mut scene = polysect::store::Scene::new();
+    let mut ids = Vec::new();
+    for k in 0..40 {
+        let n = rng.random_range(3..30);
+        let c = Point::new(rng.random_range(-30.0..30.0), rng.random_range(-30.0..30.0));
+        let p = random_polygon(&mut rng, n, 6.0, c);
+        let id = scene.insert(LinkedPolygon::from_convex(&p));
+        if k % 2 == 0 {
+            // Rotations by exact and inexact angles, with a translation.
+            let t: f64 = rng.random_range(0.0..std::f64::consts::TAU);
+            let rotation = [[0.0, 1.0], [t.cos(), t.sin()]][k % 4 / 2];
+            let pose = Pose::new(rotation, [rng.random_range(-5.0..5.0), 0.25]).expect("a pose");
+            // A pose whose rounding breaks convexity is refused; the polygon stays.
+            let _ = scene.set_pose(id, pose);
+        }
+        ids.push(id);
+    }
+    let (mut apart, mut meet) = (0, 0);
+    for (i, &a) in ids.iter().enumerate() {
+        for &b in &ids[i + 1..] {
+            let (p, q) = (
+                scene.polygon(a).expect("live").to_convex(),
+                scene.polygon(b).expect("live").to_convex(),
+            );
+            let got = scene.distance(a, b).expect("live handles");
+            let meets = check_exact(&p, &q, &format!("scene {a} and {b}"));
+            assert_eq!(got.is_none(), meets, "{a} and {b}");
+            match (got, contact_with(Exact, &p, &q)) {
+                (Some(d), Contact::Separated(s)) => {
+                    assert_eq!(
+                        (d.distance, d.closest, d.feature),
+                        (s.distance, s.closest, s.feature)
+                    );
+                    apart += 1;
+                }
+                (None, Contact::Overlapping(_)) => meet += 1,
+                (got, want) => panic!("{a} and {b}: {got:?} against {want:?}"),
+            }
+        }
+    }
+    assert!(apart > 100 && meet > 10, "{apart} apart, {meet} meet");
+    let gone = ids[1];
+    scene.remove(gone).expect("live");
+    assert!(scene.distance(ids[0], gone).is_err());
+    assert!(scene.distance(gone, ids[0]).is_err());
+}
+
+/// Negative zeros in the input: every query prints +0 where the exact value is zero.
+#[test]
+fn negative_zero_inputs_give_positive_zero_closest_points() {
+    let cases = [
+        (
+            poly(&[[-2.0, -1.0], [-0.0, -0.0], [-2.0, 1.0]]),
+            poly(&[[1.0, -0.0], [3.0, -1.0], [3.0, 1.0]]),
+        ),
+        (
+            poly(&[[-0.0, -1.0], [-0.0, 1.0], [-2.0, -0.0]]),
+            poly(&[[1.0, -0.0], [3.0, -1.0], [3.0, 1.0]]),
+        ),
+        (
+            poly(&[[-1.0, -0.0], [1.0, -0.0], [-0.0, 1.0]]),
+            poly(&[[-0.0, -2.0], [-1.0, -3.0], [1.0, -3.0]]),
+        ),
+    ];
+    for (k, (p, q)) in cases.iter().enumerate() {
+        for (a, b) in [(p, q), (q, p)] {
+            assert!(!check_exact(a, b, &format!("negative zeros {k}")));
+            let d = distance_with(Exact, a, b).expect("apart");
+            for c in d.closest {
+                for x in [c.x, c.y] {
+                    assert!(x != 0.0 || x.is_sign_positive(), "case {k}: {:?}", d.closest);
+                }
+            }
+        }
     }
 }

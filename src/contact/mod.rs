@@ -159,10 +159,9 @@ pub fn contact(p: &ConvexPolygon, q: &ConvexPolygon) -> Contact {
 /// The contact of `p` and `q`, decisions by `kernel` (module docs: algorithm,
 /// complexity, degeneracies, precision).
 pub fn contact_with<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Contact {
-    if Barba.intersects_with(kernel, p, q) {
-        Contact::Overlapping(penetration_of(kernel, p, q))
-    } else {
-        Contact::Separated(separation_of(kernel, p, q))
+    match separated_feature(kernel, p, q) {
+        Some(feature) => Contact::Separated(construct::separation(p.vertices(), q.vertices(), feature)),
+        None => Contact::Overlapping(penetration_of(kernel, p, q)),
     }
 }
 
@@ -206,15 +205,15 @@ pub struct Distance {
 /// 2^-250 and 2^250 in magnitude, the exact value not within about 2^-100 of a midpoint
 /// between doubles); O(log n + log m) on ordinary input (module docs).
 pub fn distance_with<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Option<Distance> {
-    if Barba.intersects_with(kernel, p, q) {
-        return None;
-    }
+    let feature = separated_feature(kernel, p, q)?;
     let (pv, qv) = (p.vertices(), q.vertices());
-    let feature = nearest_feature(kernel, pv, qv);
     Some(match rounded::separation(pv, qv, feature) {
-        Some((d, closest)) => Distance {
+        Some((d, [a, b])) => Distance {
             distance: Some(d),
-            closest,
+            // The exact rounding never gives −0 (a zero rational rounds to +0), but an
+            // input vertex or a double-double sum may: `+ 0.0` turns −0 into +0 and
+            // leaves every other value alone.
+            closest: [a, b].map(|v| Point::new(v.x + 0.0, v.y + 0.0)),
             feature,
         },
         None => {
@@ -269,30 +268,55 @@ pub fn depth(p: &ConvexPolygon, q: &ConvexPolygon) -> Option<Depth> {
     depth_with(Exact, p, q)
 }
 
+/// The nearest feature of D when the kernel finds `p` and `q` disjoint, `None` when it
+/// finds them meeting.
+///
+/// A certified feature proves the polygons disjoint by itself (`walk::is_nearest`: a
+/// separating edge line with the other polygon's extreme vertex strictly beyond it, or
+/// a vertex pair meeting the optimality conditions of convex distance), and under an
+/// exact kernel the whole walk certifies a feature iff they are disjoint. So an exact
+/// kernel on a small pair skips the intersection test and walks at once: a walk
+/// without a certificate means they meet. Larger pairs, and every inexact kernel, are
+/// tested first by [`Barba`] (the search alone could not tell "meeting" from "missed
+/// the window" without the whole walk). Either way the feature is the one
+/// [`nearest_feature`] finds, so every query answers the same pair.
+fn separated_feature<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Option<Feature> {
+    let (pv, qv) = (p.vertices(), q.vertices());
+    if K::EXACT && pv.len() + qv.len() <= LINEAR_BELOW {
+        let k = kernel.within([p.bounding_box(), q.bounding_box()]);
+        return walk::nearest_feature(k, pv, qv);
+    }
+    if Barba.intersects_with(kernel, p, q) {
+        return None;
+    }
+    Some(nearest_feature(kernel, p, q))
+}
+
 /// The nearest feature of D for two polygons the kernel found disjoint. When the
 /// kernel's walk certifies no feature (a misjudging kernel), the exact kernel decides
 /// again, and when they do meet after all, the feature is the touching point's
 /// (distance 0).
-fn nearest_feature<K: Kernel>(kernel: K, pv: &[Point], qv: &[Point]) -> Feature {
+///
+/// Every predicate reads input vertices only, so the kernel restricted to the two
+/// bounding boxes ([`Kernel::within`]: one semi-static error bound per query instead
+/// of one per call) answers them.
+fn nearest_feature<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Feature {
+    let (pv, qv) = (p.vertices(), q.vertices());
+    let boxes = [p.bounding_box(), q.bounding_box()];
+    let k = kernel.within(boxes);
     // Small pairs: the whole walk costs less than the search's setup.
     let searched = if pv.len() + qv.len() > LINEAR_BELOW {
-        search::nearest_feature(kernel, pv, qv)
+        search::nearest_feature(k, pv, qv)
     } else {
         None
     };
     searched
-        .or_else(|| walk::nearest_feature(kernel, pv, qv))
-        .or_else(|| walk::nearest_feature(Exact, pv, qv))
+        .or_else(|| walk::nearest_feature(k, pv, qv))
+        .or_else(|| walk::nearest_feature(Exact.within(boxes), pv, qv))
         .or_else(|| touching_feature(pv, qv))
         // Only reachable when the polygons overlap properly but the kernel said
         // disjoint: the first vertex pair, at its exact distance.
         .unwrap_or(Feature::Vertices { p: 0, q: 0 })
-}
-
-/// The separation of two polygons the kernel found disjoint ([`nearest_feature`]).
-fn separation_of<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Separation {
-    let (pv, qv) = (p.vertices(), q.vertices());
-    construct::separation(pv, qv, nearest_feature(kernel, pv, qv))
 }
 
 /// A feature of D through the origin, when the polygons only touch.

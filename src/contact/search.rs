@@ -12,8 +12,7 @@ use crate::kernel::{Kernel, Orientation, Point};
 /// Edge `i` of `v` (from vertex `i` to `i + 1`) as an `f64` vector.
 #[inline]
 fn edge(v: &[Point], i: usize) -> (f64, f64) {
-    let n = v.len();
-    let (a, b) = (v[i], v[(i + 1) % n]);
+    let (a, b) = (v[i], v[walk::next(i, v.len())]);
     (b.x - a.x, b.y - a.y)
 }
 

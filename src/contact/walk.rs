@@ -13,6 +13,18 @@
 use crate::kernel::{Kernel, Orientation, Point, Sign};
 use std::ops::ControlFlow;
 
+/// `(i + 1) mod n` for `i < n`, without a division (the walk's hot loop).
+#[inline(always)]
+pub(crate) fn next(i: usize, n: usize) -> usize {
+    if i + 1 == n { 0 } else { i + 1 }
+}
+
+/// `(i − 1) mod n` for `i < n`.
+#[inline(always)]
+pub(crate) fn prev(i: usize, n: usize) -> usize {
+    if i == 0 { n - 1 } else { i - 1 }
+}
+
 /// A feature of the boundary of D, named by the input features it comes from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Feature {
@@ -107,16 +119,16 @@ pub(crate) fn walk_from<K: Kernel, B>(
             false
         } else {
             // Q's edge direction q_{j+1} − q_j against −P's, p_i − p_{i+1}.
-            kernel.cross(q[j], q[(j + 1) % m], p[(i + 1) % n], p[i]) != Orientation::Cw
+            kernel.cross(q[j], q[next(j, m)], p[next(i, n)], p[i]) != Orientation::Cw
         };
         let edge = if q_first {
             let f = Feature::EdgeOfQ { q: j, p: i };
-            j = (j + 1) % m;
+            j = next(j, m);
             done_q += 1;
             f
         } else {
             let f = Feature::EdgeOfP { p: i, q: j };
-            i = (i + 1) % n;
+            i = next(i, n);
             done_p += 1;
             f
         };
@@ -140,12 +152,12 @@ pub(crate) fn edge_is_nearest<K: Kernel>(
     k: usize,
 ) -> bool {
     let (n, m) = (poly.len(), other.len());
-    let (a, b, v) = (poly[e], poly[(e + 1) % n], other[k]);
+    let (a, b, v) = (poly[e], poly[next(e, n)], other[k]);
     kernel.orient(a, b, v) == Orientation::Cw
         && kernel.dot(a, b, a, v) != Sign::Negative
         && kernel.dot(b, a, b, v) != Sign::Negative
-        && kernel.cross(a, b, v, other[(k + 1) % m]) != Orientation::Ccw
-        && kernel.cross(a, b, v, other[(k + m - 1) % m]) != Orientation::Ccw
+        && kernel.cross(a, b, v, other[next(k, m)]) != Orientation::Ccw
+        && kernel.cross(a, b, v, other[prev(k, m)]) != Orientation::Ccw
 }
 
 /// Whether `p[i]` and `q[j]` are a closest pair: `p_i − q_j` lies in Q's normal cone at
@@ -160,10 +172,10 @@ pub(crate) fn vertices_are_nearest<K: Kernel>(
 ) -> bool {
     let (n, m) = (p.len(), q.len());
     let (a, b) = (p[i], q[j]);
-    kernel.dot(b, q[(j + 1) % m], b, a) != Sign::Positive
-        && kernel.dot(b, q[(j + m - 1) % m], b, a) != Sign::Positive
-        && kernel.dot(a, p[(i + 1) % n], a, b) != Sign::Positive
-        && kernel.dot(a, p[(i + n - 1) % n], a, b) != Sign::Positive
+    kernel.dot(b, q[next(j, m)], b, a) != Sign::Positive
+        && kernel.dot(b, q[prev(j, m)], b, a) != Sign::Positive
+        && kernel.dot(a, p[next(i, n)], a, b) != Sign::Positive
+        && kernel.dot(a, p[prev(i, n)], a, b) != Sign::Positive
 }
 
 /// Whether `feature` certifies the distance between two disjoint polygons.

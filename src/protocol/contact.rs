@@ -4,12 +4,17 @@
 //! (module docs of [`crate::contact`] for the values), or `{"error": ...}`; `"id"`
 //! echoed as in `check`. A distance, depth or area whose correctly rounded value
 //! overflows prints as `null`.
+//!
+//! [`contact_with_kernel`] answers pairs that do not meet by
+//! [`distance_with`](crate::contact::distance_with) (no big integers nearly always)
+//! and the others by [`contact_with`](crate::contact::contact_with): the same reply,
+//! byte for byte, as [`contact_json`] of the full contact.
 
 use super::check::{convex_pair, one_line, parse_pair};
 use super::line::{Channel, serve};
 use super::{points_json, write_point};
-use crate::contact::Contact;
-use crate::kernel::Point;
+use crate::contact::{Contact, Distance, contact_with, distance_with};
+use crate::kernel::{Kernel, Point};
 use crate::polygon::ConvexPolygon;
 use std::fmt::Write as _;
 use std::io::{self, Read, Write};
@@ -40,15 +45,7 @@ fn number(out: &mut String, x: Option<f64>) {
 pub fn contact_json(contact: &Contact) -> String {
     let mut out = String::with_capacity(96);
     match contact {
-        Contact::Separated(s) => {
-            out.push_str("\"intersects\": false, \"distance\": ");
-            number(&mut out, s.distance);
-            out.push_str(", \"closest\": [");
-            write_point(&mut out, s.closest[0]);
-            out.push(',');
-            write_point(&mut out, s.closest[1]);
-            out.push(']');
-        }
+        Contact::Separated(s) => write_separated(&mut out, s.distance, s.closest),
         Contact::Overlapping(o) => {
             out.push_str("\"intersects\": true, \"depth\": ");
             number(&mut out, o.depth);
@@ -61,6 +58,62 @@ pub fn contact_json(contact: &Contact) -> String {
         }
     }
     out
+}
+
+/// The reply body of a pair that does not meet: `"intersects": false`, the distance
+/// and the closest pair.
+fn write_separated(out: &mut String, distance: Option<f64>, closest: [Point; 2]) {
+    out.push_str("\"intersects\": false, \"distance\": ");
+    number(out, distance);
+    out.push_str(", \"closest\": [");
+    write_point(out, closest[0]);
+    out.push(',');
+    write_point(out, closest[1]);
+    out.push(']');
+}
+
+/// The reply body of a [`Distance`]: the same as [`contact_json`] of the separated
+/// contact it comes from (the same distance and closest pair).
+///
+/// ```
+/// use polysect::contact::{contact, distance};
+/// use polysect::protocol::contact::{contact_json, distance_json};
+/// use polysect::ConvexPolygon;
+/// let p = ConvexPolygon::new([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+/// let q = ConvexPolygon::new([[3.0, 0.5], [4.0, 0.0], [4.0, 1.0]])?;
+/// let d = distance(&p, &q).expect("apart");
+/// assert_eq!(distance_json(&d), contact_json(&contact(&p, &q)));
+/// # Ok::<(), polysect::PolygonError>(())
+/// ```
+pub fn distance_json(distance: &Distance) -> String {
+    let mut out = String::with_capacity(96);
+    write_separated(&mut out, distance.distance, distance.closest);
+    out
+}
+
+/// The reply body for `p` and `q` under `kernel`: [`distance_json`] of
+/// [`distance_with`] when they do not meet, else [`contact_json`] of [`contact_with`];
+/// byte for byte [`contact_json`] of [`contact_with`] either way (both find the same
+/// feature, and the roundings are correct), without the exact rationals of a
+/// separated pair.
+pub fn contact_reply<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> String {
+    match distance_with(kernel, p, q) {
+        Some(d) => distance_json(&d),
+        None => contact_json(&contact_with(kernel, p, q)),
+    }
+}
+
+/// [`contact`] answering every line by [`contact_reply`] under `kernel` (what
+/// `polysect contact` runs).
+///
+/// # Errors
+/// Only I/O errors; bad lines get error lines.
+pub fn contact_with_kernel<K: Kernel, R: Read, W: Write>(kernel: K, input: R, output: W) -> io::Result<()> {
+    let mut ch = Channel::new(input, output);
+    serve(&mut ch, parse_pair, |pair| {
+        let (p, q) = convex_pair(pair)?;
+        Ok(contact_reply(kernel, &p, &q))
+    })
 }
 
 /// Runs the `contact` protocol from `input` to `output`: one reply line per input line

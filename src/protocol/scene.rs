@@ -682,13 +682,16 @@ impl<K: Kernel> SceneSession<K> {
         Ok(format!("\"intersects\": {hit}"))
     }
 
-    /// The `contact` reply: as a `polysect contact` line for the two polygons (`a` is P).
+    /// The `contact` reply: as a `polysect contact` line for the two polygons (`a` is P):
+    /// the distance alone when they do not meet (the same reply, without the exact
+    /// rationals), else the full contact.
     fn contact(&mut self, a: &str, b: &str) -> Result<String, String> {
         let (ia, ib) = (self.named(a)?.id, self.named(b)?.id);
-        let contact = self
-            .scene
-            .contact(ia, ib)
-            .map_err(|e| format!("internal error: {e}"))?;
+        let internal = |e: SceneError| format!("internal error: {e}");
+        if let Some(d) = self.scene.distance(ia, ib).map_err(internal)? {
+            return Ok(super::contact::distance_json(&d));
+        }
+        let contact = self.scene.contact(ia, ib).map_err(internal)?;
         Ok(super::contact::contact_json(&contact))
     }
 

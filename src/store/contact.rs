@@ -1,8 +1,8 @@
-//! Contact geometry between the scene's polygons ([`crate::contact`]): one pair, or every
-//! intersecting pair of a frame.
+//! Contact geometry between the scene's polygons ([`crate::contact`]): one pair's
+//! contact or distance, or every intersecting pair of a frame.
 
 use super::{PolygonId, Scene, SceneError};
-use crate::contact::{Contact, contact_with};
+use crate::contact::{Contact, Distance, contact_with, distance_with};
 use crate::kernel::Kernel;
 use crate::polygon::ConvexPolygon;
 use std::borrow::Cow;
@@ -39,6 +39,35 @@ impl<K: Kernel> Scene<K> {
         let (ka, kb) = (self.key(a)?, self.key(b)?);
         let (p, q) = (self.array(ka), self.array(kb));
         Ok(contact_with(self.kernel, &p, &q))
+    }
+
+    /// The distance and a closest pair of polygons `a` (P) and `b` (Q), decided by the
+    /// scene's kernel, or `None` when they meet: the distance and pair of
+    /// [`contact`](Self::contact)'s separation, without its exact rationals
+    /// ([`distance_with`](crate::contact::distance_with): no big integers nearly
+    /// always). Posed polygons are read where they stand. O(log n + log m) on ordinary
+    /// input on top of converting a polygon without a snapshot (O(n)); snapshots are
+    /// used, never made.
+    ///
+    /// # Errors
+    /// `StalePolygon`, `ForeignPolygon` for either handle.
+    ///
+    /// ```
+    /// use polysect::store::Scene;
+    /// let mut scene = Scene::new();
+    /// let a = scene.insert_points([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])?;
+    /// let b = scene.insert_points([[3.0, 0.0], [4.0, 0.0], [4.0, 1.0]])?;
+    /// let d = scene.distance(a, b)?.expect("apart");
+    /// assert_eq!(d.distance, Some(1.0));
+    /// assert_eq!(d.closest, [[2.0, 0.0].into(), [3.0, 0.0].into()]);
+    /// let c = scene.insert_points([[1.0, 1.0], [5.0, 1.0], [5.0, 5.0]])?;
+    /// assert_eq!(scene.distance(a, c)?, None);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn distance(&mut self, a: PolygonId, b: PolygonId) -> Result<Option<Distance>, SceneError> {
+        let (ka, kb) = (self.key(a)?, self.key(b)?);
+        let (p, q) = (self.array(ka), self.array(kb));
+        Ok(distance_with(self.kernel, &p, &q))
     }
 
     /// Every intersecting pair of [`intersecting_pairs`](Self::intersecting_pairs) with

@@ -4,7 +4,6 @@
 use crate::demo;
 use crate::failure::Failure;
 use crate::streams::{open_input, output};
-use polysect::contact::contact_with;
 use polysect::crossings::{CrossingAlgorithm, CrossingOptions};
 use polysect::experiments::{self, Config, Experiment, ThesisConfig};
 use polysect::generate::Family;
@@ -92,8 +91,8 @@ pub(crate) fn crossings(
 pub(crate) fn contact(file: Option<&str>, precision: Precision) -> io::Result<()> {
     let input = open_input(file)?;
     match precision {
-        Precision::Exact => protocol::contact::contact(input, output(), |p, q| contact_with(Exact, p, q)),
-        Precision::Fast => protocol::contact::contact(input, output(), |p, q| contact_with(Fast, p, q)),
+        Precision::Exact => protocol::contact::contact_with_kernel(Exact, input, output()),
+        Precision::Fast => protocol::contact::contact_with_kernel(Fast, input, output()),
     }
 }
 
