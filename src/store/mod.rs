@@ -81,6 +81,7 @@ mod planner;
 mod query;
 mod route;
 mod scene;
+mod shared;
 mod warm;
 // The demo's and the benches' workloads: the tool's, not an API to build on.
 #[doc(hidden)]
