@@ -281,3 +281,125 @@ fn user_data_stays_with_its_polygon_through_everything() {
         scene.debug_validate().unwrap();
     }
 }
+
+/// `intersects_shared` and `contains_point_shared` through `&Scene`, from three threads
+/// at once, against brute force on the world polygons: fresh polygons, polygons with
+/// snapshots, with translations waiting, edited and posed, large enough for the sampled
+/// test. Nothing the planner keeps changes: counters, snapshots, versions.
+#[test]
+fn shared_queries_answer_exactly_from_several_threads_and_change_nothing() {
+    use polysect::ConvexPolygon;
+    use polysect::intersect::{ArrayIntersection, Linear};
+    fn assert_sync<T: Sync>(_: &T) {}
+    let mut rng = SmallRng::seed_from_u64(0x5ba2_ed00);
+    for round in 0..4u64 {
+        let mut scene = Scene::new();
+        scene.seed(round);
+        let mut ids = Vec::new();
+        for i in 0..24 {
+            let n = [3usize, 8, 16, 200, 3_000][i % 5];
+            let (cx, cy) = (rng.random_range(-8.0..8.0), rng.random_range(-8.0..8.0));
+            let pts: Vec<Point> = regular_polygon(n, rng.random_range(0.5..3.0))
+                .vertices()
+                .iter()
+                .map(|p| Point::new(p.x + cx, p.y + cy))
+                .collect();
+            ids.push(scene.insert(LinkedPolygon::from_points(pts).unwrap()));
+        }
+        // Some snapshots, some translations waiting, a pose, an edit.
+        scene.intersecting_pairs();
+        for &id in ids.iter().step_by(3) {
+            scene.translate(id, 0.125, -0.5).unwrap();
+        }
+        scene
+            .set_pose(ids[1], Pose::new([0.0, 1.0], [1.0, 2.0]).unwrap())
+            .unwrap();
+        let v = scene.polygon(ids[4]).unwrap().first();
+        scene.remove_vertex(ids[4], v).unwrap();
+        // Both kinds of answer are reached: arrays, and linked polygons large enough to
+        // be sampled.
+        let held: Vec<bool> = ids.iter().map(|&id| scene.has_snapshot(id).unwrap()).collect();
+        assert!(held.iter().filter(|&&h| h).count() >= 2, "{held:?}");
+        assert!(
+            ids.iter()
+                .zip(&held)
+                .any(|(&id, &h)| !h && scene.polygon(id).unwrap().len() >= 200),
+            "{held:?}"
+        );
+        let worlds: Vec<ConvexPolygon> = ids
+            .iter()
+            .map(|&id| ConvexPolygon::new(scene.world_points(id).unwrap()).unwrap())
+            .collect();
+        let pairs: Vec<(usize, usize)> = (0..ids.len())
+            .flat_map(|i| (0..ids.len()).map(move |j| (i, j)))
+            .collect();
+        let truth: Vec<bool> = pairs
+            .iter()
+            .map(|&(i, j)| Linear.intersects(&worlds[i], &worlds[j]))
+            .collect();
+        assert!(
+            truth.iter().filter(|&&t| t).count() > ids.len(),
+            "some pairs meet"
+        );
+        let probes: Vec<(usize, Point)> = (0..600)
+            .map(|k| {
+                let i = k % ids.len();
+                let w = worlds[i].vertices();
+                let (a, b) = (w[k % w.len()], w[(k + 1) % w.len()]);
+                let mid = Point::new(a.x / 2.0 + b.x / 2.0, a.y / 2.0 + b.y / 2.0);
+                let x = match k % 3 {
+                    0 => a,
+                    1 => Point::new(mid.x.next_up(), mid.y.next_down()),
+                    _ => Point::new(mid.x * 0.9, mid.y * 0.9),
+                };
+                (i, x)
+            })
+            .collect();
+        let (stats, snapshots, versions) = (
+            scene.stats(),
+            scene.snapshot_count(),
+            ids.iter()
+                .map(|&id| scene.version(id).unwrap())
+                .collect::<Vec<_>>(),
+        );
+        let shared = &scene;
+        assert_sync(shared);
+        std::thread::scope(|s| {
+            for t in 0..3 {
+                let (pairs, truth, probes, worlds, ids) = (&pairs, &truth, &probes, &worlds, &ids);
+                s.spawn(move || {
+                    for (k, &(i, j)) in pairs.iter().enumerate().skip(t).step_by(3) {
+                        assert_eq!(
+                            shared.intersects_shared(ids[i], ids[j]),
+                            Ok(truth[k]),
+                            "round {round}: {i} {j}"
+                        );
+                    }
+                    for &(i, x) in probes.iter().skip(t).step_by(3) {
+                        let want = worlds[i].contains_point(x);
+                        assert_eq!(shared.contains_point_shared(ids[i], x), Ok(want), "{i} {x:?}");
+                    }
+                });
+            }
+        });
+        assert_eq!(scene.stats(), stats);
+        assert_eq!(scene.snapshot_count(), snapshots);
+        let after: Vec<u64> = ids.iter().map(|&id| scene.version(id).unwrap()).collect();
+        assert_eq!(after, versions);
+        // The planned queries agree.
+        for (k, &(i, j)) in pairs.iter().enumerate().step_by(7) {
+            assert_eq!(scene.intersects(ids[i], ids[j]), Ok(truth[k]));
+        }
+        scene.debug_validate().unwrap();
+        let gone = ids[0];
+        scene.remove(gone).unwrap();
+        assert_eq!(
+            scene.intersects_shared(gone, ids[1]),
+            Err(SceneError::StalePolygon(gone))
+        );
+        assert_eq!(
+            scene.contains_point_shared(gone, [0.0, 0.0]),
+            Err(SceneError::StalePolygon(gone))
+        );
+    }
+}

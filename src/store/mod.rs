@@ -64,6 +64,17 @@
 //! pay where translations keep snapshots and the array test is already cheap;
 //! docs/store.md); [`Scene::set_warm_starts`] turns it on.
 //!
+//! # Queries through `&self`
+//! [`Scene::intersects_shared`] and [`Scene::contains_point_shared`] read only what
+//! the scene holds and change nothing (`shared.rs`), so one `&Scene` can be queried
+//! from several threads; they do not plan, convert or feed the planner's counters.
+//! docs/store.md lists what the planned queries change and why.
+//!
+//! # User data
+//! Each polygon carries a `u128` of the caller's ([`Scene::insert_with_user_data`],
+//! [`Scene::user_data`], [`Scene::set_user_data`]), kept through edits, translations
+//! and poses.
+//!
 //! # Parallel batches
 //! [`Scene::intersects_batch`] and [`Scene::intersecting_pairs`] plan sequentially,
 //! convert the chosen snapshots in parallel, then answer the pairs in parallel on
@@ -81,6 +92,7 @@ mod planner;
 mod query;
 mod route;
 mod scene;
+mod shared;
 mod warm;
 // The demo's and the benches' workloads: the tool's, not an API to build on.
 #[doc(hidden)]
