@@ -25,6 +25,13 @@
 //! answers) gets a translated twin built once beside the polygon (same identity, so the
 //! same vertex handles), which the next `&mut` access keeps in place of the old arena.
 //!
+//! # Poses
+//! A posed polygon whose pose the scene accepted without building the image
+//! ([`remap`](LazyLinked::remap): every image finite, the rounded image proved strictly
+//! convex) is the shape's image under the pose, each coordinate as `Pose::apply` rounds
+//! it; the same accessors build it (a twin of the shape, so the same vertex handles)
+//! when first read, O(n), and the next `&mut` access keeps it as the arena.
+//!
 //! # Cost and memory
 //! [`translate`](LazyLinked::translate) is O(1); materializing is one sequential pass
 //! over the arena for up to [`MAX_PENDING`] translations (O(n · pending) additions,
