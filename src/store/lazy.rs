@@ -25,6 +25,13 @@
 //! answers) gets a translated twin built once beside the polygon (same identity, so the
 //! same vertex handles), which the next `&mut` access keeps in place of the old arena.
 //!
+//! # Poses
+//! A posed polygon whose pose the scene accepted without building the image
+//! ([`remap`](LazyLinked::remap): every image finite, the rounded image proved strictly
+//! convex) is the shape's image under the pose, each coordinate as `Pose::apply` rounds
+//! it; the same accessors build it (a twin of the shape, so the same vertex handles)
+//! when first read, O(n), and the next `&mut` access keeps it as the arena.
+//!
 //! # Cost and memory
 //! [`translate`](LazyLinked::translate) is O(1); materializing is one sequential pass
 //! over the arena for up to [`MAX_PENDING`] translations (O(n · pending) additions,
@@ -35,9 +42,9 @@
 //! costs its slot one pointer), whatever the number of translations.
 
 use super::cost::ArenaProfile;
-use crate::kernel::Point;
+use crate::kernel::{Point, Pose};
 use crate::polygon::LinkedPolygon;
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
 /// Translations a polygon may hold unapplied: a translation beyond them applies them all
 /// first. Eight makes the arena pass of rigid motion an eighth of eager translation's
@@ -54,6 +61,29 @@ pub(super) struct LazyLinked {
     /// Allocated at the first translation and kept (a polygon never translated pays
     /// one pointer: the slots of a scene stay small, and planning reads them).
     lazy: Option<Box<Pending>>,
+    /// A posed polygon's pending pose: while `pending`, the polygon is the image of the
+    /// shape under the pose (each coordinate as `Pose::apply` rounds it), not `base`.
+    /// Allocated at the first lazy pose and kept.
+    remap: Option<Box<Remap>>,
+}
+
+/// A pose accepted by the scene (every image finite, the rounded image strictly convex)
+/// but not yet applied.
+#[derive(Debug)]
+struct Remap {
+    shape: Arc<LinkedPolygon>,
+    pose: Pose,
+    pending: bool,
+    /// The image, built for a shared reader; taken as `base` at the next `&mut` access.
+    world: OnceLock<LinkedPolygon>,
+}
+
+impl Remap {
+    fn image(&self) -> LinkedPolygon {
+        let pose = self.pose;
+        self.shape
+            .mapped_twin_unchecked(|p| pose.apply(p).expect("an accepted pose has every image finite"))
+    }
 }
 
 #[derive(Debug)]
@@ -80,6 +110,14 @@ impl Clone for LazyLinked {
                     twin: OnceLock::new(),
                 })
             }),
+            remap: self.remap.as_ref().map(|r| {
+                Box::new(Remap {
+                    shape: r.shape.clone(),
+                    pose: r.pose,
+                    pending: r.pending,
+                    world: OnceLock::new(),
+                })
+            }),
         }
     }
 }
@@ -90,7 +128,48 @@ impl LazyLinked {
         LazyLinked {
             base: polygon,
             lazy: None,
+            remap: None,
         }
+    }
+
+    /// Records a pose the caller has accepted for `shape` (a twin of the polygon: the
+    /// same vertex handles): from now on the polygon is the shape's image, built when
+    /// it is next read. Pending translations are dropped (the image replaces every
+    /// coordinate). O(1).
+    pub(super) fn remap(&mut self, shape: &Arc<LinkedPolygon>, pose: Pose) {
+        if let Some(p) = self.lazy.as_deref_mut() {
+            p.len = 0;
+            p.twin.take();
+        }
+        match self.remap.as_deref_mut() {
+            Some(r) => {
+                if !Arc::ptr_eq(&r.shape, shape) {
+                    r.shape = shape.clone();
+                }
+                r.pose = pose;
+                r.pending = true;
+                r.world.take();
+            }
+            None => {
+                self.remap = Some(Box::new(Remap {
+                    shape: shape.clone(),
+                    pose,
+                    pending: true,
+                    world: OnceLock::new(),
+                }));
+            }
+        }
+    }
+
+    /// The pending pose's state, when one is pending.
+    fn remapped(&self) -> Option<&Remap> {
+        self.remap.as_deref().filter(|r| r.pending)
+    }
+
+    /// Whether the polygon is a pose's image not yet built in place.
+    #[cfg(test)]
+    pub(super) fn remap_pending(&self) -> bool {
+        self.remapped().is_some()
     }
 
     /// The translations waiting, when there are any.
@@ -107,6 +186,9 @@ impl LazyLinked {
     /// The translated polygon. O(1) when nothing is pending (every `&mut` path leaves it
     /// so); otherwise the first call builds the translated twin, O(n · pending).
     pub(super) fn get(&self) -> &LinkedPolygon {
+        if let Some(r) = self.remapped() {
+            return r.world.get_or_init(|| r.image());
+        }
         match self.waiting() {
             None => &self.base,
             Some(p) => p
@@ -135,6 +217,13 @@ impl LazyLinked {
     }
 
     fn materialize(&mut self) {
+        if let Some(r) = self.remap.as_deref_mut().filter(|r| r.pending) {
+            self.base = match r.world.take() {
+                Some(world) => world,
+                None => r.image(),
+            };
+            r.pending = false;
+        }
         let Some(p) = self.lazy.as_deref_mut().filter(|p| p.len > 0) else {
             return;
         };
@@ -150,6 +239,9 @@ impl LazyLinked {
     /// coordinate overflows, and the rounded polygon is strictly convex. O(1), or one
     /// pass when the list is full (or a twin is kept: it becomes the arena first).
     pub(super) fn translate(&mut self, dx: f64, dy: f64) {
+        if self.remapped().is_some() {
+            self.materialize();
+        }
         let full = self
             .lazy
             .as_deref()
@@ -179,6 +271,9 @@ impl LazyLinked {
         let lazy = self.lazy.as_deref().map_or(0, |p| {
             std::mem::size_of::<Pending>() + p.twin.get().map_or(0, LinkedPolygon::arena_bytes)
         });
-        self.base.arena_bytes() + lazy
+        let remap = self.remap.as_deref().map_or(0, |r| {
+            std::mem::size_of::<Remap>() + r.world.get().map_or(0, LinkedPolygon::arena_bytes)
+        });
+        self.base.arena_bytes() + lazy + remap
     }
 }

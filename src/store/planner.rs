@@ -157,6 +157,9 @@ impl<K: Kernel> Scene<K> {
             self.stats.box_rejects += 1;
             return Route::Known(false);
         }
+        // Posed polygons whose boxes meet: the snapshots their lazy poses owe.
+        self.settle(a);
+        self.settle(b);
         let saving = self.saving(a, b);
         for (k, other) in [(a, b), (b, a)] {
             let has_other = self.entries[other].snapshot.is_some();

@@ -163,6 +163,12 @@ impl Entry {
         }
     }
 
+    /// Has a snapshot, or a posed polygon's owed one (built when the planner next
+    /// meets it): what a caller sees as holding one.
+    pub(super) fn holds_snapshot(&self) -> bool {
+        self.snapshot.is_some() || self.posed.as_ref().is_some_and(|p| p.snapshot_due)
+    }
+
     /// Has a snapshot, or will have one before the plan is answered.
     pub(super) fn will_have_snapshot(&self) -> bool {
         self.snapshot.is_some() || self.plan.convert
@@ -213,6 +219,9 @@ pub struct Scene<K: Kernel = Exact> {
     /// Translations proved exact by the grid (tests only).
     #[cfg(test)]
     pub(super) exact_skips: u64,
+    /// Poses set without building the image (tests only).
+    #[cfg(test)]
+    pub(super) lazy_poses: u64,
 }
 
 impl Default for Scene<Exact> {
@@ -246,6 +255,8 @@ impl<K: Kernel> Scene<K> {
             warm: WarmCache::default(),
             #[cfg(test)]
             exact_skips: 0,
+            #[cfg(test)]
+            lazy_poses: 0,
         }
     }
 
@@ -339,7 +350,7 @@ impl<K: Kernel> Scene<K> {
 
     /// Number of polygons that currently hold an array snapshot.
     pub fn snapshot_count(&self) -> usize {
-        self.entries.iter().filter(|(_, e)| e.snapshot.is_some()).count()
+        self.entries.iter().filter(|(_, e)| e.holds_snapshot()).count()
     }
 
     /// Heap memory held by the scene's structures, in bytes: the polygons' arenas (with
@@ -356,7 +367,9 @@ impl<K: Kernel> Scene<K> {
             .iter()
             .map(|(_, e)| {
                 e.polygon.arena_bytes()
-                    + e.posed.as_ref().map_or(0, |p| p.shape.arena_bytes())
+                    + e.posed.as_ref().map_or(0, |p| {
+                        p.shape.arena_bytes() + std::mem::size_of_val(p.array.vertices())
+                    })
                     + e.snapshot
                         .as_ref()
                         .map_or(0, |s| std::mem::size_of_val(s.vertices()))
@@ -474,7 +487,7 @@ impl<K: Kernel> Scene<K> {
     /// # Errors
     /// `StalePolygon`, `ForeignPolygon`.
     pub fn has_snapshot(&self, id: PolygonId) -> Result<bool, SceneError> {
-        self.key(id).map(|k| self.entries[k].snapshot.is_some())
+        self.key(id).map(|k| self.entries[k].holds_snapshot())
     }
 
     /// Inserts a vertex after `after` (see [`LinkedPolygon::insert_after`]). O(1).
@@ -686,6 +699,9 @@ impl<K: Kernel> Scene<K> {
             self.broad.mark(key);
         }
         e.snapshot = Some(snapshot);
+        if let Some(p) = e.posed.as_deref_mut() {
+            p.snapshot_due = false;
+        }
         self.stats.conversions += 1;
     }
 
@@ -725,6 +741,9 @@ impl<K: Kernel> Scene<K> {
                     .shape
                     .debug_validate()
                     .map_err(|m| format!("polygon {k}: shape: {m}"))?;
+                if posed.array.vertices() != posed.shape.to_convex().vertices() {
+                    return Err(format!("polygon {k}: the shape's array is stale"));
+                }
                 if posed.shape.len() != polygon.len() {
                     return Err(format!("polygon {k}: world and shape sizes differ"));
                 }
@@ -736,6 +755,9 @@ impl<K: Kernel> Scene<K> {
                         ));
                     }
                 }
+            }
+            if e.posed.as_ref().is_some_and(|p| p.snapshot_due) && e.snapshot.is_some() {
+                return Err(format!("polygon {k}: a snapshot both owed and held"));
             }
             if let Some(s) = &e.snapshot {
                 let mut now = polygon.to_convex().into_vertices();
@@ -782,6 +804,7 @@ fn grid_of(p: Point) -> f64 {
     one(p.x).min(one(p.y))
 }
 
+mod extreme;
 mod pose;
 mod user;
 

@@ -252,6 +252,24 @@ impl LinkedPolygon {
         Ok(twin)
     }
 
+    /// A twin (same identity, same vertex handles, same storage order) with every vertex
+    /// mapped by `f`, nothing checked: the caller has proved the image strictly convex,
+    /// counter-clockwise and winding once (a pose accepted by the scene). O(n), one
+    /// sequential pass.
+    pub(crate) fn mapped_twin_unchecked(&self, f: impl Fn(Point) -> Point) -> LinkedPolygon {
+        let mut nodes = self.nodes.clone();
+        for node in &mut nodes {
+            node.point = f(node.point);
+        }
+        LinkedPolygon {
+            owner: Identity(self.owner.get()),
+            nodes,
+            slots: self.slots.clone(),
+            next_generation: self.next_generation,
+            relinks: self.relinks,
+        }
+    }
+
     /// Whether `v` may sit between the vertices at positions a and b = next(a) (or
     /// replace the single vertex between them): strictly right of a→b, strict left
     /// turns at a and at b.

@@ -1,20 +1,115 @@
 //! Poses of a [`Scene`]'s polygons: a posed polygon keeps its shape and its pose, and
-//! its entry's polygon is the shape's image (docs/store.md, "Poses"). Setting a pose is
-//! O(n): the image, its exact strict-convexity check, its box and, when the polygon had
-//! one, its snapshot.
+//! its entry's polygon is the shape's image (docs/store.md, "Poses").
+//!
+//! # Complexity
+//! A pose is set in O(log n) when the shape's rounding margin proves the rounded image
+//! strictly convex ([`proves_convex`], O(1)): the world box from four extreme-vertex
+//! searches on the shape's array (`extreme.rs`), the pose recorded, the world polygon
+//! and its snapshot built only when something reads them (the linked image by the
+//! first reader, O(n); the snapshot, when the polygon had one, by the planner when the
+//! polygon's box meets another's, one O(n) pass over the shape's array). Otherwise
+//! (first pose, a margin too small for the coordinates' rounding, an overflowing
+//! extreme) it is O(n): the image with its exact strict-convexity check, its box and
+//! its snapshot. Vertex edits of a posed polygon are O(n) (the new shape's array and
+//! margin, its image).
+//!
+//! # Precision
+//! Both paths give the same polygon, box and answers: the world coordinates are
+//! `Pose::apply`'s, the box is the rounded image's exactly, and a pose is accepted
+//! only when the rounded image is strictly convex (proved, or checked exactly).
 
 use super::super::lazy::LazyLinked;
+use super::extreme;
 use super::{PolygonId, Scene, SceneError};
-use crate::kernel::{Kernel, Point, Pose, PoseError};
-use crate::polygon::{EditError, LinkedPolygon};
+use crate::kernel::{BoundingBox, Kernel, Point, Pose, PoseError};
+use crate::polygon::{ConvexPolygon, EditError, LinkedPolygon};
+use std::sync::Arc;
 
 /// A posed polygon's shape (edited in shape coordinates) and its pose. The entry's
 /// `polygon` is the shape's image, a twin of `shape` (the same vertex handles), with no
-/// translation pending.
+/// translation pending (or a pending pose of this shape, `LazyLinked::remap`).
 #[derive(Clone, Debug)]
 pub(in crate::store) struct Posed {
     pub(in crate::store) pose: Pose,
-    pub(in crate::store) shape: LinkedPolygon,
+    pub(in crate::store) shape: Arc<LinkedPolygon>,
+    /// The shape as an array, counter-clockwise from its first position (as
+    /// `to_convex` gives it): the extreme-vertex searches read it, and the world
+    /// snapshot is its image.
+    pub(in crate::store) array: ConvexPolygon,
+    /// The least `turn_margin` of the shape's turns (0 when none is proved): a bound on
+    /// how far rounding may move the image's vertices and keep it strictly convex.
+    pub(in crate::store) margin: f64,
+    /// The polygon had a snapshot when a lazy pose dropped it: the planner rebuilds it
+    /// (from `array`) when the polygon's box next meets another's.
+    pub(in crate::store) snapshot_due: bool,
+}
+
+impl Posed {
+    /// `shape` (strictly convex) under `pose`. O(n): the array and the margin.
+    fn new(pose: Pose, shape: LinkedPolygon) -> Posed {
+        let (array, margin) = shape_facts(&shape);
+        Posed {
+            pose,
+            shape: Arc::new(shape),
+            array,
+            margin,
+            snapshot_due: false,
+        }
+    }
+}
+
+/// The shape's array and rounding margin. A translation by zero rounds nothing, so
+/// `check_translation(0, 0)` is the exact walk over the shape itself.
+pub(super) fn shape_facts(shape: &LinkedPolygon) -> (ConvexPolygon, f64) {
+    (
+        shape.to_convex(),
+        shape.check_translation(0.0, 0.0).unwrap_or(0.0),
+    )
+}
+
+/// Whether a shape whose turns all have margin at least `margin` (`turn_margin`) has a
+/// strictly convex rounded image under `pose` when the rounded image lies in `world`.
+///
+/// # Why
+/// The exact image is the shape under a rotation scaled by ρ = √(c² + s²): each turn's
+/// determinant is ρ² times the shape's, and each edge's 1-norm at most √2·ρ times the
+/// shape's. So if the shape's turn has determinant at least L and edge norms summing to
+/// at most S, with margin m ≤ L / (2S + 8), the image's turn has determinant at least
+/// ρ²·L and norms at most √2·ρ·S, and moving every image vertex by δ ≤ 1 per coordinate
+/// keeps it strictly left when δ·(2√2·ρ·S + 8) < ρ²·L, which holds when
+/// δ·√2·max(ρ, 1) < ρ²·m (then the turn-margin argument of `turn_margin` applies:
+/// strictly convex, winding once). Rounding moves each coordinate by at most half an
+/// ulp of the rounded value, δ ≤ U·max|world| + 2^-1075, and the world box bounds the
+/// rounded values.
+///
+/// # Precision
+/// ρ² is bounded below and ρ above with the roundings of their computation widened by
+/// several ulps each; outside [2^-600, 2^600] for ρ² (where products could leave the
+/// normal range) nothing is proved.
+pub(super) fn proves_convex(margin: f64, pose: &Pose, world: &BoundingBox) -> bool {
+    const U: f64 = f64::EPSILON / 2.0;
+    if margin <= 0.0 {
+        return false;
+    }
+    let largest = [world.min.x, world.min.y, world.max.x, world.max.y]
+        .into_iter()
+        .fold(0.0f64, |m, v| m.max(v.abs()));
+    if largest.is_nan() || largest > 2f64.powi(52) {
+        return false;
+    }
+    let delta = largest * U * (1.0 + f64::EPSILON) + f64::from_bits(1);
+    let [c, s] = pose.rotation();
+    let rho2 = c * c + s * s;
+    if !(2f64.powi(-600)..=2f64.powi(600)).contains(&rho2) {
+        return false;
+    }
+    // c² + s² rounds three times: within a factor (1 ± 3.01U); 8U covers it, and the
+    // square root, the constant √2 and each product below round once more.
+    let rho2_low = rho2 * (1.0 - 8.0 * U);
+    let rho_high = (rho2 * (1.0 + 8.0 * U)).sqrt() * (1.0 + 4.0 * U);
+    let need = delta * std::f64::consts::SQRT_2 * rho_high.max(1.0) * (1.0 + 16.0 * U);
+    let have = margin * rho2_low * (1.0 - 16.0 * U);
+    need < have
 }
 
 /// The image of `shape` under `pose`, each coordinate correctly rounded, checked exactly.
@@ -69,6 +164,9 @@ impl<K: Kernel> Scene<K> {
     /// ```
     pub fn set_pose(&mut self, id: PolygonId, pose: Pose) -> Result<(), SceneError> {
         let key = self.key(id)?;
+        if self.pose_lazily(key, pose) {
+            return Ok(());
+        }
         let e = &mut self.entries[key];
         let world = match &e.posed {
             Some(posed) => world_of(&posed.shape, &pose),
@@ -78,15 +176,61 @@ impl<K: Kernel> Scene<K> {
         let old = std::mem::replace(&mut e.polygon, LazyLinked::new(world));
         match &mut e.posed {
             Some(posed) => posed.pose = pose,
-            None => {
-                e.posed = Some(Box::new(Posed {
-                    pose,
-                    shape: old.into_inner(),
-                }));
-            }
+            None => e.posed = Some(Box::new(Posed::new(pose, old.into_inner()))),
         }
         self.placed(key);
         Ok(())
+    }
+
+    /// Sets the pose of an already posed polygon in O(log n) when the margin proves the
+    /// rounded image strictly convex: the box from the extreme vertices, the image left
+    /// to its readers. False (nothing changed) when it cannot: then the caller checks
+    /// the image in full.
+    fn pose_lazily(&mut self, key: usize, pose: Pose) -> bool {
+        let e = &mut self.entries[key];
+        let Some(posed) = e.posed.as_deref_mut() else {
+            return false;
+        };
+        // An overflowing extreme: the full path names the shape point.
+        let Some(bbox) = extreme::image_box(posed.array.vertices(), &pose) else {
+            return false;
+        };
+        if !proves_convex(posed.margin, &pose, &bbox) {
+            return false;
+        }
+        posed.pose = pose;
+        posed.snapshot_due |= e.snapshot.take().is_some();
+        e.polygon.remap(&posed.shape, pose);
+        e.bbox = bbox;
+        e.bbox_tight = true;
+        e.rounding_margin = 0.0;
+        e.version += 1;
+        self.broad.mark(key);
+        #[cfg(test)]
+        {
+            self.lazy_poses += 1;
+        }
+        true
+    }
+
+    /// Builds the world snapshot a lazy pose left owed (one pass over the shape's
+    /// array); O(1) when none is owed.
+    pub(in crate::store) fn settle(&mut self, key: usize) {
+        let e = &mut self.entries[key];
+        let Some(posed) = e.posed.as_deref_mut() else {
+            return;
+        };
+        if !std::mem::take(&mut posed.snapshot_due) {
+            return;
+        }
+        let pose = posed.pose;
+        let world = posed
+            .array
+            .vertices()
+            .iter()
+            .map(|&p| pose.apply(p).expect("an accepted pose has every image finite"))
+            .collect();
+        e.snapshot = Some(ConvexPolygon::from_ccw_unchecked(world));
     }
 
     /// The polygon's pose: `None` while it was never posed.
@@ -108,7 +252,7 @@ impl<K: Kernel> Scene<K> {
         let k = self.key(id)?;
         let e = &self.entries[k];
         Ok(match &e.posed {
-            Some(posed) => &posed.shape,
+            Some(posed) => posed.shape.as_ref(),
             None => e.polygon.get(),
         })
     }
@@ -136,7 +280,8 @@ impl<K: Kernel> Scene<K> {
         let mut shape = posed.shape.translated_twin(&[]);
         let out = edit(&mut shape).map_err(|err| SceneError::Edit(id, err))?;
         let world = world_of(&shape, &posed.pose).map_err(|err| SceneError::Pose(id, err))?;
-        posed.shape = shape;
+        (posed.array, posed.margin) = shape_facts(&shape);
+        posed.shape = Arc::new(shape);
         e.polygon = LazyLinked::new(world);
         e.account.edited();
         self.placed(key);
@@ -152,7 +297,11 @@ impl<K: Kernel> Scene<K> {
         e.bbox_tight = true;
         e.rounding_margin = 0.0;
         e.version += 1;
-        if e.snapshot.is_some() {
+        let due = e
+            .posed
+            .as_deref_mut()
+            .is_some_and(|p| std::mem::take(&mut p.snapshot_due));
+        if e.snapshot.is_some() || due {
             e.snapshot = Some(world.to_convex());
         }
         self.broad.mark(key);

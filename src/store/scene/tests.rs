@@ -3,6 +3,7 @@
 
 use super::*;
 use crate::generate::regular_polygon;
+use crate::kernel::Pose;
 use rand::Rng;
 
 /// The scene skips the convexity check of a translation when the margin kept from
@@ -188,4 +189,261 @@ fn translations_wait_until_the_linked_polygon_is_read() {
     scene.translate(a, -3.0, 1.0 / 3.0).unwrap();
     eager.translate(-3.0, 1.0 / 3.0).unwrap();
     assert_eq!(coords(&scene.remove(a).unwrap()), coords(&eager));
+}
+
+/// The exact reference of a pose's image: each coordinate's exact value rounded once.
+fn reference_image(shape: &[Point], pose: &Pose) -> Option<Vec<Point>> {
+    use crate::kernel::Rational;
+    let r = Rational::from_f64;
+    let ([c, s], [tx, ty]) = (pose.rotation(), pose.translation());
+    shape
+        .iter()
+        .map(|p| {
+            let x = (&(&(&r(c) * &r(p.x)) - &(&r(s) * &r(p.y))) + &r(tx)).to_f64();
+            let y = (&(&(&r(s) * &r(p.x)) + &(&r(c) * &r(p.y))) + &r(ty)).to_f64();
+            (x.is_finite() && y.is_finite()).then(|| Point::new(x, y))
+        })
+        .collect()
+}
+
+/// Strictly convex, counter-clockwise, winding once: exact orientations, and the
+/// vertices' angular order (a once-winding ring turns left exactly n times and its
+/// upper/lower split changes twice).
+fn reference_strictly_convex(v: &[Point]) -> bool {
+    use crate::kernel::{Exact, Orientation};
+    let n = v.len();
+    let mut changes = 0;
+    for i in 0..n {
+        let (a, b, c) = (v[i], v[(i + 1) % n], v[(i + 2) % n]);
+        if Exact.orient(a, b, c) != Orientation::Ccw {
+            return false;
+        }
+        let up = |p: Point, q: Point| q.x > p.x || (q.x == p.x && q.y > p.y);
+        if up(a, b) != up(b, c) {
+            changes += 1;
+        }
+    }
+    changes == 2
+}
+
+/// The shape's vertices from the linked polygon's first position.
+fn ring(p: &LinkedPolygon) -> Vec<Point> {
+    p.to_convex().into_vertices()
+}
+
+/// Lazy poses (O(log n) box, margin proof, image built on demand) against the exact
+/// reference, on shapes where the margin proves almost every pose (ordinary polygons)
+/// and where it cannot (slivers a few ulps wide, huge coordinates): the same
+/// acceptances and refusals, the same world vertices, tight boxes equal to the rounded
+/// image's, and the same pairs as a scene built from the reference images; edits
+/// between poses, reads in every order, and lazy poses actually taken.
+#[test]
+fn lazy_poses_agree_with_the_exact_reference() {
+    let mut rng = SmallRng::seed_from_u64(0x3838);
+    let shapes: Vec<Vec<Point>> = vec![
+        regular_polygon(16, 1.0).vertices().to_vec(),
+        regular_polygon(300, 0.7).vertices().to_vec(),
+        regular_polygon(1024, 1.3).vertices().to_vec(),
+        // Fine regular polygon far off: nearly flat turns, a small margin.
+        snapped(
+            &regular_polygon(512, 1e-3)
+                .vertices()
+                .iter()
+                .map(|p| Point::new(p.x + 10.0, p.y - 3.0))
+                .collect::<Vec<_>>(),
+            40,
+        ),
+        // A sliver a few ulps wide: rounding after a turn breaks it.
+        vec![
+            Point::new(1.0, 1.0),
+            Point::new(1.0 + 64.0 * f64::EPSILON, 1.0),
+            Point::new(1.0 + 32.0 * f64::EPSILON, 1.0 + f64::EPSILON),
+        ],
+        // Huge coordinates: no margin can cover their rounding.
+        regular_polygon(12, 1e17).vertices().to_vec(),
+    ];
+    let mut lazy_total = 0u64;
+    let mut refused = 0usize;
+    for round in 0..12 {
+        let mut scene = Scene::new();
+        let mut ids = Vec::new();
+        let mut truth: Vec<Vec<Point>> = Vec::new();
+        for k in 0..6 {
+            let shape = &shapes[(round + k) % shapes.len()];
+            ids.push(scene.insert_points(shape.iter().map(|p| [p.x, p.y])).unwrap());
+            truth.push(shape.clone());
+        }
+        // The shapes as the scene keeps them (first positions may differ).
+        let mut shape_rings: Vec<Vec<Point>> =
+            ids.iter().map(|&id| ring(scene.polygon(id).unwrap())).collect();
+        for frame in 0..40 {
+            for (k, &id) in ids.iter().enumerate() {
+                let spread = if k % 2 == 0 { 2.0 } else { 1e-15 };
+                let pose = Pose::from_angle(
+                    rng.random_range(-spread..spread),
+                    [rng.random_range(-1.5..1.5), rng.random_range(-1.5..1.5)],
+                )
+                .unwrap();
+                let want = reference_image(&shape_rings[k], &pose).filter(|w| reference_strictly_convex(w));
+                let got = scene.set_pose(id, pose);
+                assert_eq!(
+                    got.is_ok(),
+                    want.is_some(),
+                    "round {round} frame {frame} polygon {k}: {got:?}"
+                );
+                match want {
+                    Some(w) => truth[k] = w,
+                    None => refused += 1,
+                }
+            }
+            // Vertex edits now and then, in shape coordinates.
+            if frame % 17 == 5 {
+                let k = rng.random_range(0..ids.len());
+                let p = scene.shape(ids[k]).unwrap();
+                if p.len() > 3 {
+                    let v = p.first();
+                    if scene.remove_vertex(ids[k], v).is_ok() {
+                        shape_rings[k] = ring(scene.shape(ids[k]).unwrap());
+                        truth[k] = match scene.pose(ids[k]).unwrap() {
+                            Some(pose) => reference_image(&shape_rings[k], &pose).unwrap(),
+                            None => shape_rings[k].clone(),
+                        };
+                    }
+                }
+            }
+            scene.debug_validate().unwrap();
+            // Reads in varying order: pairs first, or world vertices first.
+            let reference = {
+                let mut r = Scene::new();
+                let rids: Vec<PolygonId> = truth
+                    .iter()
+                    .map(|w| r.insert_points(w.iter().map(|p| [p.x, p.y])).unwrap())
+                    .collect();
+                let pos = |id: PolygonId| rids.iter().position(|&x| x == id).unwrap();
+                let mut pairs: Vec<(usize, usize)> = r
+                    .intersecting_pairs()
+                    .into_iter()
+                    .map(|(a, b)| (pos(a), pos(b)))
+                    .collect();
+                pairs.sort_unstable();
+                pairs
+            };
+            let check_vertices = |scene: &Scene| {
+                for (k, &id) in ids.iter().enumerate() {
+                    let world = ring(scene.polygon(id).unwrap());
+                    let start = world
+                        .iter()
+                        .position(|&p| p == truth[k][0])
+                        .expect("a world vertex");
+                    let mut w = world.clone();
+                    w.rotate_left(start);
+                    assert_eq!(w, truth[k], "round {round} frame {frame} polygon {k}");
+                    let b = crate::kernel::BoundingBox::of(truth[k].iter().copied()).unwrap();
+                    assert_eq!(scene.bounding_box(id).unwrap(), b);
+                }
+            };
+            if frame % 2 == 0 {
+                check_vertices(&scene);
+            }
+            let pos = |id: PolygonId| ids.iter().position(|&x| x == id).unwrap();
+            let mut pairs: Vec<(usize, usize)> = scene
+                .intersecting_pairs()
+                .into_iter()
+                .map(|(a, b)| (pos(a), pos(b)))
+                .collect();
+            pairs.sort_unstable();
+            assert_eq!(pairs, reference, "round {round} frame {frame}");
+            if frame % 2 == 1 {
+                check_vertices(&scene);
+            }
+            scene.debug_validate().unwrap();
+        }
+        lazy_total += scene.lazy_poses;
+    }
+    // Both paths taken: the ordinary shapes' poses proved in O(1) (half the shapes),
+    // the sliver's and the huge shape's checked in full or refused.
+    assert!(lazy_total > 12 * 40 * 6 / 3, "lazy poses {lazy_total}");
+    assert!(lazy_total < 12 * 40 * 6, "lazy poses {lazy_total}");
+    assert!(refused > 0, "no pose was refused");
+}
+
+/// A body turned for thousands of frames: every frame's world vertices are the exact
+/// rounded images of the shape (no drift), every pose after the first is lazy, and
+/// the linked image is never built when nothing reads it.
+#[test]
+fn thousands_of_lazy_frames_do_not_drift() {
+    let mut scene = Scene::new();
+    let shape = regular_polygon(64, 1.0).vertices().to_vec();
+    let id = scene.insert_points(shape.iter().map(|p| [p.x, p.y])).unwrap();
+    let other = scene
+        .insert_points([[100.0, 100.0], [101.0, 100.0], [100.0, 101.0]])
+        .unwrap();
+    let rings = ring(scene.polygon(id).unwrap());
+    for frame in 0..4000 {
+        let pose = Pose::from_angle(frame as f64 * 0.013, [0.001 * frame as f64, -0.5]).unwrap();
+        scene.set_pose(id, pose).unwrap();
+        assert!(scene.intersecting_pairs().is_empty());
+        if frame > 0 {
+            assert!(scene.entries[0].polygon.remap_pending(), "frame {frame}");
+        }
+        if frame % 500 == 0 || frame == 3999 {
+            let want = reference_image(&rings, &pose).unwrap();
+            assert_eq!(ring(scene.polygon(id).unwrap()), want);
+            assert_eq!(
+                scene.bounding_box(id).unwrap(),
+                crate::kernel::BoundingBox::of(want.iter().copied()).unwrap()
+            );
+            scene.debug_validate().unwrap();
+        }
+    }
+    assert_eq!(scene.lazy_poses, 3999);
+    let _ = other;
+}
+
+/// The margin test: poses whose rounding it claims harmless are strictly convex after
+/// rounding (checked exactly), and it proves the ordinary cases.
+#[test]
+fn the_pose_margin_proves_only_what_holds() {
+    let mut rng = SmallRng::seed_from_u64(0x3839);
+    let mut proved = 0;
+    for round in 0..4000 {
+        let n = [3, 4, 6, 16, 64][round % 5];
+        let scale = 10f64.powi(rng.random_range(-8..9));
+        let pts: Vec<Point> = (0..n)
+            .map(|_| {
+                let t: f64 = rng.random_range(0.0..std::f64::consts::TAU);
+                Point::new(
+                    scale * t.cos(),
+                    scale * 1e-6f64.max(rng.random_range(0.0..1.0)) * t.sin(),
+                )
+            })
+            .collect();
+        let Ok(hull) = crate::polygon::convex_hull(&pts) else {
+            continue;
+        };
+        let shape = LinkedPolygon::from_convex(&hull);
+        let (array, margin) = super::pose::shape_facts(&shape);
+        let r: f64 = [1.0, 1.0 + 1e-9, 0.5, 3.0, 1e-3][rng.random_range(0..5)];
+        let t: f64 = rng.random_range(-10.0..10.0);
+        let pose = Pose::new(
+            [r * t.cos(), r * t.sin()],
+            [
+                rng.random_range(-1.0..1.0) * scale * 4.0,
+                rng.random_range(-1.0..1.0),
+            ],
+        )
+        .unwrap();
+        let Some(image) = reference_image(array.vertices(), &pose) else {
+            continue;
+        };
+        let b = crate::kernel::BoundingBox::of(image.iter().copied()).unwrap();
+        if super::pose::proves_convex(margin, &pose, &b) {
+            proved += 1;
+            assert!(
+                reference_strictly_convex(&image),
+                "round {round}: {pose:?} {array:?}"
+            );
+        }
+    }
+    assert!(proved > 2000, "proved {proved}");
 }
