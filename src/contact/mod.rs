@@ -395,7 +395,8 @@ fn deepest_edge<K: Kernel>(kernel: K, p: &[Point], q: &[Point]) -> ([Point; 3], 
     for &(c, of_q, low) in &candidates {
         // `low > least_upper`: strictly deeper than some candidate, so never the first
         // minimum (NaN never excludes).
-        if !(low > least_upper) {
+        let excluded = low > least_upper;
+        if !excluded {
             consider(c, of_q, &mut best);
         }
     }
