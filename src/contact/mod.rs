@@ -46,7 +46,11 @@
 //!   The area is the exact shoelace sum over it.
 //!
 //! Whether they meet is decided first by the O(log n) [`Barba`] test under the same
-//! kernel.
+//! kernel, except for the distance under an exact kernel on pairs of at most 40
+//! vertices in all: a certified feature proves them disjoint, and the exact walk finds
+//! one iff they are, so the walk alone answers. Under an exact kernel the depth
+//! candidates are first bounded in floating point (coordinates 0 or in
+//! [2^-100, 2^100]), and only those the bounds cannot rule out are compared exactly.
 //!
 //! # Complexity
 //! For n and m vertices: distance O(log n + log m) for the test that they are disjoint
