@@ -118,16 +118,27 @@ fn unit_component(c: &Rational, l: &Rational) -> f64 {
     }
 }
 
+/// The squared depth `o²/l` of the D-edge of edge `a → b` with vertex `v` (as for
+/// [`depth_and_normal`]).
+pub(crate) fn squared_depth(edge: [Point; 3]) -> Rational {
+    squared_depth_parts(edge).0
+}
+
+/// The squared depth, the edge vector `e = b − a` and `l = |e|²`, exactly.
+fn squared_depth_parts([a, b, v]: [Point; 3]) -> (Rational, Exact2, Rational) {
+    let (a, b, v) = (exact(a), exact(b), exact(v));
+    let e = minus(&b, &a);
+    let l = dot(&e, &e);
+    let o = cross(&e, &minus(&v, &a));
+    (o.square().div(&l), e, l)
+}
+
 /// The squared depth and the normal of the D-edge of edge `a → b` with vertex `v`
 /// (`[a, b, v]`; `of_q`: the edge is Q's): the translation of Q that makes the polygons
 /// touch is `−depth · n_D`, `n_D` the D-edge's outward normal (Q's edge's outward normal
 /// for an edge of Q, the opposite of P's for an edge of P).
 pub(crate) fn depth_and_normal([a, b, v]: [Point; 3], of_q: bool) -> (Rational, [f64; 2]) {
-    let (a, b, v) = (exact(a), exact(b), exact(v));
-    let e = minus(&b, &a);
-    let l = dot(&e, &e);
-    let o = cross(&e, &minus(&v, &a));
-    let squared = o.square().div(&l);
+    let (squared, e, l) = squared_depth_parts([a, b, v]);
     // Counter-clockwise edge e: outward normal (e_y, −e_x).
     let direction = if of_q {
         [-&e[1], e[0].clone()]

@@ -46,7 +46,11 @@
 //!   The area is the exact shoelace sum over it.
 //!
 //! Whether they meet is decided first by the O(log n) [`Barba`] test under the same
-//! kernel.
+//! kernel, except for the distance under an exact kernel on pairs of at most 40
+//! vertices in all: a certified feature proves them disjoint, and the exact walk finds
+//! one iff they are, so the walk alone answers. Under an exact kernel the depth
+//! candidates are first bounded in floating point (coordinates 0 or in
+//! [2^-100, 2^100]), and only those the bounds cannot rule out are compared exactly.
 //!
 //! # Complexity
 //! For n and m vertices: distance O(log n + log m) for the test that they are disjoint
@@ -254,12 +258,23 @@ pub fn depth_with<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) ->
     if !Barba.intersects_with(kernel, p, q) {
         return None;
     }
-    let (edge, of_q) = deepest_edge(kernel, p.vertices(), q.vertices());
-    let (squared, normal) = construct::depth_and_normal(edge, of_q);
-    Some(Depth {
-        depth: construct::finite(squared.sqrt_to_f64()),
-        squared_depth: squared,
-        normal,
+    let k = kernel.within([p.bounding_box(), q.bounding_box()]);
+    let (edge, of_q) = deepest_edge(k, p.vertices(), q.vertices());
+    // The double-double rounding nearly always decides; the exact square root otherwise.
+    Some(match rounded::depth_and_normal(edge, of_q) {
+        Some((depth, normal)) => Depth {
+            squared_depth: construct::squared_depth(edge),
+            depth: Some(depth),
+            normal,
+        },
+        None => {
+            let (squared, normal) = construct::depth_and_normal(edge, of_q);
+            Depth {
+                depth: construct::finite(squared.sqrt_to_f64()),
+                squared_depth: squared,
+                normal,
+            }
+        }
     })
 }
 
@@ -343,29 +358,106 @@ fn touching_feature(p: &[Point], q: &[Point]) -> Option<Feature> {
 
 /// The D-edge nearest the origin among all of D's edges (each paired by the walk with
 /// its deepest vertex), by exact comparison of the candidates' squared depths: the edge
-/// and vertex `[a, b, v]`, and whether the edge is Q's.
+/// and vertex `[a, b, v]`, and whether the edge is Q's. Of tied edges, the first in the
+/// walk's order.
+///
+/// Under an exact kernel, when every coordinate is 0 or of magnitude in
+/// [2^-100, 2^100] ([`depth_bounds`]), each candidate's squared depth is first bounded in
+/// floating point; a candidate whose lower bound exceeds the least upper bound is
+/// strictly deeper than the minimum and is never compared exactly. The exact scan over
+/// the rest (in the walk's order) picks the same edge as the scan over all.
 fn deepest_edge<K: Kernel>(kernel: K, p: &[Point], q: &[Point]) -> ([Point; 3], bool) {
+    let filtered = K::EXACT && p.iter().chain(q).all(|v| moderate(v.x) && moderate(v.y));
+    let mut candidates: Vec<([Point; 3], bool, f64)> = Vec::new();
+    let mut least_upper = f64::INFINITY;
     let mut best: Option<([Point; 3], bool)> = None;
+    let consider = |c: [Point; 3], of_q: bool, best: &mut Option<([Point; 3], bool)>| {
+        let better = match *best {
+            None => true,
+            Some((b, _)) => kernel.sign(&DepthOrder(c, b)) == Sign::Negative,
+        };
+        if better {
+            *best = Some((c, of_q));
+        }
+    };
+    if filtered {
+        candidates.reserve(p.len() + q.len());
+    }
     walk::walk::<K, ()>(kernel, p, q, |f| {
         if let Some(c) = construct::edge_and_vertex(p, q, f) {
-            let better = match best {
-                None => true,
-                Some((b, _)) => kernel.sign(&DepthOrder(c, b)) == Sign::Negative,
-            };
-            if better {
-                best = Some((c, matches!(f, Feature::EdgeOfQ { .. })));
+            let of_q = matches!(f, Feature::EdgeOfQ { .. });
+            if filtered {
+                let (low, high) = depth_bounds(c);
+                least_upper = least_upper.min(high);
+                candidates.push((c, of_q, low));
+            } else {
+                consider(c, of_q, &mut best);
             }
         }
         ControlFlow::Continue(())
     });
+    for &(c, of_q, low) in &candidates {
+        // `low > least_upper`: strictly deeper than some candidate, so never the first
+        // minimum (NaN never excludes).
+        let excluded = low > least_upper;
+        if !excluded {
+            consider(c, of_q, &mut best);
+        }
+    }
     // The walk visits n + m ≥ 6 edges, so `best` is set.
     best.unwrap_or(([p[0], p[1], q[0]], false))
+}
+
+/// Whether a coordinate is 0 or of magnitude in [2^-100, 2^100]: then every nonzero
+/// coordinate difference is at least 2^-152, every nonzero product of two at least
+/// 2^-304 and at most 2^204, and nothing in [`depth_bounds`] overflows or underflows.
+#[inline(always)]
+fn moderate(x: f64) -> bool {
+    const LOW: f64 = 7.888609052210118e-31; // 2^-100
+    const HIGH: f64 = 1.2676506002282294e30; // 2^100
+    x == 0.0 || (LOW..=HIGH).contains(&x.abs())
+}
+
+/// Bounds `[low, high]` on the squared depth `o²/l` of the D-edge `[a, b, v]`
+/// (`o = e × (v − a)`, `l = |e|²`, `e = b − a`), for coordinates that are
+/// [`moderate`].
+///
+/// With rounded differences, the computed `õ` is within `E = (3 + 16u)u(|ex·wy| + |ey·wx|)`
+/// of `o` (Shewchuk's bound for the orientation determinant), and the computed `l̃`
+/// within a factor `(1 ± u)⁴` of `l` (two roundings of each difference's square, one
+/// of the sum), so `l ∈ [l̃(1 − 5u), l̃(1 + 5u)]`. Then
+/// `o²/l ∈ [(|õ| − E)₊² / (l̃(1 + 8u)), (|õ| + E)² / (l̃(1 − 8u))]` (8u: 5u is not a
+/// double's distance from 1), and the six roundings of each end are covered by the
+/// factors `1 ∓ 10u`. In the moderate range a
+/// nonzero `o` is a multiple of 2^-304 and every intermediate stays normal, so no
+/// underflow weakens a relative bound; `õ = E = 0` only when both products are zero,
+/// that is when `o = 0`.
+#[inline(always)]
+fn depth_bounds([a, b, v]: [Point; 3]) -> (f64, f64) {
+    const U: f64 = f64::EPSILON / 2.0;
+    let (ex, ey) = (b.x - a.x, b.y - a.y);
+    let (wx, wy) = (v.x - a.x, v.y - a.y);
+    let (left, right) = (ex * wy, ey * wx);
+    let o = (left - right).abs();
+    // (3 + 2^-40)u covers Shewchuk's (3 + 16u)u and the bound's own two roundings.
+    let err = (3.0 + 1.0 / (1u64 << 40) as f64) * U * (left.abs() + right.abs());
+    let l = ex * ex + ey * ey;
+    let under = o - err;
+    let low = if under > 0.0 {
+        under * under / (l * (1.0 + 8.0 * U)) * (1.0 - 10.0 * U)
+    } else {
+        0.0
+    };
+    let over = o + err;
+    let high = over * over / (l * (1.0 - 8.0 * U)) * (1.0 + 10.0 * U);
+    (low, high)
 }
 
 /// The penetration of two polygons the kernel found meeting.
 fn penetration_of<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Penetration {
     let (pv, qv) = (p.vertices(), q.vertices());
-    let (edge, of_q) = deepest_edge(kernel, pv, qv);
+    let k = kernel.within([p.bounding_box(), q.bounding_box()]);
+    let (edge, of_q) = deepest_edge(k, pv, qv);
     construct::penetration(edge, of_q, overlap::overlap(p, q))
 }
 

@@ -270,6 +270,34 @@ fn edge(a: Point, b: Point, v: Point) -> Option<(f64, Point)> {
     Some((d, Point::new(x, y)))
 }
 
+/// The correctly rounded depth `|o|/√l` and unit normal `(±e_y, ∓e_x)/√l` of the
+/// D-edge of edge `a → b` with vertex `v` (`[a, b, v]`; `of_q`: the edge is Q's), as
+/// `construct::depth_and_normal` rounds them (`o = e × (v − a)`, `l = |e|²`), or
+/// `None` when a bound does not decide (a depth of 0 among them: touching pairs round
+/// the exact rationals).
+pub(crate) fn depth_and_normal([a, b, v]: [Point; 3], of_q: bool) -> Option<(f64, [f64; 2])> {
+    if !all_safe(&[a, b, v]) {
+        return None;
+    }
+    let (ex, ey) = (Dd::diff(b.x, a.x), Dd::diff(b.y, a.y));
+    let (wx, wy) = (Dd::diff(v.x, a.x), Dd::diff(v.y, a.y));
+    let root = ex.mul(ex).add(ey.mul(ey)).sqrt()?;
+    let o = ex.mul(wy).add(ey.mul(wx).neg());
+    let o = if o.hi < 0.0 { o.neg() } else { o };
+    let depth = o.div(root)?.rounded()?;
+    // An exact difference is zero iff its high part is: that component is +0, as the
+    // exact rounding gives (never −0).
+    let component = |x: Dd| {
+        if x.hi == 0.0 {
+            Some(0.0)
+        } else {
+            x.div(root)?.rounded()
+        }
+    };
+    let direction = if of_q { [ey.neg(), ex] } else { [ey, ex.neg()] };
+    Some((depth, [component(direction[0])?, component(direction[1])?]))
+}
+
 #[cfg(test)]
 mod tests {
     use super::super::{construct, walk};
@@ -315,6 +343,43 @@ mod tests {
         }
         assert!(total > 2000, "{total} disjoint pairs");
         assert!(answered * 100 >= total * 95, "answered {answered} of {total}");
+    }
+
+    /// Whenever the certified depth and normal answer, they equal the exact
+    /// construction's roundings; and they answer on nearly every random D-edge.
+    #[test]
+    fn certified_depths_and_normals_equal_the_exact_ones() {
+        let mut rng = SmallRng::seed_from_u64(43);
+        let (mut answered, mut total) = (0, 0);
+        for case in 0..20000 {
+            let scale = [1.0, 1e-30, 1e30, 3.0, 2f64.powi(-260), 2f64.powi(260)][case % 6];
+            let mut pt = || {
+                let (x, y): (f64, f64) = (rng.random_range(-4.0..4.0), rng.random_range(-4.0..4.0));
+                // Some coordinates on the grid, so that components and depths are exactly 0.
+                if case % 5 == 0 {
+                    Point::new(x.round() * scale, y.round() * scale)
+                } else {
+                    Point::new(x * scale, y * scale)
+                }
+            };
+            let (a, b, v) = (pt(), pt(), pt());
+            if a == b {
+                continue;
+            }
+            let of_q = case % 2 == 0;
+            total += 1;
+            let (squared, normal) = construct::depth_and_normal([a, b, v], of_q);
+            if let Some((d, n)) = depth_and_normal([a, b, v], of_q) {
+                answered += 1;
+                assert_eq!(d, squared.sqrt_to_f64(), "case {case}: depth");
+                assert_eq!(
+                    n.map(f64::to_bits),
+                    normal.map(f64::to_bits),
+                    "case {case}: normal"
+                );
+            }
+        }
+        assert!(answered * 100 >= total * 60, "answered {answered} of {total}");
     }
 
     /// Adversarial roundings: exact squares, halfway-looking values, one-ulp gaps,

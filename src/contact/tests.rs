@@ -113,3 +113,69 @@ fn depth_alone_equals_the_contacts_penetration() {
     }
     assert!(meeting > 50 && apart > 50, "{meeting} meeting, {apart} apart");
 }
+
+/// The floating-point bounds of a squared depth contain the exact value, on random
+/// D-edges across the moderate range, with exact zeros, near-collinear vertices and
+/// tiny edges far from the origin.
+#[test]
+fn depth_bounds_contain_the_exact_squared_depth() {
+    use super::construct;
+    use crate::kernel::Rational;
+    let mut rng = SmallRng::seed_from_u64(23);
+    for case in 0..20000 {
+        let scale = [1.0, 2f64.powi(-60), 2f64.powi(60), 1e-20, 7.0][case % 5];
+        let pt = |rng: &mut SmallRng| {
+            let (x, y): (f64, f64) = (rng.random_range(-4.0..4.0), rng.random_range(-4.0..4.0));
+            if case % 3 == 0 {
+                Point::new(x.round() * scale, y.round() * scale)
+            } else {
+                Point::new(x * scale, y * scale)
+            }
+        };
+        let (a, b) = (pt(&mut rng), pt(&mut rng));
+        let v = match case % 4 {
+            // Within a few ulps of the edge's line.
+            0 => {
+                let t: f64 = rng.random_range(-1.0..2.0);
+                let mut v = Point::new(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y));
+                for _ in 0..rng.random_range(0..3) {
+                    v.y = v.y.next_up();
+                }
+                v
+            }
+            // A tiny edge: b a few ulps from a.
+            1 => {
+                let v = pt(&mut rng);
+                let b = Point::new(a.x.next_up().next_up(), a.y.next_down());
+                if ![a, b, v]
+                    .iter()
+                    .all(|w| super::moderate(w.x) && super::moderate(w.y))
+                {
+                    continue;
+                }
+                let (lo, hi) = super::depth_bounds([a, b, v]);
+                let exact = construct::squared_depth([a, b, v]);
+                assert!(
+                    Rational::from_f64(lo) <= exact && exact <= Rational::from_f64(hi),
+                    "case {case}"
+                );
+                continue;
+            }
+            _ => pt(&mut rng),
+        };
+        if a == b
+            || ![a, b, v]
+                .iter()
+                .all(|w| super::moderate(w.x) && super::moderate(w.y))
+        {
+            continue;
+        }
+        let (lo, hi) = super::depth_bounds([a, b, v]);
+        let exact = construct::squared_depth([a, b, v]);
+        assert!(
+            Rational::from_f64(lo) <= exact && exact <= Rational::from_f64(hi),
+            "case {case}: {lo:e} {hi:e} {a:?} {b:?} {v:?}"
+        );
+        assert!(lo <= hi);
+    }
+}
