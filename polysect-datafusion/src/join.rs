@@ -119,14 +119,14 @@ pub async fn spatial_join(
             lit(grid.origin().y),
         ])
         .eq(cell(LEFT));
-    let exact = udf::intersects_udf(options.on_invalid)
-        .call(vec![geom(LEFT, left_geom), geom(RIGHT, right_geom)])
-        .is_true();
-    let joined = l.join_on(
-        r,
-        JoinType::Inner,
-        vec![cell(LEFT).eq(cell(RIGHT)), overlap.and(reference).and(exact)],
-    )?;
+    // The exact test (which parses and validates both polygons) runs only on the rows
+    // that pass the box and reference-cell tests (`polysect_intersects_if`).
+    let exact = udf::intersects_if_udf(options.on_invalid).call(vec![
+        overlap.and(reference),
+        geom(LEFT, left_geom),
+        geom(RIGHT, right_geom),
+    ]);
+    let joined = l.join_on(r, JoinType::Inner, vec![cell(LEFT).eq(cell(RIGHT)), exact])?;
     joined.select(left_columns.into_iter().chain(right_columns).collect::<Vec<_>>())
 }
 

@@ -3,6 +3,7 @@
 //! | function | arguments | result |
 //! |---|---|---|
 //! | `polysect_intersects(a, b)` | two WKB polygons | whether the closed polygons meet (touching counts) |
+//! | `polysect_intersects_if(c, a, b)` | a condition, two WKB polygons | `c AND polysect_intersects(a, b)`, reading `a` and `b` only where `c` is true |
 //! | `polysect_box(g)` | a WKB polygon | its bounding box, `{xmin, ymin, xmax, ymax}` |
 //! | `polysect_cells(xmin, ymin, xmax, ymax, s, ox, oy)` | a box, a grid | the ids of the grid cells the box covers |
 //! | `polysect_cell(x, y, s, ox, oy)` | a point, a grid | the id of the grid cell containing it |
@@ -50,9 +51,10 @@ pub enum OnInvalid {
     Null,
 }
 
-/// Registers all four functions with `ctx` (see the module docs).
+/// Registers all five functions with `ctx` (see the module docs).
 pub fn register(ctx: &SessionContext, on_invalid: OnInvalid) {
     ctx.register_udf(intersects_udf(on_invalid));
+    ctx.register_udf(intersects_if_udf(on_invalid));
     ctx.register_udf(box_udf(on_invalid));
     ctx.register_udf(ScalarUDF::from(Cells::new()));
     ctx.register_udf(ScalarUDF::from(Cell::new()));
@@ -61,6 +63,14 @@ pub fn register(ctx: &SessionContext, on_invalid: OnInvalid) {
 /// `polysect_intersects` as a [`ScalarUDF`].
 pub fn intersects_udf(on_invalid: OnInvalid) -> ScalarUDF {
     ScalarUDF::from(Intersects {
+        signature: Signature::user_defined(Volatility::Immutable),
+        on_invalid,
+    })
+}
+
+/// `polysect_intersects_if` as a [`ScalarUDF`].
+pub fn intersects_if_udf(on_invalid: OnInvalid) -> ScalarUDF {
+    ScalarUDF::from(IntersectsIf {
         signature: Signature::user_defined(Volatility::Immutable),
         on_invalid,
     })
@@ -186,49 +196,146 @@ impl ScalarUDFImpl for Intersects {
     }
 
     fn invoke_with_args(&self, args: ScalarFunctionArgs) -> Result<ColumnarValue> {
+        intersects_rows(
+            self.name(),
+            self.on_invalid,
+            &args.args[0],
+            &args.args[1],
+            None,
+            args.number_rows,
+        )
+    }
+}
+
+/// `polysect_intersects_if(c, a, b)`: `c AND polysect_intersects(a, b)`, reading `a` and
+/// `b` only in the rows where `c` is true (a null `c` counts as false). The spatial join
+/// gates the exact test by its box and reference-cell tests with it: DataFusion
+/// evaluates the right side of an AND on whole batches unless few rows pass the left,
+/// and rewrites a boolean CASE into ANDs.
+#[derive(Debug, PartialEq, Eq, Hash)]
+struct IntersectsIf {
+    signature: Signature,
+    on_invalid: OnInvalid,
+}
+
+impl ScalarUDFImpl for IntersectsIf {
+    fn name(&self) -> &str {
+        "polysect_intersects_if"
+    }
+
+    fn signature(&self) -> &Signature {
+        &self.signature
+    }
+
+    fn coerce_types(&self, arg_types: &[DataType]) -> Result<Vec<DataType>> {
         let name = self.name();
-        let (a, b) = (Wkb::new(name, &args.args[0])?, Wkb::new(name, &args.args[1])?);
-        // Constants are settled once, so that an invalid one is reported even for an
-        // empty batch and is not re-reported per row.
-        let constant = |w: &Wkb, arg| match w {
-            Wkb::Constant(c) => settle(name, arg, 0, self.on_invalid, c.clone()).map(Some),
-            _ => Ok(None),
+        if arg_types.len() != 3 {
+            return plan_err!(
+                "{name} takes a condition and two WKB arguments, got {} argument(s)",
+                arg_types.len()
+            );
+        }
+        if !matches!(arg_types[0], DataType::Boolean | DataType::Null) {
+            return plan_err!("{name}: argument 1 is {}, not Boolean", arg_types[0]);
+        }
+        let mut out = vec![DataType::Boolean];
+        out.extend(coerce_wkb(name, &arg_types[1..], 2)?);
+        Ok(out)
+    }
+
+    fn return_type(&self, _arg_types: &[DataType]) -> Result<DataType> {
+        Ok(DataType::Boolean)
+    }
+
+    fn invoke_with_args(&self, args: ScalarFunctionArgs) -> Result<ColumnarValue> {
+        let gate = args.args[0].to_array(args.number_rows)?;
+        let gate = if gate.data_type() == &DataType::Boolean {
+            gate.as_boolean().clone()
+        } else {
+            datafusion::arrow::array::BooleanArray::new_null(args.number_rows)
         };
-        let (ca, cb) = (constant(&a, 1)?, constant(&b, 2)?);
-        let all_scalar = matches!(args.args[0], ColumnarValue::Scalar(_))
-            && matches!(args.args[1], ColumnarValue::Scalar(_));
-        let rows = if all_scalar { 1 } else { args.number_rows };
-        let mut out = BooleanBuilder::with_capacity(rows);
-        for i in 0..rows {
-            // Constants are borrowed, column values read per row.
-            let (row_p, row_q);
-            let p = match &ca {
-                Some(c) => c.as_ref(),
-                None => {
-                    row_p = settle(name, 1, i, self.on_invalid, a.get(i))?;
-                    row_p.as_ref()
-                }
-            };
-            let q = match &cb {
-                Some(c) => c.as_ref(),
-                None => {
-                    row_q = settle(name, 2, i, self.on_invalid, b.get(i))?;
-                    row_q.as_ref()
-                }
-            };
-            match (p, q) {
-                (Some(p), Some(q)) => {
-                    out.append_value(p.bounding_box().overlaps(&q.bounding_box()) && Barba.intersects(p, q))
-                }
-                _ => out.append_null(),
+        let out = intersects_rows(
+            self.name(),
+            self.on_invalid,
+            &args.args[1],
+            &args.args[2],
+            Some(&gate),
+            args.number_rows,
+        )?;
+        // Rows the gate closed are false, not null.
+        let array = out.to_array(args.number_rows)?;
+        let array = array.as_boolean();
+        let mut fixed = BooleanBuilder::with_capacity(array.len());
+        for i in 0..array.len() {
+            let open = gate.is_valid(i) && gate.value(i);
+            if !open {
+                fixed.append_value(false);
+            } else if array.is_valid(i) {
+                fixed.append_value(array.value(i));
+            } else {
+                fixed.append_null();
             }
         }
-        let array: ArrayRef = Arc::new(out.finish());
-        if all_scalar {
-            return Ok(ColumnarValue::Scalar(ScalarValue::try_from_array(&array, 0)?));
-        }
-        Ok(ColumnarValue::Array(array))
+        Ok(ColumnarValue::Array(Arc::new(fixed.finish())))
     }
+}
+
+/// The rows of `polysect_intersects(a, b)`; with a `gate`, rows where it is not true are
+/// null and their values are not read.
+fn intersects_rows(
+    name: &str,
+    on_invalid: OnInvalid,
+    arg_a: &ColumnarValue,
+    arg_b: &ColumnarValue,
+    gate: Option<&datafusion::arrow::array::BooleanArray>,
+    number_rows: usize,
+) -> Result<ColumnarValue> {
+    let (a, b) = (Wkb::new(name, arg_a)?, Wkb::new(name, arg_b)?);
+    // Constants are settled once, so that an invalid one is reported even for an
+    // empty batch and is not re-reported per row.
+    let constant = |w: &Wkb, arg| match w {
+        Wkb::Constant(c) => settle(name, arg, 0, on_invalid, c.clone()).map(Some),
+        _ => Ok(None),
+    };
+    let (ca, cb) = (constant(&a, 1)?, constant(&b, 2)?);
+    let all_scalar = gate.is_none()
+        && matches!(arg_a, ColumnarValue::Scalar(_))
+        && matches!(arg_b, ColumnarValue::Scalar(_));
+    let rows = if all_scalar { 1 } else { number_rows };
+    let mut out = BooleanBuilder::with_capacity(rows);
+    for i in 0..rows {
+        if gate.is_some_and(|g| !(g.is_valid(i) && g.value(i))) {
+            out.append_null();
+            continue;
+        }
+        // Constants are borrowed, column values read per row.
+        let (row_p, row_q);
+        let p = match &ca {
+            Some(c) => c.as_ref(),
+            None => {
+                row_p = settle(name, 1, i, on_invalid, a.get(i))?;
+                row_p.as_ref()
+            }
+        };
+        let q = match &cb {
+            Some(c) => c.as_ref(),
+            None => {
+                row_q = settle(name, 2, i, on_invalid, b.get(i))?;
+                row_q.as_ref()
+            }
+        };
+        match (p, q) {
+            (Some(p), Some(q)) => {
+                out.append_value(p.bounding_box().overlaps(&q.bounding_box()) && Barba.intersects(p, q))
+            }
+            _ => out.append_null(),
+        }
+    }
+    let array: ArrayRef = Arc::new(out.finish());
+    if all_scalar {
+        return Ok(ColumnarValue::Scalar(ScalarValue::try_from_array(&array, 0)?));
+    }
+    Ok(ColumnarValue::Array(array))
 }
 
 /// The fields of `polysect_box`'s struct.
