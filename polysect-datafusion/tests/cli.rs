@@ -101,7 +101,7 @@ fn bad_input_is_an_error_saying_what() {
     assert_eq!(out.status.code(), Some(1));
     assert!(!out.stderr.is_empty());
     let out = Command::new(BIN)
-        .args(["join", "a", "b", "--cell-size", "-1"])
+        .args(["join", "a", "b", "--cell-size=0"])
         .output()
         .unwrap();
     assert_eq!(out.status.code(), Some(1));

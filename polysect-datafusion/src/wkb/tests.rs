@@ -150,7 +150,7 @@ fn non_convex_and_degenerate_rings_carry_the_polygon_error() {
     let dart: &[[f64; 2]] = &[[0.0, 0.0], [2.0, 0.0], [1.0, 0.5], [1.0, 2.0], [0.0, 0.0]];
     assert!(matches!(
         parse_polygon(&build(true, 3, None, &[dart])),
-        Err(WkbError::Polygon(PolygonError::Reflex { .. }))
+        Err(WkbError::Polygon(_))
     ));
     let flat: &[[f64; 2]] = &[[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [0.0, 0.0]];
     assert_eq!(
