@@ -39,7 +39,7 @@
 
 use crate::grid::{BoxStats, Grid};
 use crate::udf::{self, OnInvalid};
-use datafusion::arrow::array::{AsArray, RecordBatch};
+use datafusion::arrow::array::{Array, AsArray, RecordBatch};
 use datafusion::arrow::datatypes::{Float64Type, Int64Type};
 use datafusion::common::{Column, Result, exec_err};
 use datafusion::functions::core::expr_fn::{get_field, greatest};

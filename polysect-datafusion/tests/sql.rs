@@ -237,12 +237,12 @@ async fn the_grid_functions_compose_into_a_join_in_sql() {
     let sql = "
         WITH l AS (SELECT id, a AS g, polysect_box(a) AS bx FROM pairs),
              r AS (SELECT id, b AS g, polysect_box(b) AS bx FROM pairs),
-             lc AS (SELECT id, g, bx, unnest(polysect_cells(bx['xmin'], bx['ymin'], bx['xmax'], bx['ymax'], 0.7, 0.0, 0.0)) AS cell FROM l),
-             rc AS (SELECT id, g, bx, unnest(polysect_cells(bx['xmin'], bx['ymin'], bx['xmax'], bx['ymax'], 0.7, 0.0, 0.0)) AS cell FROM r)
+             lc AS (SELECT id, g, bx, unnest(polysect_cells(get_field(bx, 'xmin'), get_field(bx, 'ymin'), get_field(bx, 'xmax'), get_field(bx, 'ymax'), 0.7, 0.0, 0.0)) AS cell FROM l),
+             rc AS (SELECT id, g, bx, unnest(polysect_cells(get_field(bx, 'xmin'), get_field(bx, 'ymin'), get_field(bx, 'xmax'), get_field(bx, 'ymax'), 0.7, 0.0, 0.0)) AS cell FROM r)
         SELECT lc.id AS l, rc.id AS r FROM lc JOIN rc ON lc.cell = rc.cell
-        WHERE lc.bx['xmin'] <= rc.bx['xmax'] AND rc.bx['xmin'] <= lc.bx['xmax']
-          AND lc.bx['ymin'] <= rc.bx['ymax'] AND rc.bx['ymin'] <= lc.bx['ymax']
-          AND polysect_cell(greatest(lc.bx['xmin'], rc.bx['xmin']), greatest(lc.bx['ymin'], rc.bx['ymin']), 0.7, 0.0, 0.0) = lc.cell
+        WHERE get_field(lc.bx, 'xmin') <= get_field(rc.bx, 'xmax') AND get_field(rc.bx, 'xmin') <= get_field(lc.bx, 'xmax')
+          AND get_field(lc.bx, 'ymin') <= get_field(rc.bx, 'ymax') AND get_field(rc.bx, 'ymin') <= get_field(lc.bx, 'ymax')
+          AND polysect_cell(greatest(get_field(lc.bx, 'xmin'), get_field(rc.bx, 'xmin')), greatest(get_field(lc.bx, 'ymin'), get_field(rc.bx, 'ymin')), 0.7, 0.0, 0.0) = lc.cell
           AND polysect_intersects(lc.g, rc.g)
         ORDER BY l, r";
     let batches = ctx.sql(sql).await.unwrap().collect().await.unwrap();

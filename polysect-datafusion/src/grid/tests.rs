@@ -21,7 +21,7 @@ fn coordinate(rng: &mut SmallRng) -> f64 {
         4 => f64::from_bits(
             rng.random::<u64>() & !(0x7FFu64 << 52) | (u64::from(rng.random_range(0..0x7FEu32)) << 52),
         ),
-        _ => rng.random_range(-1e6..1e6).round(),
+        _ => rng.random_range(-1e6f64..1e6).round(),
     }
 }
 
