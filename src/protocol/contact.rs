@@ -6,8 +6,8 @@
 //! overflows prints as `null`.
 //!
 //! [`contact_with_kernel`] answers pairs that do not meet by
-//! [`distance_with`](crate::contact::distance_with) (no big integers nearly always)
-//! and the others by [`contact_with`](crate::contact::contact_with): the same reply,
+//! [`distance_with`] (no big integers nearly always)
+//! and the others by [`contact_with`]: the same reply,
 //! byte for byte, as [`contact_json`] of the full contact.
 
 use super::check::{convex_pair, one_line, parse_pair};
