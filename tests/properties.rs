@@ -151,7 +151,7 @@ proptest! {
         }
     }
 
-    /// A scene holding the two answers as the oracle does, and keeps answering so after
+    /// A scene holding the two polygons answers as the oracle does, and still does after
     /// the second polygon is moved back by its offset (a translation that is exact on
     /// the lattice, or rounds once after a nudge).
     #[test]
