@@ -8,7 +8,8 @@
 //! pairs. Every answer is checked against the linear test's.
 
 use polysect::generate::{self, Family, Relation};
-use polysect::intersect::{ArrayIntersection, ClmWithFactor, ClmWorkspace, Linear, LinkedIntersection};
+use polysect::intersect::LinkedEngine;
+use polysect::intersect::{ArrayIntersection, ClmWithFactor, ClmWorkspace, Linear};
 use polysect::{Exact, LinkedPolygon};
 use rand::SeedableRng;
 use rand::rngs::SmallRng;

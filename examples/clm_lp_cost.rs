@@ -9,6 +9,7 @@
 //! queries (the setup): docs/results.md, "The LP's cost per constraint".
 
 use polysect::generate::{self, Family, Relation};
+use polysect::intersect::LinkedEngine;
 use polysect::intersect::{ArrayIntersection, ClmVariant, ClmWorkspace, Counts, Linear, LinkedIntersection};
 use polysect::{Exact, LinkedPolygon};
 use rand::SeedableRng;

@@ -59,6 +59,22 @@
 #![warn(missing_docs, clippy::missing_errors_doc, clippy::missing_panics_doc)]
 #![cfg_attr(docsrs, feature(doc_cfg))]
 
+/// Declares an item `pub` with the `instrument` feature and `pub(crate)` without it.
+/// The research instruments (probes, the engines' probed entry points, work counts)
+/// are part of the crate's own machinery, which every query runs through, but they are
+/// an API only for experiments (docs/design.md, "Features"); this keeps one
+/// declaration for both builds.
+macro_rules! instrument_pub {
+    ($(#[$attr:meta])* $kind:ident $($rest:tt)*) => {
+        #[cfg(feature = "instrument")]
+        $(#[$attr])*
+        pub $kind $($rest)*
+        #[cfg(not(feature = "instrument"))]
+        $(#[$attr])*
+        pub(crate) $kind $($rest)*
+    };
+}
+
 #[cfg(all(feature = "serde", feature = "protocol"))]
 pub mod certificate_json;
 pub mod contact;
@@ -70,10 +86,21 @@ pub mod experiments;
 #[cfg(feature = "protocol")]
 #[doc(hidden)]
 pub mod fuzzing;
+// Seeded generators: an API with the `generate` feature (the tool, the tests and the
+// benches turn it on); without it, the crate's own calibration still draws from them.
+#[cfg(feature = "generate")]
 pub mod generate;
+#[cfg(not(feature = "generate"))]
+#[allow(dead_code)]
+mod generate;
 pub mod intersect;
 pub mod kernel;
+// The Seidel LP behind `Clm`: an API for experiments only (`instrument`).
+#[cfg(feature = "instrument")]
 pub mod lp;
+#[cfg(not(feature = "instrument"))]
+#[allow(dead_code)]
+mod lp;
 pub mod polygon;
 #[cfg(feature = "protocol")]
 pub mod protocol;

@@ -17,8 +17,9 @@
 use polysect::generate::{self, Family, Relation, map_pair};
 use polysect::intersect::{
     Algorithm, ArrayIntersection, Barba, Certificate, ChazelleDobkin, Clm, ClmWorkspace, Convert,
-    ConvertWorkspace, Dobkin, Fallback, Linear, LinkedIntersection, Probe, Which, verify, verify_linked,
+    ConvertWorkspace, Dobkin, Fallback, Linear, Probe, Which, verify, verify_linked,
 };
+use polysect::intersect::{ArrayEngine, LinkedEngine};
 use polysect::{ConvexPolygon, Exact, Fast, Kernel, LinkedPolygon, Orientation, Point};
 use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};

@@ -5,6 +5,7 @@
 //! and printed (a measurement, not a failure).
 
 use polysect::generate::{self, Family, Relation, map_pair, regular_polygon};
+use polysect::intersect::ArrayEngine;
 use polysect::intersect::{ArrayIntersection, ChazelleDobkin, Iterations, Linear, brute_force};
 use polysect::{ConvexPolygon, Exact, Fast, Point};
 use rand::rngs::SmallRng;

@@ -5,6 +5,7 @@
 //! fast-kernel disagreements are counted and printed.
 
 use polysect::generate::{Family, Relation, map_pair, pair, regular_polygon};
+use polysect::intersect::LinkedEngine;
 use polysect::intersect::{
     Algorithm, ArrayIntersection, Certificate, Clm, ClmVariant, ClmWithFactor, ClmWorkspace, Convert,
     ConvertWorkspace, Counts, Iterations, Linear, LinkedIntersection, LpOrder, Sampling, verify_linked,

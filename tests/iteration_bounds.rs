@@ -16,8 +16,8 @@ use polysect::experiments::thesis::iteration_bound;
 use polysect::generate::{self, Family, Relation};
 use polysect::intersect::{
     Algorithm, ArrayIntersection, Barba, ChazelleDobkin, Clm, ClmWorkspace, Counts, Dobkin, Linear,
-    LinkedIntersection,
 };
+use polysect::intersect::{ArrayEngine, LinkedEngine};
 use polysect::{Exact, LinkedPolygon, Point};
 use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};

@@ -12,6 +12,7 @@
 
 use polysect::experiments::thesis::iteration_bound;
 use polysect::generate::{self, Family, Relation};
+use polysect::intersect::ArrayEngine;
 use polysect::intersect::{
     Algorithm, ArrayIntersection, Barba, BarbaVariant, Dobkin, DobkinVariant, Iterations, Linear, verify,
 };
@@ -42,7 +43,7 @@ fn check_one<A: ArrayIntersection>(alg: &A, name: &str, p: &ConvexPolygon, q: &C
     assert_eq!(verify(p, q, &c), Ok(()), "{name} certificate on {what}: {c:?}");
 }
 
-fn count<A: ArrayIntersection>(alg: &A, p: &ConvexPolygon, q: &ConvexPolygon) -> u64 {
+fn count<A: ArrayEngine>(alg: &A, p: &ConvexPolygon, q: &ConvexPolygon) -> u64 {
     let mut it = Iterations::default();
     alg.intersects_probed(Exact, p, q, &mut it);
     it.0

@@ -3,8 +3,9 @@
 
 use crate::intersect::{
     Algorithm, ArrayIntersection, Barba, ChazelleDobkin, Clm, ClmVariant, ClmWithFactor, ClmWorkspace,
-    Convert, ConvertWorkspace, Counts, Dobkin, Iterations, Linear, LinkedIntersection, Probe,
+    Convert, ConvertWorkspace, Counts, Dobkin, Iterations, Linear, Probe,
 };
+use crate::intersect::{ArrayEngine, LinkedEngine};
 use crate::kernel::{Exact, Fast, Kernel, Precision};
 use crate::polygon::{ConvexPolygon, LinkedPolygon};
 use rand::SeedableRng;

@@ -46,6 +46,7 @@ use super::measure::median;
 use super::plot::{self, Chart, Series};
 use super::{Csv, PreparedPair, Report, ns};
 use crate::generate::{self, Family, Relation};
+use crate::intersect::ArrayEngine;
 use crate::intersect::{
     Algorithm, ArrayIntersection, Barba, ChazelleDobkin, Counts, CountsSummary, Dobkin, Linear, Probe,
 };

@@ -3,6 +3,10 @@
 //! calls' no-op probe never reads it; with the `instrument` feature the trace recorder
 //! (`Tracer`) turns these reports into a step-by-step trace.
 
+// Only the trace recorder reads these reports; without `instrument` they are built
+// for the unit probe, which ignores them (and the optimizer removes them).
+#![cfg_attr(not(feature = "instrument"), allow(dead_code))]
+
 use crate::kernel::Point;
 
 /// `len` consecutive vertices of a polygon from array index `start`, wrapping past the

@@ -33,6 +33,7 @@
 //! Under an inconsistent kernel ([`Fast`](crate::Fast) near degeneracies) each pointer
 //! advance is capped at m steps, so the test always terminates.
 
+use super::engine::{ArrayEngine, array_entry_points};
 use super::{ArrayIntersection, Certificate, Derivation, Probe, Which};
 use crate::kernel::{Kernel, Orientation, Point, segments_intersect};
 use crate::polygon::ConvexPolygon;
@@ -54,6 +55,10 @@ pub struct Linear;
 impl ArrayIntersection for Linear {
     const NAME: &'static str = "linear";
 
+    array_entry_points!(all);
+}
+
+impl ArrayEngine for Linear {
     fn intersects_probed<K: Kernel, P: Probe>(
         &self,
         k: K,

@@ -26,6 +26,7 @@
 //! an inconsistent kernel each pointer advance is capped at m steps, so the test always
 //! terminates.
 
+use super::engine::{LinkedEngine, linked_entry_points};
 use super::linked::LinkedIntersection;
 use super::{Certificate, Derivation, Probe, Which};
 use crate::kernel::{Kernel, Orientation};
@@ -51,6 +52,10 @@ impl LinkedIntersection for LinearLinked {
     const NAME: &'static str = "linear-linked";
     type Workspace = ();
 
+    linked_entry_points!();
+}
+
+impl LinkedEngine for LinearLinked {
     #[inline]
     fn intersects_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
         &self,

@@ -35,9 +35,10 @@
 //! Whatever kernel the traced call uses; the marks are the input's points, unchanged.
 
 use super::{
-    Algorithm, ArrayIntersection, Barba, Certificate, ChazelleDobkin, Clm, Convert, Dobkin, Fallback, Kept,
-    Linear, LinkedIntersection, Probe, Span, Which, fresh_rng,
+    Algorithm, Barba, Certificate, ChazelleDobkin, Clm, Convert, Dobkin, Fallback, Kept, Linear, Probe, Span,
+    Which, fresh_rng,
 };
+use crate::intersect::{ArrayEngine, LinkedEngine};
 use crate::kernel::{Kernel, Point};
 use crate::lp::{ArenaPoints, LpError, Separation};
 use crate::polygon::{ConvexPolygon, LinkedPolygon};

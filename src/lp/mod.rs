@@ -79,6 +79,9 @@ mod chains;
 mod seidel;
 
 pub use chains::separate_chains;
+// `PointSet` is an API with `instrument` (the crate itself names only its
+// implementations).
+#[cfg_attr(not(feature = "instrument"), allow(unused_imports))]
 pub use seidel::{
     ArenaPoints, Bitangent, LpError, LpWorkspace, PointSet, Separation, WitnessPoint, separating_line,
 };

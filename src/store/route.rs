@@ -2,6 +2,7 @@
 //! tests behind them. This file knows polygons and intersection algorithms, never the
 //! scene; both the cost model (which times these tests) and the scene use it.
 
+use crate::intersect::LinkedEngine;
 use crate::intersect::{
     ArrayIntersection, Barba, Certificate, Clm, ClmWorkspace, Linear, LinearLinked, LinkedIntersection, Which,
 };

@@ -129,6 +129,7 @@ pub(crate) use witness::meeting_certificate;
 #[cfg(test)]
 mod tests;
 
+use super::engine::{ArrayEngine, array_entry_points};
 use super::{ArrayIntersection, Certificate, Derivation, Probe};
 use crate::kernel::Kernel;
 use crate::polygon::ConvexPolygon;
@@ -207,6 +208,15 @@ fn known<V: Variant>(pr: Range) -> Range {
 impl ArrayIntersection for Barba {
     const NAME: &'static str = "barba";
 
+    array_entry_points!(plain);
+
+    #[inline]
+    fn certified_with<K: Kernel>(&self, k: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Certificate {
+        Ours::default().certified_with(k, p, q)
+    }
+}
+
+impl ArrayEngine for Barba {
     #[inline]
     fn intersects_probed<K: Kernel, P: Probe>(
         &self,
@@ -229,16 +239,23 @@ impl ArrayIntersection for Barba {
     ) -> Derivation {
         Ours::default().derive_probed(k, p, q, probe)
     }
-
-    #[inline]
-    fn certified_with<K: Kernel>(&self, k: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Certificate {
-        Ours::default().certified_with(k, p, q)
-    }
 }
 
 impl<const T: bool, const S: usize, const E: bool> ArrayIntersection for BarbaVariant<T, S, E> {
     const NAME: &'static str = "barba-variant";
 
+    array_entry_points!(plain);
+
+    /// [`certified_probed`](ArrayIntersection::certified_probed) without a probe, from
+    /// a run that builds the certificate where it ends (the `Certify` mode): the same
+    /// certificate, written once instead of passed up as a [`Derivation`] and moved.
+    fn certified_with<K: Kernel>(&self, k: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Certificate {
+        let k = k.within([p.bounding_box(), q.bounding_box()]);
+        run::<K::Within, (), Certify, Self>(k, p.vertices(), q.vertices(), &mut ())
+    }
+}
+
+impl<const T: bool, const S: usize, const E: bool> ArrayEngine for BarbaVariant<T, S, E> {
     fn intersects_probed<K: Kernel, P: Probe>(
         &self,
         k: K,
@@ -260,13 +277,5 @@ impl<const T: bool, const S: usize, const E: bool> ArrayIntersection for BarbaVa
     ) -> Derivation {
         let k = k.within([p.bounding_box(), q.bounding_box()]);
         run::<K::Within, P, Derive, Self>(k, p.vertices(), q.vertices(), probe)
-    }
-
-    /// [`certified_probed`](ArrayIntersection::certified_probed) without a probe, from
-    /// a run that builds the certificate where it ends (the `Certify` mode): the same
-    /// certificate, written once instead of passed up as a [`Derivation`] and moved.
-    fn certified_with<K: Kernel>(&self, k: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Certificate {
-        let k = k.within([p.bounding_box(), q.bounding_box()]);
-        run::<K::Within, (), Certify, Self>(k, p.vertices(), q.vertices(), &mut ())
     }
 }

@@ -116,6 +116,7 @@ mod witness;
 mod tests;
 
 use super::certificate::{from_faces, from_support, resolve_chords};
+use super::engine::{ArrayEngine, array_entry_points};
 use super::{ArrayIntersection, Certificate, Derivation, Probe, Which};
 use crate::kernel::Kernel;
 use crate::polygon::ConvexPolygon;
@@ -139,6 +140,10 @@ pub struct ChazelleDobkin;
 impl ArrayIntersection for ChazelleDobkin {
     const NAME: &'static str = "chazelle-dobkin";
 
+    array_entry_points!(all);
+}
+
+impl ArrayEngine for ChazelleDobkin {
     fn intersects_probed<K: Kernel, P: Probe>(
         &self,
         k: K,

@@ -7,8 +7,9 @@ use super::witness::{
     witness_certificate,
 };
 use super::{ClmWorkspace, Set};
+use crate::intersect::ArrayEngine;
 use crate::intersect::certificate::{from_support, supports_left, supports_right};
-use crate::intersect::{ArrayIntersection, Barba, Certificate, Derivation, Which};
+use crate::intersect::{Barba, Certificate, Derivation, Which};
 use crate::kernel::{Kernel, Orientation, Point};
 use crate::lp::WitnessPoint;
 use crate::polygon::{ConvexPolygon, LinkedPolygon};

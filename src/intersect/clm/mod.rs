@@ -182,6 +182,7 @@ mod sampling;
 mod walks;
 mod witness;
 
+use super::engine::{LinkedEngine, linked_entry_points};
 use super::linked::LinkedIntersection;
 use super::{Derivation, Probe, Which};
 use crate::kernel::{Kernel, Point};
@@ -440,6 +441,10 @@ impl LinkedIntersection for Clm {
     const NAME: &'static str = "clm";
     type Workspace = ClmWorkspace;
 
+    linked_entry_points!();
+}
+
+impl LinkedEngine for Clm {
     #[inline]
     fn intersects_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
         &self,
@@ -471,6 +476,10 @@ impl LinkedIntersection for ClmWithFactor {
     const NAME: &'static str = "clm";
     type Workspace = ClmWorkspace;
 
+    linked_entry_points!();
+}
+
+impl LinkedEngine for ClmWithFactor {
     #[inline]
     fn intersects_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
         &self,
@@ -510,6 +519,10 @@ impl LinkedIntersection for ClmVariant {
     const NAME: &'static str = "clm";
     type Workspace = ClmWorkspace;
 
+    linked_entry_points!();
+}
+
+impl LinkedEngine for ClmVariant {
     fn intersects_in<K: Kernel, R: Rng + ?Sized, P: Probe>(
         &self,
         k: K,

@@ -3,11 +3,12 @@ use super::sampling::{below, fisher_yates, shuffle};
 use super::{Clm, ClmWorkspace};
 use crate::LinkedPolygon;
 use crate::generate::{self, Family, Relation, pair};
+use crate::intersect::LinkedEngine;
 use crate::intersect::clm::witness::{
     Cone, Radon, WitnessVertex, cone_witness, end_in_triangle, in_triangles, resolve_linked_chords,
     straddle_certificate, witness_certificate,
 };
-use crate::intersect::{Certificate, Derivation, LinkedIntersection, Which, verify_linked};
+use crate::intersect::{Certificate, Derivation, Which, verify_linked};
 use crate::kernel::{Exact, Fast, Point, SegmentContact, segment_contact};
 use crate::lp::WitnessPoint;
 use rand::rngs::SmallRng;

@@ -104,6 +104,7 @@ pub(crate) use witness::separating_certificate;
 #[cfg(test)]
 mod tests;
 
+use super::engine::{ArrayEngine, array_entry_points};
 use super::{ArrayIntersection, Derivation, Probe};
 use crate::kernel::Kernel;
 use crate::polygon::ConvexPolygon;
@@ -157,6 +158,10 @@ type Ours = DobkinVariant<false>;
 impl ArrayIntersection for Dobkin {
     const NAME: &'static str = "dobkin";
 
+    array_entry_points!(all);
+}
+
+impl ArrayEngine for Dobkin {
     #[inline]
     fn intersects_probed<K: Kernel, P: Probe>(
         &self,
@@ -184,6 +189,10 @@ impl ArrayIntersection for Dobkin {
 impl<const LEMMA_BY_LEMMA: bool> ArrayIntersection for DobkinVariant<LEMMA_BY_LEMMA> {
     const NAME: &'static str = "dobkin-variant";
 
+    array_entry_points!(all);
+}
+
+impl<const LEMMA_BY_LEMMA: bool> ArrayEngine for DobkinVariant<LEMMA_BY_LEMMA> {
     fn intersects_probed<K: Kernel, P: Probe>(
         &self,
         k: K,
