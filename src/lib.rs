@@ -116,7 +116,7 @@ pub mod store;
 #[cfg(doctest)]
 pub struct ReadmeDoctests;
 
-pub use kernel::{BoundingBox, Exact, ExactWithin, Fast, Kernel, Orientation, Point, Precision, Sign};
+pub use kernel::{BoundingBox, Exact, Fast, Kernel, Orientation, Point, Precision, Sign};
 
 /// The `rand` crate (0.9) whose types appear in this crate's signatures: sampled
 /// queries take any `R: rand::Rng`, and [`LinkedPolygon::from_convex_shuffled`] a

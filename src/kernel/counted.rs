@@ -9,7 +9,7 @@
 //! Exactly the wrapped kernel's answers: every call is forwarded unchanged, and the
 //! kernel of [`within`](Kernel::within) is the wrapped kernel's, counted too.
 
-use super::{BoundingBox, DirectedLine, Kernel, Orientation, Point, Polynomial, Sign, sealed};
+use super::{BoundingBox, DirectedLine, Kernel, Orientation, Point, Polynomial, Sign};
 use std::cell::Cell;
 
 thread_local! {
@@ -49,11 +49,31 @@ fn count() {
     PREDICATES.with(|n| n.set(n.get() + 1));
 }
 
-impl<K: Kernel> sealed::Sealed for Counted<K> {}
-
 impl<K: Kernel> Kernel for Counted<K> {
     const NAME: &'static str = K::NAME;
+
+    #[inline]
+    fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
+        count();
+        self.0.orient(a, b, c)
+    }
+
+    #[inline]
+    fn cross(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
+        count();
+        self.0.cross(a, b, c, d)
+    }
+
+    #[inline]
+    fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
+        count();
+        self.0.dot(a, b, c, d)
+    }
+}
+
+impl<K: Kernel> crate::kernel::sealed::Predicates for Counted<K> {
     const EXACT: bool = K::EXACT;
+
     type Within = Counted<K::Within>;
 
     #[inline]
@@ -64,12 +84,6 @@ impl<K: Kernel> Kernel for Counted<K> {
     #[inline]
     fn within_differences(self, w: f64) -> Self::Within {
         Counted(self.0.within_differences(w))
-    }
-
-    #[inline]
-    fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
-        count();
-        self.0.orient(a, b, c)
     }
 
     #[inline]
@@ -85,21 +99,9 @@ impl<K: Kernel> Kernel for Counted<K> {
     }
 
     #[inline]
-    fn cross(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
-        count();
-        self.0.cross(a, b, c, d)
-    }
-
-    #[inline]
     fn cross_of_short_edges(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
         count();
         self.0.cross_of_short_edges(a, b, c, d)
-    }
-
-    #[inline]
-    fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
-        count();
-        self.0.dot(a, b, c, d)
     }
 
     #[inline]
@@ -123,6 +125,7 @@ impl<K: Kernel> Kernel for Counted<K> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::kernel::sealed::Predicates as _;
     use crate::kernel::{Exact, Fast};
 
     #[test]

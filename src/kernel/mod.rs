@@ -26,7 +26,7 @@
 mod bbox;
 #[cfg(feature = "instrument")]
 mod counted;
-pub mod exact;
+pub(crate) mod exact;
 #[cfg(feature = "serde")]
 mod point_serde;
 mod pose;
@@ -36,7 +36,7 @@ mod segment;
 pub use bbox::BoundingBox;
 #[cfg(feature = "instrument")]
 pub use counted::Counted;
-pub use exact::{Exact, ExactWithin};
+pub use exact::Exact;
 pub use pose::{Pose, PoseError};
 pub use rational::Rational;
 pub use segment::{SegmentContact, point_on_segment, segment_contact, segments_intersect};
@@ -213,7 +213,7 @@ impl From<Sign> for Orientation {
 /// A number type a predicate polynomial can be evaluated in: plain `f64`
 /// (the fast kernel), a rounding-safe interval (the exact kernel's filter) or an
 /// exact dyadic big number (the exact kernel's fallback).
-pub trait Ring: Clone + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Sized {
+pub(crate) trait Ring: Clone + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Sized {
     /// The exact value of a finite `f64` (or its plain copy, for `f64`).
     fn from_f64(x: f64) -> Self;
     /// The sign if it is certain, `None` when this representation cannot tell.
@@ -236,18 +236,185 @@ impl Ring for f64 {
 /// Write the polynomial once, generic over [`Ring`]; each kernel chooses how to
 /// evaluate it. Only `+`, `-` and `*` of input coordinates are allowed, so the exact
 /// kernel can always evaluate it exactly.
-pub trait Polynomial {
+pub(crate) trait Polynomial {
     /// The polynomial's value, evaluated in the number type `R`.
     fn eval<R: Ring>(&self) -> R;
 }
 
-/// Kernels are the crate's own ([`Fast`], [`Exact`], [`ExactWithin`], and with the
+/// Kernels are the crate's own ([`Fast`], [`Exact`], their bounded forms, and with the
 /// `instrument` feature `Counted`): the algorithms rely on contracts a predicate cannot
-/// state in its signature (what [`Kernel::within`] may assume, which calls
-/// [`Kernel::EXACT`] lets them skip), so the trait is sealed.
+/// state in its signature (what [`Predicates::within`] may assume, which calls
+/// [`Predicates::EXACT`] lets them skip), so the predicates beyond [`Kernel`]'s live in
+/// this crate-private supertrait, which seals it.
 pub(crate) mod sealed {
-    /// Implemented by the crate's kernels only.
-    pub trait Sealed {}
+    use super::{BoundingBox, CrossProductsPoly, DirectedLine, Kernel, Orientation, Point, Polynomial, Sign};
+
+    /// The predicates and contracts the algorithms use beyond [`Kernel`]'s.
+    pub(crate) trait Predicates: Copy + Sized {
+        /// Whether every predicate is exact, so that answers never contradict each other:
+        /// an algorithm may then skip tests that only re-check earlier answers (the LP's
+        /// final certification). `false` unless a kernel says so.
+        const EXACT: bool = false;
+
+        /// The kernel [`within`](Kernel::within) returns.
+        type Within: Kernel;
+
+        /// The same predicates for one query whose predicates only ever see points inside
+        /// the union of the bounding boxes `boxes` (each `(min, max)`): the exact kernel
+        /// turns the boxes into a *semi-static* filter, one error bound per query for
+        /// every call, so that a certified sign costs one comparison more than the
+        /// [`Fast`] kernel's, and nothing when the answer is certain. Fast returns itself.
+        ///
+        /// A predicate asked of the returned kernel on a point outside the boxes may
+        /// answer wrongly: callers pass the boxes of every polygon whose vertices the
+        /// query reads, and ask only about those vertices.
+        ///
+        /// ```
+        /// use polysect::{ConvexPolygon, Exact, Kernel, Orientation, Point};
+        /// let p = ConvexPolygon::new([[0.0, 0.0], [4.0, 0.0], [0.0, 3.0]])?;
+        /// let k = Exact.within([p.bounding_box(), p.bounding_box()]);
+        /// let v = p.vertices();
+        /// assert_eq!(k.orient(v[0], v[1], v[2]), Orientation::Ccw);
+        /// # Ok::<(), polysect::PolygonError>(())
+        /// ```
+        fn within(self, boxes: [BoundingBox; 2]) -> Self::Within;
+
+        /// The same predicates for calls whose coordinate differences, as computed in
+        /// `f64`, are all at most `w` in magnitude: for `cross(a, b, c, d)` and
+        /// `dot(a, b, c, d)` the differences of `b − a` and `d − c`, for `orient(a, b, c)`
+        /// those of any two of the points, for [`cross_products_sign`](Kernel::cross_products_sign)
+        /// those of every factor's pairs. The cross product of two edges of polygons whose
+        /// [`ConvexPolygon::edge_extent`](crate::ConvexPolygon::edge_extent) is at most `w`
+        /// is such a call, however far apart the edges lie: [`ExactWithin`]'s semi-static
+        /// bound scaled to `w` decides such calls where a bound scaled to the boxes, much
+        /// larger when the edges are short, would not. A call outside this contract may
+        /// answer wrongly.
+        ///
+        /// The default is [`within`](Kernel::within) of a box of side `w`, which is right
+        /// for kernels whose `within` relies only on the differences of points in the
+        /// boxes being at most the boxes' side (both kernels of this crate; [`Fast`]
+        /// returns itself).
+        ///
+        /// ```
+        /// use polysect::{ConvexPolygon, Exact, Kernel, Orientation};
+        /// let p = ConvexPolygon::new([[0.0, 0.0], [4.0, 0.0], [4.0, 1.0], [0.0, 3.0]])?;
+        /// let k = Exact.within_differences(p.edge_extent());
+        /// let v = p.vertices();
+        /// // Edge 0 against edge 2, both edges of p.
+        /// assert_eq!(k.cross(v[0], v[1], v[2], v[3]), Orientation::Ccw);
+        /// # Ok::<(), polysect::PolygonError>(())
+        /// ```
+        #[inline]
+        fn within_differences(self, w: f64) -> Self::Within {
+            let side = BoundingBox::new(Point::new(0.0, 0.0), Point::new(w, w));
+            self.within([side, side])
+        }
+
+        /// `orient(*a, *b, *c)` for points a caller reads from memory (a polygon's
+        /// vertices in a binary search): the same answer. [`ExactWithin`] hands the
+        /// references, not the values, to its out-of-line path, so the caller need not keep
+        /// a copy of each loaded point beside the differences it computes from it (with
+        /// two-operand SSE instructions, one register copy per point and call). The default
+        /// calls [`orient`](Kernel::orient).
+        #[inline]
+        fn orient_of(self, a: &Point, b: &Point, c: &Point) -> Orientation
+        where
+            Self: Kernel,
+        {
+            self.orient(*a, *b, *c)
+        }
+
+        /// `orient(line.from(), line.to(), c)`, for many points `c` against one line: a
+        /// kernel may use the line's direction, computed once by [`DirectedLine::new`],
+        /// instead of computing two differences per call. The answer is the same
+        /// orientation (exact under [`Exact`] and [`ExactWithin`]); the default calls
+        /// [`orient`](Kernel::orient).
+        ///
+        /// ```
+        /// use polysect::{Exact, Kernel, Orientation, Point};
+        /// use polysect::kernel::DirectedLine;
+        /// let line = DirectedLine::new(Point::new(0.0, 0.0), Point::new(2.0, 1.0));
+        /// assert_eq!(Exact.orient_line(&line, Point::new(0.0, 1.0)), Orientation::Ccw);
+        /// assert_eq!(Exact.orient_line(&line, Point::new(4.0, 2.0)), Orientation::Collinear);
+        /// ```
+        #[inline]
+        fn orient_line(self, line: &DirectedLine, c: Point) -> Orientation
+        where
+            Self: Kernel,
+        {
+            self.orient(line.from, line.to, c)
+        }
+
+        /// The sign of a predicate polynomial.
+        fn sign<P: Polynomial>(self, poly: &P) -> Sign;
+
+        /// [`cross`](Kernel::cross) for call sites whose directions are often short next to
+        /// the boxes of a [`within`](Kernel::within) kernel: the same answer, possibly
+        /// decided differently. [`ExactWithin`]'s bound is scaled to the
+        /// boxes, so it seldom decides the cross product of two short edges of a large
+        /// polygon (Dobkin's and Barba's pruning tests at large n); it overrides this to try
+        /// [`Exact`]'s static filter inline before going out of line, which would cost every
+        /// other call registers and code. The default is `cross`.
+        #[inline]
+        fn cross_of_short_edges(self, a: Point, b: Point, c: Point, d: Point) -> Orientation
+        where
+            Self: Kernel,
+        {
+            self.cross(a, b, c, d)
+        }
+
+        /// The sign of `C₀·C₁ + C₂·C₃`, a polynomial of degree 4, where each
+        /// `Cᵢ = (bᵢ − aᵢ) × (dᵢ − cᵢ)` is the cross product of the directions of the point
+        /// pairs in `factors[i] = [aᵢ, bᵢ, cᵢ, dᵢ]`. [`line_meet_side`] and the slope
+        /// comparison of Chazelle–Dobkin are of this form. A method so that a kernel can
+        /// add a static filter.
+        #[inline]
+        fn cross_products_sign(self, factors: [[Point; 4]; 4]) -> Sign {
+            self.sign(&CrossProductsPoly(factors))
+        }
+
+        /// [`cross_products_sign`](Kernel::cross_products_sign) for call sites whose
+        /// factors each cross a short direction with a long one, the short one first: in
+        /// every `factors[i] = [aᵢ, bᵢ, cᵢ, dᵢ]`, `bᵢ − aᵢ` is an edge of a large polygon and
+        /// `dᵢ − cᵢ` may span the boxes of a [`within`](Kernel::within) kernel (the slope
+        /// comparison of Chazelle–Dobkin). The same answer, possibly decided differently:
+        /// [`ExactWithin`] scales its bound to the lengths of the short directions, which
+        /// decides at large n the calls its box-sized bound leaves open. The default is
+        /// `cross_products_sign`.
+        #[inline]
+        fn cross_products_sign_of_short_edges(self, factors: [[Point; 4]; 4]) -> Sign {
+            self.cross_products_sign(factors)
+        }
+
+        /// The same kernel for a query whose degree-4 calls are all
+        /// [`cross_products_sign_of_short_edges`](Kernel::cross_products_sign_of_short_edges)
+        /// calls (or [`cross_products_sign`](Kernel::cross_products_sign) calls of that
+        /// form) whose short directions `bᵢ − aᵢ` have computed coordinate differences at
+        /// most `e` in magnitude (edges of polygons whose
+        /// [`ConvexPolygon::edge_extent`](crate::ConvexPolygon::edge_extent) is at most `e()`),
+        /// the long ones staying within this kernel's contract. [`ExactWithin`] then
+        /// decides those calls with one per-query bound scaled to `e()`, the comparisons the
+        /// fast kernel makes, instead of computing a bound per call. A degree-4 call
+        /// outside this contract may answer wrongly; the other predicates are unchanged.
+        /// `e` is called only by a kernel that uses it. The default returns the kernel
+        /// itself.
+        ///
+        /// ```
+        /// use polysect::{ConvexPolygon, Exact, Kernel, Sign};
+        /// let p = ConvexPolygon::new([[0.0, 0.0], [4.0, 0.0], [4.0, 1.0], [0.0, 3.0]])?;
+        /// let v = p.vertices();
+        /// let k = Exact.within([p.bounding_box(), p.bounding_box()]).within_short_edges(|| p.edge_extent());
+        /// // (v1 − v0) × (v3 − v0) times (v2 − v1) × (v0 − v2), plus 0 × anything.
+        /// let f = [[v[0], v[1], v[0], v[3]], [v[1], v[2], v[2], v[0]], [v[0], v[0], v[1], v[2]], [v[2], v[3], v[0], v[1]]];
+        /// assert_eq!(k.cross_products_sign_of_short_edges(f), Sign::Positive);
+        /// # Ok::<(), polysect::PolygonError>(())
+        /// ```
+        #[inline]
+        fn within_short_edges(self, e: impl FnOnce() -> f64) -> Self {
+            let _ = e;
+            self
+        }
+    }
 }
 
 /// Geometric predicates, answered either quickly ([`Fast`]) or exactly ([`Exact`]).
@@ -259,103 +426,13 @@ pub(crate) mod sealed {
 /// algorithms rely on contracts a signature cannot state, such as what a
 /// [`within`](Kernel::within) kernel may assume). To count the predicates an algorithm
 /// asks, the `instrument` feature has `kernel::Counted`.
-pub trait Kernel: sealed::Sealed + Copy + Clone + Default + fmt::Debug + Send + Sync + 'static {
+#[allow(private_bounds)] // the supertrait seals it: see `sealed`
+pub trait Kernel: sealed::Predicates + Copy + Clone + Default + fmt::Debug + Send + Sync + 'static {
     /// A short name (`"fast"` or `"exact"`).
     const NAME: &'static str;
 
-    /// Whether every predicate is exact, so that answers never contradict each other:
-    /// an algorithm may then skip tests that only re-check earlier answers (the LP's
-    /// final certification). `false` unless a kernel says so.
-    const EXACT: bool = false;
-
-    /// The kernel [`within`](Kernel::within) returns.
-    type Within: Kernel;
-
-    /// The same predicates for one query whose predicates only ever see points inside
-    /// the union of the bounding boxes `boxes` (each `(min, max)`): the exact kernel
-    /// turns the boxes into a *semi-static* filter, one error bound per query for
-    /// every call, so that a certified sign costs one comparison more than the
-    /// [`Fast`] kernel's, and nothing when the answer is certain. Fast returns itself.
-    ///
-    /// A predicate asked of the returned kernel on a point outside the boxes may
-    /// answer wrongly: callers pass the boxes of every polygon whose vertices the
-    /// query reads, and ask only about those vertices.
-    ///
-    /// ```
-    /// use polysect::{ConvexPolygon, Exact, Kernel, Orientation, Point};
-    /// let p = ConvexPolygon::new([[0.0, 0.0], [4.0, 0.0], [0.0, 3.0]])?;
-    /// let k = Exact.within([p.bounding_box(), p.bounding_box()]);
-    /// let v = p.vertices();
-    /// assert_eq!(k.orient(v[0], v[1], v[2]), Orientation::Ccw);
-    /// # Ok::<(), polysect::PolygonError>(())
-    /// ```
-    fn within(self, boxes: [BoundingBox; 2]) -> Self::Within;
-
-    /// The same predicates for calls whose coordinate differences, as computed in
-    /// `f64`, are all at most `w` in magnitude: for `cross(a, b, c, d)` and
-    /// `dot(a, b, c, d)` the differences of `b − a` and `d − c`, for `orient(a, b, c)`
-    /// those of any two of the points, for [`cross_products_sign`](Kernel::cross_products_sign)
-    /// those of every factor's pairs. The cross product of two edges of polygons whose
-    /// [`ConvexPolygon::edge_extent`](crate::ConvexPolygon::edge_extent) is at most `w`
-    /// is such a call, however far apart the edges lie: [`ExactWithin`]'s semi-static
-    /// bound scaled to `w` decides such calls where a bound scaled to the boxes, much
-    /// larger when the edges are short, would not. A call outside this contract may
-    /// answer wrongly.
-    ///
-    /// The default is [`within`](Kernel::within) of a box of side `w`, which is right
-    /// for kernels whose `within` relies only on the differences of points in the
-    /// boxes being at most the boxes' side (both kernels of this crate; [`Fast`]
-    /// returns itself).
-    ///
-    /// ```
-    /// use polysect::{ConvexPolygon, Exact, Kernel, Orientation};
-    /// let p = ConvexPolygon::new([[0.0, 0.0], [4.0, 0.0], [4.0, 1.0], [0.0, 3.0]])?;
-    /// let k = Exact.within_differences(p.edge_extent());
-    /// let v = p.vertices();
-    /// // Edge 0 against edge 2, both edges of p.
-    /// assert_eq!(k.cross(v[0], v[1], v[2], v[3]), Orientation::Ccw);
-    /// # Ok::<(), polysect::PolygonError>(())
-    /// ```
-    #[inline]
-    fn within_differences(self, w: f64) -> Self::Within {
-        let side = BoundingBox::new(Point::new(0.0, 0.0), Point::new(w, w));
-        self.within([side, side])
-    }
-
     /// Orientation of the triple (a, b, c): the sign of (b − a) × (c − a).
     fn orient(self, a: Point, b: Point, c: Point) -> Orientation;
-
-    /// `orient(*a, *b, *c)` for points a caller reads from memory (a polygon's
-    /// vertices in a binary search): the same answer. [`ExactWithin`] hands the
-    /// references, not the values, to its out-of-line path, so the caller need not keep
-    /// a copy of each loaded point beside the differences it computes from it (with
-    /// two-operand SSE instructions, one register copy per point and call). The default
-    /// calls [`orient`](Kernel::orient).
-    #[inline]
-    fn orient_of(self, a: &Point, b: &Point, c: &Point) -> Orientation {
-        self.orient(*a, *b, *c)
-    }
-
-    /// `orient(line.from(), line.to(), c)`, for many points `c` against one line: a
-    /// kernel may use the line's direction, computed once by [`DirectedLine::new`],
-    /// instead of computing two differences per call. The answer is the same
-    /// orientation (exact under [`Exact`] and [`ExactWithin`]); the default calls
-    /// [`orient`](Kernel::orient).
-    ///
-    /// ```
-    /// use polysect::{Exact, Kernel, Orientation, Point};
-    /// use polysect::kernel::DirectedLine;
-    /// let line = DirectedLine::new(Point::new(0.0, 0.0), Point::new(2.0, 1.0));
-    /// assert_eq!(Exact.orient_line(&line, Point::new(0.0, 1.0)), Orientation::Ccw);
-    /// assert_eq!(Exact.orient_line(&line, Point::new(4.0, 2.0)), Orientation::Collinear);
-    /// ```
-    #[inline]
-    fn orient_line(self, line: &DirectedLine, c: Point) -> Orientation {
-        self.orient(line.from, line.to, c)
-    }
-
-    /// The sign of a predicate polynomial.
-    fn sign<P: Polynomial>(self, poly: &P) -> Sign;
 
     /// The sign of the cross product (b − a) × (d − c): `Ccw` when direction d − c
     /// points counter-clockwise from direction b − a, `Collinear` when parallel.
@@ -364,81 +441,17 @@ pub trait Kernel: sealed::Sealed + Copy + Clone + Default + fmt::Debug + Send + 
         self.sign(&CrossPoly(a, b, c, d)).into()
     }
 
-    /// [`cross`](Kernel::cross) for call sites whose directions are often short next to
-    /// the boxes of a [`within`](Kernel::within) kernel: the same answer, possibly
-    /// decided differently. [`ExactWithin`]'s bound is scaled to the
-    /// boxes, so it seldom decides the cross product of two short edges of a large
-    /// polygon (Dobkin's and Barba's pruning tests at large n); it overrides this to try
-    /// [`Exact`]'s static filter inline before going out of line, which would cost every
-    /// other call registers and code. The default is `cross`.
-    #[inline]
-    fn cross_of_short_edges(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
-        self.cross(a, b, c, d)
-    }
-
     /// The sign of the dot product (b − a) · (d − c).
     #[inline]
     fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
         self.sign(&DotPoly(a, b, c, d))
-    }
-
-    /// The sign of `C₀·C₁ + C₂·C₃`, a polynomial of degree 4, where each
-    /// `Cᵢ = (bᵢ − aᵢ) × (dᵢ − cᵢ)` is the cross product of the directions of the point
-    /// pairs in `factors[i] = [aᵢ, bᵢ, cᵢ, dᵢ]`. [`line_meet_side`] and the slope
-    /// comparison of Chazelle–Dobkin are of this form. A method so that a kernel can
-    /// add a static filter.
-    #[inline]
-    fn cross_products_sign(self, factors: [[Point; 4]; 4]) -> Sign {
-        self.sign(&CrossProductsPoly(factors))
-    }
-
-    /// [`cross_products_sign`](Kernel::cross_products_sign) for call sites whose
-    /// factors each cross a short direction with a long one, the short one first: in
-    /// every `factors[i] = [aᵢ, bᵢ, cᵢ, dᵢ]`, `bᵢ − aᵢ` is an edge of a large polygon and
-    /// `dᵢ − cᵢ` may span the boxes of a [`within`](Kernel::within) kernel (the slope
-    /// comparison of Chazelle–Dobkin). The same answer, possibly decided differently:
-    /// [`ExactWithin`] scales its bound to the lengths of the short directions, which
-    /// decides at large n the calls its box-sized bound leaves open. The default is
-    /// `cross_products_sign`.
-    #[inline]
-    fn cross_products_sign_of_short_edges(self, factors: [[Point; 4]; 4]) -> Sign {
-        self.cross_products_sign(factors)
-    }
-
-    /// The same kernel for a query whose degree-4 calls are all
-    /// [`cross_products_sign_of_short_edges`](Kernel::cross_products_sign_of_short_edges)
-    /// calls (or [`cross_products_sign`](Kernel::cross_products_sign) calls of that
-    /// form) whose short directions `bᵢ − aᵢ` have computed coordinate differences at
-    /// most `e` in magnitude (edges of polygons whose
-    /// [`ConvexPolygon::edge_extent`](crate::ConvexPolygon::edge_extent) is at most `e()`),
-    /// the long ones staying within this kernel's contract. [`ExactWithin`] then
-    /// decides those calls with one per-query bound scaled to `e()`, the comparisons the
-    /// fast kernel makes, instead of computing a bound per call. A degree-4 call
-    /// outside this contract may answer wrongly; the other predicates are unchanged.
-    /// `e` is called only by a kernel that uses it. The default returns the kernel
-    /// itself.
-    ///
-    /// ```
-    /// use polysect::{ConvexPolygon, Exact, Kernel, Sign};
-    /// let p = ConvexPolygon::new([[0.0, 0.0], [4.0, 0.0], [4.0, 1.0], [0.0, 3.0]])?;
-    /// let v = p.vertices();
-    /// let k = Exact.within([p.bounding_box(), p.bounding_box()]).within_short_edges(|| p.edge_extent());
-    /// // (v1 − v0) × (v3 − v0) times (v2 − v1) × (v0 − v2), plus 0 × anything.
-    /// let f = [[v[0], v[1], v[0], v[3]], [v[1], v[2], v[2], v[0]], [v[0], v[0], v[1], v[2]], [v[2], v[3], v[0], v[1]]];
-    /// assert_eq!(k.cross_products_sign_of_short_edges(f), Sign::Positive);
-    /// # Ok::<(), polysect::PolygonError>(())
-    /// ```
-    #[inline]
-    fn within_short_edges(self, e: impl FnOnce() -> f64) -> Self {
-        let _ = e;
-        self
     }
 }
 
 /// A directed line through two points with its direction `to − from` (computed once,
 /// in `f64`), for [`Kernel::orient_line`].
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct DirectedLine {
+pub(crate) struct DirectedLine {
     from: Point,
     to: Point,
     /// `(to.x − from.x, to.y − from.y)`, each rounded: the kernels' filters bound the
@@ -533,7 +546,7 @@ impl Polynomial for DotPoly {
 /// [`Kernel::cross_products_sign`]. Exact under [`Exact`].
 /// The lines must not be parallel (`D ≠ 0`); for parallel lines the answer is `Collinear`.
 #[inline(always)]
-pub fn line_meet_side<K: Kernel>(
+pub(crate) fn line_meet_side<K: Kernel>(
     k: K,
     (a, b): (Point, Point),
     (c, d): (Point, Point),
@@ -554,11 +567,28 @@ pub fn line_meet_side<K: Kernel>(
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct ShortEdges<K>(pub(crate) K);
 
-impl<K: Kernel> sealed::Sealed for ShortEdges<K> {}
-
 impl<K: Kernel> Kernel for ShortEdges<K> {
     const NAME: &'static str = K::NAME;
+
+    #[inline]
+    fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
+        self.0.orient(a, b, c)
+    }
+
+    #[inline]
+    fn cross(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
+        self.0.cross_of_short_edges(a, b, c, d)
+    }
+
+    #[inline]
+    fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
+        self.0.dot(a, b, c, d)
+    }
+}
+
+impl<K: Kernel> sealed::Predicates for ShortEdges<K> {
     const EXACT: bool = K::EXACT;
+
     type Within = ShortEdges<K::Within>;
 
     #[inline]
@@ -569,11 +599,6 @@ impl<K: Kernel> Kernel for ShortEdges<K> {
     #[inline]
     fn within_differences(self, w: f64) -> Self::Within {
         ShortEdges(self.0.within_differences(w))
-    }
-
-    #[inline]
-    fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
-        self.0.orient(a, b, c)
     }
 
     #[inline]
@@ -592,18 +617,8 @@ impl<K: Kernel> Kernel for ShortEdges<K> {
     }
 
     #[inline]
-    fn cross(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
-        self.0.cross_of_short_edges(a, b, c, d)
-    }
-
-    #[inline]
     fn cross_of_short_edges(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
         self.0.cross_of_short_edges(a, b, c, d)
-    }
-
-    #[inline]
-    fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
-        self.0.dot(a, b, c, d)
     }
 
     #[inline]
@@ -631,10 +646,17 @@ impl<K: Kernel> Kernel for ShortEdges<K> {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Fast;
 
-impl sealed::Sealed for Fast {}
-
 impl Kernel for Fast {
     const NAME: &'static str = "fast";
+
+    #[inline]
+    fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
+        let det = (a.x - c.x) * (b.y - c.y) - (a.y - c.y) * (b.x - c.x);
+        Sign::of(det).into()
+    }
+}
+
+impl sealed::Predicates for Fast {
     type Within = Fast;
 
     #[inline]
@@ -645,12 +667,6 @@ impl Kernel for Fast {
     #[inline]
     fn within_differences(self, _w: f64) -> Fast {
         self
-    }
-
-    #[inline]
-    fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
-        let det = (a.x - c.x) * (b.y - c.y) - (a.y - c.y) * (b.x - c.x);
-        Sign::of(det).into()
     }
 
     #[inline]

@@ -35,6 +35,7 @@
 //! ([`Width::value`], [`Rectangle::area`], [`Rectangle::corners`]) are computed in
 //! floating point and are approximate.
 
+use crate::kernel::sealed::Predicates as _;
 use super::hull::hull_indices;
 use super::{ConvexPolygon, LinkedPolygon, PolygonError};
 use crate::kernel::{Exact, Kernel, Orientation, Point, Polynomial, Ring, Sign};

@@ -1,3 +1,4 @@
+use crate::kernel::sealed::Predicates as _;
 use super::engine::*;
 use super::witness::*;
 use super::*;

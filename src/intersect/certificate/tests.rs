@@ -1,3 +1,4 @@
+use crate::kernel::sealed::Predicates as _;
 use super::chords::*;
 use super::separation::*;
 use super::verify::*;

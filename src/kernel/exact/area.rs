@@ -19,7 +19,8 @@ use crate::kernel::{Point, Ring, Sign};
 ///
 /// # Panics
 /// On NaN or infinite coordinates.
-pub fn area_sign(points: &[Point]) -> Sign {
+#[cfg(test)]
+pub(crate) fn area_sign(points: &[Point]) -> Sign {
     area_sign_of(points.len(), |i| points[i])
 }
 

@@ -48,7 +48,7 @@
 //!      are exact, go to Shewchuk's adaptive `orient2d` (the `robust` crate), whose
 //!      expansion arithmetic is exact as long as no intermediate product overflows or
 //!      underflows. That holds when every non-zero (rescaled) coordinate has magnitude
-//!      in [2^-400, 2^400] ([`in_adaptive_range`]): every difference and expansion
+//!      in [2^-400, 2^400] : every difference and expansion
 //!      component is then a multiple of 2^-453 and every product a multiple of
 //!      2^-906 (above the subnormal range) and below 2^804. Degree-4 predicates and
 //!      [`Kernel::sign`] try [`Interval`] arithmetic with outward rounding instead.
@@ -79,12 +79,11 @@ mod predicates;
 mod semi_static;
 mod static_filter;
 
-pub use area::{area_sign, area_sign_of};
-pub use dyadic::Dyadic;
-pub use interval::Interval;
-#[doc(hidden)]
-pub use out_of_line::in_adaptive_range;
-pub use semi_static::ExactWithin;
+#[cfg(test)]
+use area::area_sign;
+pub(crate) use area::area_sign_of;
+pub(crate) use dyadic::Dyadic;
+pub(crate) use semi_static::ExactWithin;
 
 use super::{BoundingBox, DirectedLine, Kernel, Orientation, Point, Polynomial, Sign};
 
@@ -93,11 +92,33 @@ use super::{BoundingBox, DirectedLine, Kernel, Orientation, Point, Polynomial, S
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Exact;
 
-impl crate::kernel::sealed::Sealed for Exact {}
-
 impl Kernel for Exact {
     const NAME: &'static str = "exact";
+
+    /// The static filter, written so that the answer is the sign of the computed
+    /// determinant (as under [`Fast`](super::Fast)) and the certificate a separate
+    /// branch; an uncertain determinant is replaced by ±1 or 0 from `orient_slow`.
+    #[inline]
+    fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
+        predicates::orient(a, b, c)
+    }
+
+    /// Same shape as `orient` (two products of differences), so the same static filter.
+    #[inline]
+    fn cross(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
+        predicates::cross(a, b, c, d)
+    }
+
+    /// Same shape as `orient` with a sum instead of a difference: the same static filter.
+    #[inline]
+    fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
+        predicates::dot(a, b, c, d)
+    }
+}
+
+impl crate::kernel::sealed::Predicates for Exact {
     const EXACT: bool = true;
+
     type Within = ExactWithin;
 
     #[inline]
@@ -108,14 +129,6 @@ impl Kernel for Exact {
     #[inline]
     fn within_differences(self, w: f64) -> ExactWithin {
         ExactWithin::for_differences(w)
-    }
-
-    /// The static filter, written so that the answer is the sign of the computed
-    /// determinant (as under [`Fast`](super::Fast)) and the certificate a separate
-    /// branch; an uncertain determinant is replaced by ±1 or 0 from `orient_slow`.
-    #[inline]
-    fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
-        predicates::orient(a, b, c)
     }
 
     /// The static filter on the products with the line's start as the pivot (see
@@ -129,18 +142,6 @@ impl Kernel for Exact {
     #[inline]
     fn sign<P: Polynomial>(self, poly: &P) -> Sign {
         predicates::sign(poly)
-    }
-
-    /// Same shape as `orient` (two products of differences), so the same static filter.
-    #[inline]
-    fn cross(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
-        predicates::cross(a, b, c, d)
-    }
-
-    /// Same shape as `orient` with a sum instead of a difference: the same static filter.
-    #[inline]
-    fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
-        predicates::dot(a, b, c, d)
     }
 
     /// A static filter (see `cross_products_filtered`), then rescaling, intervals and

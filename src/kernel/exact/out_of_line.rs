@@ -10,7 +10,11 @@ use super::static_filter::{
 };
 use crate::kernel::{CrossPoly, CrossProductsPoly, DotPoly, Point, Polynomial, Ring, Sign};
 
+/// The range in which Shewchuk's adaptive predicates are exact (no intermediate
+/// overflow or underflow); the unit tests check the bounds the filters rely on.
+#[cfg(test)]
 pub(super) const ADAPTIVE_MIN: f64 = f64::from_bits((1023 - 400) << 52); // 2^-400
+#[cfg(test)]
 pub(super) const ADAPTIVE_MAX: f64 = f64::from_bits((1023 + 400) << 52); // 2^400
 
 /// The inputs of one predicate call scaled by a common power of two so that the
@@ -356,17 +360,6 @@ pub(super) fn sign_slow<P: Polynomial>(poly: &P) -> Sign {
     poly.eval::<Dyadic>()
         .certain_sign()
         .expect("dyadic arithmetic is exact")
-}
-
-/// True when every value is zero or has magnitude in [2^-400, 2^400], the range in
-/// which Shewchuk's adaptive predicates are exact (no intermediate overflow or underflow).
-#[doc(hidden)]
-#[inline]
-pub fn in_adaptive_range(values: &[f64]) -> bool {
-    values.iter().all(|&v| {
-        let m = v.abs();
-        v == 0.0 || (ADAPTIVE_MIN..=ADAPTIVE_MAX).contains(&m)
-    })
 }
 
 /// The orientation polynomial (a − c) × (b − c), for the exact fallback and for tests.

@@ -150,16 +150,6 @@ impl ExactWithin {
         }
     }
 
-    /// The two-product bound `B₂` (`+∞` when not valid).
-    pub fn two_products_bound(&self) -> f64 {
-        self.two
-    }
-
-    /// The degree-4 bound `B₄` (`+∞` when not valid).
-    pub fn degree_four_bound(&self) -> f64 {
-        self.four
-    }
-
     /// The bound of [`Kernel::cross_products_sign_of_short_edges`] for
     /// `m = m₀m₁ + m₂m₃` (see there), from the two bounds the kernel keeps, so that it
     /// costs no field: `8B₂·m + (0·B₄ + 2^-1010·B₂ + 2^-1072)`. As `B₂ ≥ 6u·P` (less
@@ -179,22 +169,8 @@ impl ExactWithin {
     }
 }
 
-impl crate::kernel::sealed::Sealed for ExactWithin {}
-
 impl Kernel for ExactWithin {
     const NAME: &'static str = "exact";
-    const EXACT: bool = true;
-    type Within = ExactWithin;
-
-    #[inline]
-    fn within(self, boxes: [BoundingBox; 2]) -> ExactWithin {
-        ExactWithin::new(boxes)
-    }
-
-    #[inline]
-    fn within_differences(self, w: f64) -> ExactWithin {
-        ExactWithin::for_differences(w)
-    }
 
     #[inline]
     fn orient(self, a: Point, b: Point, c: Point) -> Orientation {
@@ -207,6 +183,48 @@ impl Kernel for ExactWithin {
         } else {
             orient_within_slow(a, b, c)
         }
+    }
+
+    #[inline]
+    fn cross(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
+        let (left, right) = cross_products(a, b, c, d);
+        let det = left - right;
+        if det > self.two {
+            Orientation::Ccw
+        } else if det < self.neg_two {
+            Orientation::Cw
+        } else {
+            cross_within_slow(a, b, c, d)
+        }
+    }
+
+    #[inline]
+    fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
+        let (left, right) = dot_products(a, b, c, d);
+        let det = left + right;
+        if det > self.two {
+            Sign::Positive
+        } else if det < self.neg_two {
+            Sign::Negative
+        } else {
+            dot_within_slow(a, b, c, d)
+        }
+    }
+}
+
+impl crate::kernel::sealed::Predicates for ExactWithin {
+    const EXACT: bool = true;
+
+    type Within = ExactWithin;
+
+    #[inline]
+    fn within(self, boxes: [BoundingBox; 2]) -> ExactWithin {
+        ExactWithin::new(boxes)
+    }
+
+    #[inline]
+    fn within_differences(self, w: f64) -> ExactWithin {
+        ExactWithin::for_differences(w)
     }
 
     /// `orient`'s test, with the references handed to the out-of-line path.
@@ -249,19 +267,6 @@ impl Kernel for ExactWithin {
         predicates::sign(poly)
     }
 
-    #[inline]
-    fn cross(self, a: Point, b: Point, c: Point, d: Point) -> Orientation {
-        let (left, right) = cross_products(a, b, c, d);
-        let det = left - right;
-        if det > self.two {
-            Orientation::Ccw
-        } else if det < self.neg_two {
-            Orientation::Cw
-        } else {
-            cross_within_slow(a, b, c, d)
-        }
-    }
-
     /// `cross`'s semi-static test, then [`Exact`](super::Exact)'s static filter inline (valid for
     /// any input: `certain` refuses overflow), then out of line. Written out beside
     /// `cross` rather than sharing a generic body: with the shared body (a const
@@ -279,19 +284,6 @@ impl Kernel for ExactWithin {
             nonzero_sign(det).into()
         } else {
             cross_within_slow(a, b, c, d)
-        }
-    }
-
-    #[inline]
-    fn dot(self, a: Point, b: Point, c: Point, d: Point) -> Sign {
-        let (left, right) = dot_products(a, b, c, d);
-        let det = left + right;
-        if det > self.two {
-            Sign::Positive
-        } else if det < self.neg_two {
-            Sign::Negative
-        } else {
-            dot_within_slow(a, b, c, d)
         }
     }
 

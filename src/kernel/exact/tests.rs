@@ -1,3 +1,4 @@
+use crate::kernel::sealed::Predicates as _;
 use super::dyadic::*;
 use super::interval::*;
 use super::out_of_line::*;
