@@ -209,13 +209,16 @@ pub(crate) fn run(
     Some(spent)
 }
 
-/// How much work [`ListSweep`] does on a pair of polygons.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct ListWork {
-    /// Candidates checked: Σ r over the insertions, r the other list's length.
-    pub candidates: u64,
-    /// Candidates whose y-range meets the inserted edge's: the pairs tested.
-    pub tests: u64,
+instrument_pub! {
+    /// How much work [`ListSweep`] does on a pair of polygons.
+    #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+    #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+    struct ListWork {
+        /// Candidates checked: Σ r over the insertions, r the other list's length.
+        pub candidates: u64,
+        /// Candidates whose y-range meets the inserted edge's: the pairs tested.
+        pub tests: u64,
+    }
 }
 
 /// The lists as the crossings report runs them: `pair` is called on every candidate (each edge
@@ -237,23 +240,26 @@ pub(crate) fn every_candidate(
 }
 
 impl ListSweep {
-    /// Counts the candidates and the pair tests of the sweep on `p` and `q`, testing
-    /// no pair.
-    pub fn work(p: &SimplePolygon, q: &SimplePolygon) -> ListWork {
-        let mut events = Vec::new();
-        sorted_events(p, q, &mut events);
-        let input = Input {
-            p,
-            q,
-            events: &events,
-        };
-        let mut tests = 0;
-        run(input, &mut ListWorkspace::default(), u64::MAX, |_, _, _, _| {
-            tests += 1
-        });
-        ListWork {
-            candidates: super::events::list_work(input),
-            tests,
+    instrument_pub! {
+        /// Counts the candidates and the pair tests of the sweep on `p` and `q`, testing
+        /// no pair.
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn work(p: &SimplePolygon, q: &SimplePolygon) -> ListWork {
+            let mut events = Vec::new();
+            sorted_events(p, q, &mut events);
+            let input = Input {
+                p,
+                q,
+                events: &events,
+            };
+            let mut tests = 0;
+            run(input, &mut ListWorkspace::default(), u64::MAX, |_, _, _, _| {
+                tests += 1
+            });
+            ListWork {
+                candidates: super::events::list_work(input),
+                tests,
+            }
         }
     }
 }

@@ -50,7 +50,9 @@ mod tree;
 pub use brute::Brute;
 #[cfg(feature = "cli")]
 pub(crate) use lists::every_candidate;
-pub use lists::{ListSweep, ListWork, ListWorkspace};
+pub use lists::{ListSweep, ListWorkspace};
+#[cfg(feature = "instrument")]
+pub use lists::ListWork;
 pub use point::crossing_point;
 pub use sweep::{Sweep, SweepWorkspace};
 pub use tree::TreeSweep;

@@ -163,22 +163,31 @@ impl Algorithm {
         Algorithm::Convert,
     ];
 
-    /// The tests on sorted arrays: the reference and the O(log n) algorithms.
-    pub const ARRAY: &'static [Algorithm] = &[
-        Algorithm::Linear,
-        Algorithm::Barba,
-        Algorithm::Dobkin,
-        Algorithm::ChazelleDobkin,
-    ];
+    instrument_pub! {
+        /// The tests on sorted arrays: the reference and the O(log n) algorithms.
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        const ARRAY: &'static [Algorithm] = &[
+            Algorithm::Linear,
+            Algorithm::Barba,
+            Algorithm::Dobkin,
+            Algorithm::ChazelleDobkin,
+        ];
+    }
 
-    /// The tests on linked polygons (through [`Algorithm::run`] they link array inputs in
-    /// a shuffled arena order first, which costs O(n) per call).
-    pub const LINKED: &'static [Algorithm] = &[Algorithm::Clm, Algorithm::Convert];
+    instrument_pub! {
+        /// The tests on linked polygons (through [`Algorithm::run`] they link array inputs in
+        /// a shuffled arena order first, which costs O(n) per call).
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        const LINKED: &'static [Algorithm] = &[Algorithm::Clm, Algorithm::Convert];
+    }
 
-    /// The O(log n) tests on sorted arrays (the thesis's experiment 2 checks that
-    /// their iteration counts grow like log n).
-    pub const LOGARITHMIC: &'static [Algorithm] =
-        &[Algorithm::Barba, Algorithm::Dobkin, Algorithm::ChazelleDobkin];
+    instrument_pub! {
+        /// The O(log n) tests on sorted arrays (the thesis's experiment 2 checks that
+        /// their iteration counts grow like log n).
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        const LOGARITHMIC: &'static [Algorithm] =
+            &[Algorithm::Barba, Algorithm::Dobkin, Algorithm::ChazelleDobkin];
+    }
 
     /// The name used by the CLI's `--algorithm`, the benches and the CSVs.
     pub fn name(self) -> &'static str {
@@ -192,9 +201,12 @@ impl Algorithm {
         }
     }
 
-    /// The fastest algorithm on array polygons, what `--algorithm auto` runs.
-    pub fn fastest_array() -> Algorithm {
-        Algorithm::Barba
+    instrument_pub! {
+        /// The fastest algorithm on array polygons, what `--algorithm auto` runs.
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn fastest_array() -> Algorithm {
+            Algorithm::Barba
+        }
     }
 
     instrument_pub! {

@@ -87,24 +87,30 @@ impl Cycle for LinkedPolygon {
     }
 }
 
-/// Compares the lengths of segments `ab` and `cd` exactly (squared distances, a
-/// degree-2 polynomial, decided by [`Exact`]).
-///
-/// ```
-/// use polysect::polygon::calipers::compare_distances;
-/// use polysect::Point;
-/// use std::cmp::Ordering;
-/// let o = Point::new(0.0, 0.0);
-/// // 0.1 + 0.2 is not 0.3 in f64, and the comparison knows it.
-/// assert_eq!(compare_distances(o, Point::new(0.1 + 0.2, 0.0), o, Point::new(0.3, 0.0)), Ordering::Greater);
-/// ```
-pub fn compare_distances(a: Point, b: Point, c: Point, d: Point) -> Ordering {
-    compare_distances_with(Exact, a, b, c, d)
+instrument_pub! {
+    /// Compares the lengths of segments `ab` and `cd` exactly (squared distances, a
+    /// degree-2 polynomial, decided by [`Exact`]).
+    ///
+    /// ```
+    /// use polysect::polygon::calipers::compare_distances;
+    /// use polysect::Point;
+    /// use std::cmp::Ordering;
+    /// let o = Point::new(0.0, 0.0);
+    /// // 0.1 + 0.2 is not 0.3 in f64, and the comparison knows it.
+    /// assert_eq!(compare_distances(o, Point::new(0.1 + 0.2, 0.0), o, Point::new(0.3, 0.0)), Ordering::Greater);
+    /// ```
+    #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+    fn compare_distances(a: Point, b: Point, c: Point, d: Point) -> Ordering {
+        compare_distances_with(Exact, a, b, c, d)
+    }
 }
 
-/// [`compare_distances`] under any kernel.
-pub fn compare_distances_with<K: Kernel>(k: K, a: Point, b: Point, c: Point, d: Point) -> Ordering {
-    k.sign(&DistanceDiff(a, b, c, d)).to_ordering()
+instrument_pub! {
+    /// [`compare_distances`] under any kernel.
+    #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+    fn compare_distances_with<K: Kernel>(k: K, a: Point, b: Point, c: Point, d: Point) -> Ordering {
+        k.sign(&DistanceDiff(a, b, c, d)).to_ordering()
+    }
 }
 
 /// |b − a|² − |d − c|².
@@ -421,107 +427,122 @@ pub(crate) fn farthest_pair_of_hull(hull: &[Point]) -> (Point, Point) {
     walk(Exact, hull, Want::Diameter).diameter
 }
 
-/// The farthest pair of a point set by comparing every pair: the O(n²) reference the
-/// calipers are tested against. `None` for an empty set; `(p, p)` for one point.
-/// Exact comparisons; of equally far pairs the first in input order is kept.
-pub fn farthest_pair_naive(points: &[Point]) -> Option<(Point, Point)> {
-    let mut best = (*points.first()?, points[0]);
-    for (i, &p) in points.iter().enumerate() {
-        for &q in &points[i + 1..] {
-            if compare_distances(p, q, best.0, best.1) == Ordering::Greater {
-                best = (p, q);
+instrument_pub! {
+    /// The farthest pair of a point set by comparing every pair: the O(n²) reference the
+    /// calipers are tested against. `None` for an empty set; `(p, p)` for one point.
+    /// Exact comparisons; of equally far pairs the first in input order is kept.
+    #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+    fn farthest_pair_naive(points: &[Point]) -> Option<(Point, Point)> {
+        let mut best = (*points.first()?, points[0]);
+        for (i, &p) in points.iter().enumerate() {
+            for &q in &points[i + 1..] {
+                if compare_distances(p, q, best.0, best.1) == Ordering::Greater {
+                    best = (p, q);
+                }
             }
         }
+        Some(best)
     }
-    Some(best)
 }
 
-/// The width by trying every edge against every vertex: the O(n²) reference.
-///
-/// # Panics
-/// Never: a [`ConvexPolygon`] has at least three edges.
-pub fn width_naive(polygon: &ConvexPolygon) -> Width {
-    let v = polygon.vertices();
-    let n = v.len();
-    let mut best: Option<Width> = None;
-    for i in 0..n {
-        let (a, b) = (v[i], v[(i + 1) % n]);
-        let mut far = v[0];
-        for &p in v {
-            if Exact.sign(&HeightDiff([a, b, p], [a, b, far])) == Sign::Positive {
-                far = p;
+instrument_pub! {
+    /// The width by trying every edge against every vertex: the O(n²) reference.
+    ///
+    /// # Panics
+    /// Never: a [`ConvexPolygon`] has at least three edges.
+    #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+    fn width_naive(polygon: &ConvexPolygon) -> Width {
+        let v = polygon.vertices();
+        let n = v.len();
+        let mut best: Option<Width> = None;
+        for i in 0..n {
+            let (a, b) = (v[i], v[(i + 1) % n]);
+            let mut far = v[0];
+            for &p in v {
+                if Exact.sign(&HeightDiff([a, b, p], [a, b, far])) == Sign::Positive {
+                    far = p;
+                }
+            }
+            let w = Width {
+                edge: (a, b),
+                vertex: far,
+            };
+            if best.is_none_or(|cur| {
+                Exact.sign(&HeightDiff([a, b, far], [cur.edge.0, cur.edge.1, cur.vertex])) == Sign::Negative
+            }) {
+                best = Some(w);
             }
         }
-        let w = Width {
-            edge: (a, b),
-            vertex: far,
-        };
-        if best.is_none_or(|cur| {
-            Exact.sign(&HeightDiff([a, b, far], [cur.edge.0, cur.edge.1, cur.vertex])) == Sign::Negative
-        }) {
-            best = Some(w);
-        }
+        best.expect("a polygon has edges")
     }
-    best.expect("a polygon has edges")
 }
 
-/// The least-area rectangle by trying every edge against every vertex: the O(n²)
-/// reference.
-///
-/// # Panics
-/// Never: a [`ConvexPolygon`] has at least three edges.
-pub fn min_area_rectangle_naive(polygon: &ConvexPolygon) -> Rectangle {
-    let v = polygon.vertices();
-    let n = v.len();
-    let mut best: Option<Rectangle> = None;
-    for i in 0..n {
-        let (a, b) = (v[i], v[(i + 1) % n]);
-        let (mut low, mut high, mut far) = (a, a, a);
-        for &p in v {
-            if Exact.dot(a, b, low, p) == Sign::Negative {
-                low = p;
+instrument_pub! {
+    /// The least-area rectangle by trying every edge against every vertex: the O(n²)
+    /// reference.
+    ///
+    /// # Panics
+    /// Never: a [`ConvexPolygon`] has at least three edges.
+    #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+    fn min_area_rectangle_naive(polygon: &ConvexPolygon) -> Rectangle {
+        let v = polygon.vertices();
+        let n = v.len();
+        let mut best: Option<Rectangle> = None;
+        for i in 0..n {
+            let (a, b) = (v[i], v[(i + 1) % n]);
+            let (mut low, mut high, mut far) = (a, a, a);
+            for &p in v {
+                if Exact.dot(a, b, low, p) == Sign::Negative {
+                    low = p;
+                }
+                if Exact.dot(a, b, high, p) == Sign::Positive {
+                    high = p;
+                }
+                if Exact.cross(a, b, far, p) == Orientation::Ccw {
+                    far = p;
+                }
             }
-            if Exact.dot(a, b, high, p) == Sign::Positive {
-                high = p;
-            }
-            if Exact.cross(a, b, far, p) == Orientation::Ccw {
-                far = p;
+            let r = Rectangle {
+                edge: (a, b),
+                low,
+                high,
+                far,
+            };
+            if best.is_none_or(|cur| {
+                Exact.sign(&AreaDiff(
+                    [a, b, low, high, far],
+                    [cur.edge.0, cur.edge.1, cur.low, cur.high, cur.far],
+                )) == Sign::Negative
+            }) {
+                best = Some(r);
             }
         }
-        let r = Rectangle {
-            edge: (a, b),
-            low,
-            high,
-            far,
-        };
-        if best.is_none_or(|cur| {
-            Exact.sign(&AreaDiff(
-                [a, b, low, high, far],
-                [cur.edge.0, cur.edge.1, cur.low, cur.high, cur.far],
-            )) == Sign::Negative
-        }) {
-            best = Some(r);
-        }
+        best.expect("a polygon has edges")
     }
-    best.expect("a polygon has edges")
 }
 
-/// Compares the widths of two strips exactly.
-pub fn compare_widths(a: &Width, b: &Width) -> Ordering {
-    Exact
-        .sign(&HeightDiff(
-            [a.edge.0, a.edge.1, a.vertex],
-            [b.edge.0, b.edge.1, b.vertex],
-        ))
-        .to_ordering()
+instrument_pub! {
+    /// Compares the widths of two strips exactly.
+    #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+    fn compare_widths(a: &Width, b: &Width) -> Ordering {
+        Exact
+            .sign(&HeightDiff(
+                [a.edge.0, a.edge.1, a.vertex],
+                [b.edge.0, b.edge.1, b.vertex],
+            ))
+            .to_ordering()
+    }
 }
 
-/// Compares the areas of two rectangles exactly.
-pub fn compare_areas(a: &Rectangle, b: &Rectangle) -> Ordering {
-    Exact
-        .sign(&AreaDiff(
-            [a.edge.0, a.edge.1, a.low, a.high, a.far],
-            [b.edge.0, b.edge.1, b.low, b.high, b.far],
-        ))
-        .to_ordering()
+instrument_pub! {
+    /// Compares the areas of two rectangles exactly.
+    #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+    fn compare_areas(a: &Rectangle, b: &Rectangle) -> Ordering {
+        Exact
+            .sign(&AreaDiff(
+                [a.edge.0, a.edge.1, a.low, a.high, a.far],
+                [b.edge.0, b.edge.1, b.low, b.high, b.far],
+            ))
+            .to_ordering()
+    }
 }

@@ -185,29 +185,32 @@ impl ConvexPolygon {
         *self.edge_extent.get_or_init(|| edge_extent_of(&self.vertices))
     }
 
-    /// Checks the invariant exactly: at least three finite vertices, every turn
-    /// strictly counter-clockwise, winding once. O(n).
-    ///
-    /// # Errors
-    /// A description of the first violation found.
-    pub fn debug_validate(&self) -> Result<(), String> {
-        let v = &self.vertices;
-        if v.len() < 3 {
-            return Err(format!("{} vertices", v.len()));
-        }
-        if let Some(i) = v.iter().position(|p| !p.is_finite()) {
-            return Err(format!("vertex {i} is not finite"));
-        }
-        let n = v.len();
-        for i in 0..n {
-            let turn = Exact.orient(v[(i + n - 1) % n], v[i], v[(i + 1) % n]);
-            if turn != Orientation::Ccw {
-                return Err(format!("turn at vertex {i} is {turn:?}"));
+    instrument_pub! {
+        /// Checks the invariant exactly: at least three finite vertices, every turn
+        /// strictly counter-clockwise, winding once. O(n).
+        ///
+        /// # Errors
+        /// A description of the first violation found.
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn debug_validate(&self) -> Result<(), String> {
+            let v = &self.vertices;
+            if v.len() < 3 {
+                return Err(format!("{} vertices", v.len()));
             }
-        }
-        match winding_number(v) {
-            1 => Ok(()),
-            w => Err(format!("winds {w} times")),
+            if let Some(i) = v.iter().position(|p| !p.is_finite()) {
+                return Err(format!("vertex {i} is not finite"));
+            }
+            let n = v.len();
+            for i in 0..n {
+                let turn = Exact.orient(v[(i + n - 1) % n], v[i], v[(i + 1) % n]);
+                if turn != Orientation::Ccw {
+                    return Err(format!("turn at vertex {i} is {turn:?}"));
+                }
+            }
+            match winding_number(v) {
+                1 => Ok(()),
+                w => Err(format!("winds {w} times")),
+            }
         }
     }
 }

@@ -385,63 +385,66 @@ fn line_chord(polygon: &ConvexPolygon, a: Point, b: Point) -> Option<Chord> {
     Some(Chord { from, to })
 }
 
-/// [`ConvexPolygon::line_chord`] by visiting every vertex and edge: the O(n)
-/// reference the binary searches are tested against. (On a vertex list that is not
-/// strictly convex, built with `from_ccw_unchecked`, the answer is unspecified.)
-///
-/// # Errors
-/// As [`ConvexPolygon::line_chord`].
-pub fn line_chord_linear(
-    polygon: &ConvexPolygon,
-    a: Point,
-    b: Point,
-) -> Result<Option<Chord>, LineQueryError> {
-    validate(a, b)?;
-    let v = polygon.vertices();
-    let n = v.len();
-    let side: Vec<Orientation> = v.iter().map(|&p| Exact.orient(a, b, p)).collect();
-    let on: Vec<usize> = (0..n).filter(|&i| side[i] == Orientation::Collinear).collect();
-    let (mut enter, mut exit) = (None, None);
-    for i in 0..n {
-        let (s, t) = (side[i], side[(i + 1) % n]);
-        // Right to left (counter-clockwise) is where the line leaves; left to right,
-        // where it enters.
-        if s == Orientation::Cw && t == Orientation::Ccw {
-            exit = Some(ChordEnd::Edge(i));
+instrument_pub! {
+    /// [`ConvexPolygon::line_chord`] by visiting every vertex and edge: the O(n)
+    /// reference the binary searches are tested against. (On a vertex list that is not
+    /// strictly convex, built with `from_ccw_unchecked`, the answer is unspecified.)
+    ///
+    /// # Errors
+    /// As [`ConvexPolygon::line_chord`].
+    #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+    fn line_chord_linear(
+        polygon: &ConvexPolygon,
+        a: Point,
+        b: Point,
+    ) -> Result<Option<Chord>, LineQueryError> {
+        validate(a, b)?;
+        let v = polygon.vertices();
+        let n = v.len();
+        let side: Vec<Orientation> = v.iter().map(|&p| Exact.orient(a, b, p)).collect();
+        let on: Vec<usize> = (0..n).filter(|&i| side[i] == Orientation::Collinear).collect();
+        let (mut enter, mut exit) = (None, None);
+        for i in 0..n {
+            let (s, t) = (side[i], side[(i + 1) % n]);
+            // Right to left (counter-clockwise) is where the line leaves; left to right,
+            // where it enters.
+            if s == Orientation::Cw && t == Orientation::Ccw {
+                exit = Some(ChordEnd::Edge(i));
+            }
+            if s == Orientation::Ccw && t == Orientation::Cw {
+                enter = Some(ChordEnd::Edge(i));
+            }
         }
-        if s == Orientation::Ccw && t == Orientation::Cw {
-            enter = Some(ChordEnd::Edge(i));
+        for &i in &on {
+            let (p, q) = (side[(i + n - 1) % n], side[(i + 1) % n]);
+            if p == Orientation::Cw && q == Orientation::Ccw {
+                exit = Some(ChordEnd::Vertex(i));
+            }
+            if p == Orientation::Ccw && q == Orientation::Cw {
+                enter = Some(ChordEnd::Vertex(i));
+            }
         }
+        Ok(match (enter, exit, on.as_slice()) {
+            (Some(from), Some(to), _) => Some(Chord { from, to }),
+            (None, None, []) => None,
+            (None, None, &[i]) => Some(Chord {
+                from: ChordEnd::Vertex(i),
+                to: ChordEnd::Vertex(i),
+            }),
+            (None, None, &[i, j]) => {
+                // Along an edge: ordered by the direction of the line.
+                let (from, to) = if Exact.dot(a, b, v[i], v[j]) == Sign::Positive {
+                    (i, j)
+                } else {
+                    (j, i)
+                };
+                Some(Chord {
+                    from: ChordEnd::Vertex(from),
+                    to: ChordEnd::Vertex(to),
+                })
+            }
+            // Only a list that is not strictly convex (built unchecked) gets here.
+            _ => None,
+        })
     }
-    for &i in &on {
-        let (p, q) = (side[(i + n - 1) % n], side[(i + 1) % n]);
-        if p == Orientation::Cw && q == Orientation::Ccw {
-            exit = Some(ChordEnd::Vertex(i));
-        }
-        if p == Orientation::Ccw && q == Orientation::Cw {
-            enter = Some(ChordEnd::Vertex(i));
-        }
-    }
-    Ok(match (enter, exit, on.as_slice()) {
-        (Some(from), Some(to), _) => Some(Chord { from, to }),
-        (None, None, []) => None,
-        (None, None, &[i]) => Some(Chord {
-            from: ChordEnd::Vertex(i),
-            to: ChordEnd::Vertex(i),
-        }),
-        (None, None, &[i, j]) => {
-            // Along an edge: ordered by the direction of the line.
-            let (from, to) = if Exact.dot(a, b, v[i], v[j]) == Sign::Positive {
-                (i, j)
-            } else {
-                (j, i)
-            };
-            Some(Chord {
-                from: ChordEnd::Vertex(from),
-                to: ChordEnd::Vertex(to),
-            })
-        }
-        // Only a list that is not strictly convex (built unchecked) gets here.
-        _ => None,
-    })
 }

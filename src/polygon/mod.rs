@@ -40,7 +40,9 @@ pub(crate) use convex::box_of;
 pub use error::{EditError, PolygonError};
 pub use graham::{angular_order, graham_scan, pivot_index};
 pub use hull::{HullAlgorithm, convex_hull, hull_vertices};
-pub use line_query::{Chord, ChordEnd, LineQueryError, line_chord_linear};
+pub use line_query::{Chord, ChordEnd, LineQueryError};
+#[cfg(feature = "instrument")]
+pub use line_query::line_chord_linear;
 pub(crate) use linked::Identity;
 pub use linked::sampling::SampleWorkspace;
 pub use linked::{LinkedPolygon, VertexId};

@@ -252,20 +252,23 @@ impl SimplePolygon {
         SimplePolygon::new(self.vertices.iter().map(|&p| f(p)))
     }
 
-    /// Checks the invariant exactly (finite, at least 3 vertices, no straight or
-    /// repeated vertex, no self-intersection) by validating a copy.
-    ///
-    /// # Errors
-    /// A description of the first violation found.
-    pub fn debug_validate(&self) -> Result<(), String> {
-        match SimplePolygon::new(self.vertices.iter().copied()) {
-            Ok(p) if p.vertices == self.vertices => Ok(()),
-            Ok(p) => Err(format!(
-                "cleaning changes the vertex list ({} -> {} vertices)",
-                self.vertices.len(),
-                p.vertices.len()
-            )),
-            Err(e) => Err(e.to_string()),
+    instrument_pub! {
+        /// Checks the invariant exactly (finite, at least 3 vertices, no straight or
+        /// repeated vertex, no self-intersection) by validating a copy.
+        ///
+        /// # Errors
+        /// A description of the first violation found.
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn debug_validate(&self) -> Result<(), String> {
+            match SimplePolygon::new(self.vertices.iter().copied()) {
+                Ok(p) if p.vertices == self.vertices => Ok(()),
+                Ok(p) => Err(format!(
+                    "cleaning changes the vertex list ({} -> {} vertices)",
+                    self.vertices.len(),
+                    p.vertices.len()
+                )),
+                Err(e) => Err(e.to_string()),
+            }
         }
     }
 }

@@ -710,68 +710,71 @@ impl<K: Kernel> Scene<K> {
         self.broad.flush(|k| entries.get(k).map(|e| e.bbox));
     }
 
-    /// Checks every invariant: each polygon's own, boxes contain their polygons (and equal
-    /// them when marked tight), snapshots equal their polygons.
-    ///
-    /// # Errors
-    /// The first invariant found broken, with the polygon's slot.
-    ///
-    /// # Panics
-    /// Never: a polygon always has vertices for its box.
-    pub fn debug_validate(&self) -> Result<(), String> {
-        for (k, e) in &self.entries {
-            let polygon = e.polygon.get();
-            polygon
-                .debug_validate()
-                .map_err(|m| format!("polygon {k}: {m}"))?;
-            let exact = BoundingBox::of(polygon.iter().map(|(_, p)| p)).expect("vertices");
-            let b = e.bbox;
-            let contains = b.min.x <= exact.min.x
-                && b.min.y <= exact.min.y
-                && b.max.x >= exact.max.x
-                && b.max.y >= exact.max.y;
-            if !contains || (e.bbox_tight && b != exact) {
-                return Err(format!(
-                    "polygon {k}: box {b:?}, true box {exact:?}, tight {}",
-                    e.bbox_tight
-                ));
-            }
-            if let Some(posed) = &e.posed {
-                posed
-                    .shape
+    instrument_pub! {
+        /// Checks every invariant: each polygon's own, boxes contain their polygons (and equal
+        /// them when marked tight), snapshots equal their polygons.
+        ///
+        /// # Errors
+        /// The first invariant found broken, with the polygon's slot.
+        ///
+        /// # Panics
+        /// Never: a polygon always has vertices for its box.
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn debug_validate(&self) -> Result<(), String> {
+            for (k, e) in &self.entries {
+                let polygon = e.polygon.get();
+                polygon
                     .debug_validate()
-                    .map_err(|m| format!("polygon {k}: shape: {m}"))?;
-                if posed.array.vertices() != posed.shape.to_convex().vertices() {
-                    return Err(format!("polygon {k}: the shape's array is stale"));
+                    .map_err(|m| format!("polygon {k}: {m}"))?;
+                let exact = BoundingBox::of(polygon.iter().map(|(_, p)| p)).expect("vertices");
+                let b = e.bbox;
+                let contains = b.min.x <= exact.min.x
+                    && b.min.y <= exact.min.y
+                    && b.max.x >= exact.max.x
+                    && b.max.y >= exact.max.y;
+                if !contains || (e.bbox_tight && b != exact) {
+                    return Err(format!(
+                        "polygon {k}: box {b:?}, true box {exact:?}, tight {}",
+                        e.bbox_tight
+                    ));
                 }
-                if posed.shape.len() != polygon.len() {
-                    return Err(format!("polygon {k}: world and shape sizes differ"));
+                if let Some(posed) = &e.posed {
+                    posed
+                        .shape
+                        .debug_validate()
+                        .map_err(|m| format!("polygon {k}: shape: {m}"))?;
+                    if posed.array.vertices() != posed.shape.to_convex().vertices() {
+                        return Err(format!("polygon {k}: the shape's array is stale"));
+                    }
+                    if posed.shape.len() != polygon.len() {
+                        return Err(format!("polygon {k}: world and shape sizes differ"));
+                    }
+                    for pos in 0..polygon.len() {
+                        let (w, sp) = (polygon.point_at(pos), posed.shape.point_at(pos));
+                        if posed.pose.apply(sp) != Some(w) || polygon.id_at(pos) != posed.shape.id_at(pos) {
+                            return Err(format!(
+                                "polygon {k}: world vertex {pos} is not the shape's image"
+                            ));
+                        }
+                    }
                 }
-                for pos in 0..polygon.len() {
-                    let (w, sp) = (polygon.point_at(pos), posed.shape.point_at(pos));
-                    if posed.pose.apply(sp) != Some(w) || polygon.id_at(pos) != posed.shape.id_at(pos) {
-                        return Err(format!(
-                            "polygon {k}: world vertex {pos} is not the shape's image"
-                        ));
+                if e.posed.as_ref().is_some_and(|p| p.snapshot_due) && e.snapshot.is_some() {
+                    return Err(format!("polygon {k}: a snapshot both owed and held"));
+                }
+                if let Some(s) = &e.snapshot {
+                    let mut now = polygon.to_convex().into_vertices();
+                    let start = now
+                        .iter()
+                        .position(|&p| p == s.vertices()[0])
+                        .ok_or("snapshot vertex missing")?;
+                    now.rotate_left(start);
+                    if now != s.vertices() {
+                        return Err(format!("polygon {k}: stale snapshot"));
                     }
                 }
             }
-            if e.posed.as_ref().is_some_and(|p| p.snapshot_due) && e.snapshot.is_some() {
-                return Err(format!("polygon {k}: a snapshot both owed and held"));
-            }
-            if let Some(s) = &e.snapshot {
-                let mut now = polygon.to_convex().into_vertices();
-                let start = now
-                    .iter()
-                    .position(|&p| p == s.vertices()[0])
-                    .ok_or("snapshot vertex missing")?;
-                now.rotate_left(start);
-                if now != s.vertices() {
-                    return Err(format!("polygon {k}: stale snapshot"));
-                }
-            }
+            Ok(())
         }
-        Ok(())
     }
 }
 

@@ -218,8 +218,11 @@ use rand::{Rng, RngCore};
 pub struct Clm;
 
 impl Clm {
-    /// The sample size is ⌈c·√n⌉ vertices per polygon of n vertices, with this c.
-    pub const SAMPLE_FACTOR: f64 = 1.0;
+    instrument_pub! {
+        /// The sample size is ⌈c·√n⌉ vertices per polygon of n vertices, with this c.
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        const SAMPLE_FACTOR: f64 = 1.0;
+    }
 }
 
 /// The same test with an explicit sample factor c (samples of ⌈c·√n⌉ vertices), for
@@ -424,16 +427,22 @@ struct Trace {
 }
 
 impl ClmWorkspace {
-    /// The LP statistics accumulated by queries using this workspace: work counter and
-    /// recomputations after failed certification (see [`LpWorkspace`]).
-    pub fn lp_stats(&self) -> &LpWorkspace {
-        &self.lp
+    instrument_pub! {
+        /// The LP statistics accumulated by queries using this workspace: work counter and
+        /// recomputations after failed certification (see [`LpWorkspace`]).
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn lp_stats(&self) -> &LpWorkspace {
+            &self.lp
+        }
     }
 
-    /// Chain vertices collected by queries using this workspace (each one a step along
-    /// the linked list).
-    pub fn walked(&self) -> u64 {
-        self.walked
+    instrument_pub! {
+        /// Chain vertices collected by queries using this workspace (each one a step along
+        /// the linked list).
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn walked(&self) -> u64 {
+            self.walked
+        }
     }
 }
 

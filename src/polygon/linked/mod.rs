@@ -146,15 +146,18 @@ impl LinkedPolygon {
         Self::with_storage_order(polygon, &order, 0)
     }
 
-    /// Links the vertices of `polygon`, stored in a uniformly random order of the
-    /// arena (the thesis's shuffled linked lists, 4.3), so that walking the boundary
-    /// jumps around memory as it does after a long edit history. O(n).
-    pub fn from_convex_shuffled<R: Rng + ?Sized>(polygon: &ConvexPolygon, rng: &mut R) -> Self {
-        let mut order: Vec<u32> = (0..polygon.len() as u32).collect();
-        for i in (1..order.len()).rev() {
-            order.swap(i, rng.random_range(0..=i));
+    instrument_pub! {
+        /// Links the vertices of `polygon`, stored in a uniformly random order of the
+        /// arena (the thesis's shuffled linked lists, 4.3), so that walking the boundary
+        /// jumps around memory as it does after a long edit history. O(n).
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn from_convex_shuffled<R: Rng + ?Sized>(polygon: &ConvexPolygon, rng: &mut R) -> Self {
+            let mut order: Vec<u32> = (0..polygon.len() as u32).collect();
+            for i in (1..order.len()).rev() {
+                order.swap(i, rng.random_range(0..=i));
+            }
+            Self::with_storage_order(polygon, &order, polygon.len())
         }
-        Self::with_storage_order(polygon, &order, polygon.len())
     }
 
     /// Boundary vertex `i` is stored at position `order[i]`.
@@ -339,17 +342,23 @@ impl LinkedPolygon {
             .all(|(i, node)| node.next as usize == if i + 1 == n { 0 } else { i + 1 })
     }
 
-    /// Vertices the arena can hold without reallocating (nodes and handle slots, the
-    /// smaller of the two): with dense storage it tracks the largest size the polygon
-    /// has had, never the number of edits.
-    pub fn capacity(&self) -> usize {
-        self.nodes.capacity().min(self.slots.capacity())
+    instrument_pub! {
+        /// Vertices the arena can hold without reallocating (nodes and handle slots, the
+        /// smaller of the two): with dense storage it tracks the largest size the polygon
+        /// has had, never the number of edits.
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn capacity(&self) -> usize {
+            self.nodes.capacity().min(self.slots.capacity())
+        }
     }
 
-    /// Memory held by the arena in bytes (nodes plus handle slots), for churn tests.
-    pub fn arena_bytes(&self) -> usize {
-        self.nodes.capacity() * std::mem::size_of::<Node>()
-            + self.slots.capacity() * std::mem::size_of::<Slot>() * 2
+    instrument_pub! {
+        /// Memory held by the arena in bytes (nodes plus handle slots), for churn tests.
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn arena_bytes(&self) -> usize {
+            self.nodes.capacity() * std::mem::size_of::<Node>()
+                + self.slots.capacity() * std::mem::size_of::<Slot>() * 2
+        }
     }
 
     /// The polygon as a sorted array, starting at [`first`](Self::first). O(n): a copy
@@ -368,100 +377,118 @@ impl LinkedPolygon {
         ConvexPolygon::from_ccw_unchecked(walk.collect())
     }
 
-    /// The point stored at position `pos` (positions are `0..len`, valid until the next edit).
-    ///
-    /// # Panics
-    /// `pos` is not below [`len`](Self::len).
-    #[inline]
-    #[track_caller]
-    pub fn point_at(&self, pos: usize) -> Point {
-        self.nodes[pos].point
-    }
-
-    /// Position of the counter-clockwise successor of the vertex at `pos`.
-    ///
-    /// # Panics
-    /// `pos` is not below [`len`](Self::len).
-    #[inline]
-    #[track_caller]
-    pub fn next_at(&self, pos: usize) -> usize {
-        self.nodes[pos].next as usize
-    }
-
-    /// Position of the counter-clockwise predecessor of the vertex at `pos`.
-    ///
-    /// # Panics
-    /// `pos` is not below [`len`](Self::len).
-    #[inline]
-    #[track_caller]
-    pub fn prev_at(&self, pos: usize) -> usize {
-        self.nodes[pos].prev as usize
-    }
-
-    /// The stable handle of the vertex at `pos`.
-    ///
-    /// # Panics
-    /// `pos` is not below [`len`](Self::len).
-    #[inline]
-    #[track_caller]
-    pub fn id_at(&self, pos: usize) -> VertexId {
-        let slot = self.nodes[pos].slot;
-        VertexId {
-            owner: self.owner.get(),
-            generation: self.slots[slot as usize].generation,
-            slot,
+    instrument_pub! {
+        /// The point stored at position `pos` (positions are `0..len`, valid until the next edit).
+        ///
+        /// # Panics
+        /// `pos` is not below [`len`](Self::len).
+        #[inline]
+        #[track_caller]
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn point_at(&self, pos: usize) -> Point {
+            self.nodes[pos].point
         }
     }
 
-    /// The current position of a vertex (valid until the next edit).
-    ///
-    /// # Errors
-    /// [`EditError::StaleHandle`] or [`EditError::ForeignHandle`] when `id` is not a
-    /// live vertex of this polygon.
-    pub fn position(&self, id: VertexId) -> Result<usize, EditError> {
-        self.pos(id)
+    instrument_pub! {
+        /// Position of the counter-clockwise successor of the vertex at `pos`.
+        ///
+        /// # Panics
+        /// `pos` is not below [`len`](Self::len).
+        #[inline]
+        #[track_caller]
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn next_at(&self, pos: usize) -> usize {
+            self.nodes[pos].next as usize
+        }
     }
 
-    /// Checks every invariant: links are mutual inverses forming one cycle through all
-    /// nodes, slots and nodes point at each other, the arena holds only live vertices,
-    /// and the boundary is strictly convex, counter-clockwise, winding once. O(n).
-    ///
-    /// # Errors
-    /// A description of the first violated invariant.
-    pub fn debug_validate(&self) -> Result<(), String> {
-        let n = self.nodes.len();
-        if n < 3 {
-            return Err(format!("{n} vertices"));
+    instrument_pub! {
+        /// Position of the counter-clockwise predecessor of the vertex at `pos`.
+        ///
+        /// # Panics
+        /// `pos` is not below [`len`](Self::len).
+        #[inline]
+        #[track_caller]
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn prev_at(&self, pos: usize) -> usize {
+            self.nodes[pos].prev as usize
         }
-        if self.slots.len() != n {
-            return Err(format!("{} slots for {n} nodes", self.slots.len()));
-        }
-        for (i, node) in self.nodes.iter().enumerate() {
-            if node.next as usize >= n || node.prev as usize >= n {
-                return Err(format!("node {i} links out of range"));
-            }
-            if self.nodes[node.next as usize].prev as usize != i {
-                return Err(format!("node {i}: next.prev is not node {i}"));
-            }
-            match self.slots.get(node.slot as usize) {
-                Some(s) if s.pos as usize == i => {}
-                _ => return Err(format!("node {i}: its slot does not point back")),
+    }
+
+    instrument_pub! {
+        /// The stable handle of the vertex at `pos`.
+        ///
+        /// # Panics
+        /// `pos` is not below [`len`](Self::len).
+        #[inline]
+        #[track_caller]
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn id_at(&self, pos: usize) -> VertexId {
+            let slot = self.nodes[pos].slot;
+            VertexId {
+                owner: self.owner.get(),
+                generation: self.slots[slot as usize].generation,
+                slot,
             }
         }
-        let mut pos = 0;
-        for step in 1..=n {
-            pos = self.next_at(pos);
-            if pos == 0 && step != n {
-                return Err(format!("the cycle through node 0 has {step} nodes, not {n}"));
+    }
+
+    instrument_pub! {
+        /// The current position of a vertex (valid until the next edit).
+        ///
+        /// # Errors
+        /// [`EditError::StaleHandle`] or [`EditError::ForeignHandle`] when `id` is not a
+        /// live vertex of this polygon.
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn position(&self, id: VertexId) -> Result<usize, EditError> {
+            self.pos(id)
+        }
+    }
+
+    instrument_pub! {
+        /// Checks every invariant: links are mutual inverses forming one cycle through all
+        /// nodes, slots and nodes point at each other, the arena holds only live vertices,
+        /// and the boundary is strictly convex, counter-clockwise, winding once. O(n).
+        ///
+        /// # Errors
+        /// A description of the first violated invariant.
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn debug_validate(&self) -> Result<(), String> {
+            let n = self.nodes.len();
+            if n < 3 {
+                return Err(format!("{n} vertices"));
             }
+            if self.slots.len() != n {
+                return Err(format!("{} slots for {n} nodes", self.slots.len()));
+            }
+            for (i, node) in self.nodes.iter().enumerate() {
+                if node.next as usize >= n || node.prev as usize >= n {
+                    return Err(format!("node {i} links out of range"));
+                }
+                if self.nodes[node.next as usize].prev as usize != i {
+                    return Err(format!("node {i}: next.prev is not node {i}"));
+                }
+                match self.slots.get(node.slot as usize) {
+                    Some(s) if s.pos as usize == i => {}
+                    _ => return Err(format!("node {i}: its slot does not point back")),
+                }
+            }
+            let mut pos = 0;
+            for step in 1..=n {
+                pos = self.next_at(pos);
+                if pos == 0 && step != n {
+                    return Err(format!("the cycle through node 0 has {step} nodes, not {n}"));
+                }
+            }
+            if pos != 0 {
+                return Err("the boundary walk does not close".into());
+            }
+            if self.relinks == 0 && (0..n).any(|i| self.next_at(i) != (i + 1) % n) {
+                return Err("no relinks recorded, but the arena is not in boundary order".into());
+            }
+            self.to_convex().debug_validate()
         }
-        if pos != 0 {
-            return Err("the boundary walk does not close".into());
-        }
-        if self.relinks == 0 && (0..n).any(|i| self.next_at(i) != (i + 1) % n) {
-            return Err("no relinks recorded, but the arena is not in boundary order".into());
-        }
-        self.to_convex().debug_validate()
     }
 }
 
