@@ -409,7 +409,7 @@ fn calibrate_writes_only_json_on_stdout() {
     let sizes: Vec<usize> = serde_json::from_value(value["sizes"].clone()).expect("sizes");
     assert_eq!(sizes, polysect::store::CostModel::sizes());
     let costs: polysect::store::CostModel = serde_json::from_str(&out).expect("a CostModel");
-    assert!(costs.convert_ns.iter().all(|c| c.is_finite() && *c > 0.0));
+    assert!(costs.tables().iter().flatten().all(|c| c.is_finite() && *c > 0.0));
     let mut scene = polysect::store::Scene::new();
     scene.set_costs(costs);
     assert_eq!(scene.costs(), costs);

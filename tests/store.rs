@@ -512,10 +512,11 @@ fn certified_linear_walks_verify() {
     use polysect::intersect::verify_linked;
     let mut rng = SmallRng::seed_from_u64(0x11ea);
     let mut scene = scattered_scene(&mut rng, 24, 5);
-    let mut costs = scene.costs();
-    costs.convert_ns = costs.convert_ns.map(|_| 1e12);
-    costs.convert_ordered_ns = costs.convert_ordered_ns.map(|_| 1e12);
-    scene.set_costs(costs);
+    let mut tables = scene.costs().tables();
+    // Conversion (shuffled and ordered arenas) priced out.
+    tables[0] = tables[0].map(|_| 1e12);
+    tables[1] = tables[1].map(|_| 1e12);
+    scene.set_costs(polysect::store::CostModel::from_tables(tables));
     let ids: Vec<_> = scene.ids().collect();
     let (mut separated, mut meeting) = (0, 0);
     for step in 0..600 {

@@ -172,15 +172,18 @@ fn separating_edge<K: Kernel, P: Probe>(
     None
 }
 
-/// The O(n·m) oracle: the polygons intersect iff two edges meet (closed segments)
-/// or a vertex of one lies in the other. Exact under the exact kernel; used to check
-/// [`Linear`] and never on a hot path.
-pub fn brute_force<K: Kernel>(k: K, p: &ConvexPolygon, q: &ConvexPolygon) -> bool {
-    let (pv, qv) = (p.vertices(), q.vertices());
-    let contains = |v: &[Point], x: Point| edges(v).all(|(a, b)| k.orient(a, b, x) != Orientation::Cw);
-    edges(pv).any(|(a, b)| edges(qv).any(|(c, d)| segments_intersect(k, a, b, c, d)))
-        || contains(qv, pv[0])
-        || contains(pv, qv[0])
+instrument_pub! {
+    /// The O(n·m) oracle: the polygons intersect iff two edges meet (closed segments)
+    /// or a vertex of one lies in the other. Exact under the exact kernel; used to check
+    /// [`Linear`] and never on a hot path.
+    #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+    fn brute_force<K: Kernel>(k: K, p: &ConvexPolygon, q: &ConvexPolygon) -> bool {
+        let (pv, qv) = (p.vertices(), q.vertices());
+        let contains = |v: &[Point], x: Point| edges(v).all(|(a, b)| k.orient(a, b, x) != Orientation::Cw);
+        edges(pv).any(|(a, b)| edges(qv).any(|(c, d)| segments_intersect(k, a, b, c, d)))
+            || contains(qv, pv[0])
+            || contains(pv, qv[0])
+    }
 }
 
 /// The closed boundary's edges (v[i], v[i + 1]).

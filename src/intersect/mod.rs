@@ -67,7 +67,12 @@ pub use dobkin::Dobkin;
 #[cfg(feature = "instrument")]
 pub use dobkin::DobkinVariant;
 pub use fallback::{exact_certificate, proven, proven_linked};
-pub use linear::{Linear, brute_force};
+pub use linear::Linear;
+#[cfg(feature = "instrument")]
+pub use linear::brute_force;
+#[cfg(not(feature = "instrument"))]
+#[allow(unused_imports)] // the fuzzing oracles (`protocol`) use it
+pub(crate) use linear::brute_force;
 pub use linear_linked::LinearLinked;
 pub(crate) use linear_linked::separating_edge_at;
 pub use linked::LinkedIntersection;

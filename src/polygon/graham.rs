@@ -32,14 +32,17 @@ use super::{ConvexPolygon, PolygonError};
 use crate::kernel::{Exact, Kernel, Orientation, Point, Sign};
 use std::cmp::Ordering;
 
-/// The index of the lowest point (smallest y), the leftmost of those (smallest x);
-/// the first such index when the point repeats. `None` for an empty set. Points must
-/// be finite.
-pub fn pivot_index(points: &[Point]) -> Option<usize> {
-    (0..points.len()).min_by(|&a, &b| {
-        let (p, q) = (points[a], points[b]);
-        p.y.total_cmp(&q.y).then(p.x.total_cmp(&q.x))
-    })
+instrument_pub! {
+    /// The index of the lowest point (smallest y), the leftmost of those (smallest x);
+    /// the first such index when the point repeats. `None` for an empty set. Points must
+    /// be finite.
+    #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+    fn pivot_index(points: &[Point]) -> Option<usize> {
+        (0..points.len()).min_by(|&a, &b| {
+            let (p, q) = (points[a], points[b]);
+            p.y.total_cmp(&q.y).then(p.x.total_cmp(&q.x))
+        })
+    }
 }
 
 /// The order of the angular sort: `a` before `b` around `pivot` (both in the
@@ -57,42 +60,45 @@ fn by_angle(pivot: Point, a: Point, b: Point) -> Ordering {
     }
 }
 
-/// The points' indices in angular order around the pivot ([`pivot_index`]), pivot
-/// first: counter-clockwise by the angle seen from the pivot, nearer first on each ray
-/// except the last, where the farther come first. Copies of the pivot are dropped;
-/// other repeated points stay (consecutive). With at least three non-collinear
-/// points, the points in this order are the vertices of a simple polygon (the notes'
-/// angular sort). Exact; O(n log n). Points must be finite.
-///
-/// ```
-/// use polysect::polygon::angular_order;
-/// use polysect::Point;
-/// // The pivot (0, 0); (1, 1) and (2, 2) lie on the last ray: farthest first.
-/// let pts = [[2.0, 2.0], [1.0, 1.0], [0.0, 0.0], [3.0, 1.0], [2.0, 0.0]].map(Point::from);
-/// assert_eq!(angular_order(&pts), [2, 4, 3, 0, 1]);
-/// ```
-pub fn angular_order(points: &[Point]) -> Vec<usize> {
-    let Some(pivot) = pivot_index(points) else {
-        return Vec::new();
-    };
-    let o = points[pivot];
-    let mut rest: Vec<usize> = (0..points.len()).filter(|&i| points[i] != o).collect();
-    rest.sort_by(|&a, &b| by_angle(o, points[a], points[b]).then(a.cmp(&b)));
-    // The last ray: the trailing run collinear with the pivot and the last point,
-    // reversed (farthest first). When every point is on one ray, that ray is the last.
-    if let Some(&last) = rest.last() {
-        let run = rest
-            .iter()
-            .rev()
-            .take_while(|&&i| Exact.orient(o, points[last], points[i]) == Orientation::Collinear)
-            .count();
-        let len = rest.len();
-        rest[len - run..].reverse();
+instrument_pub! {
+    /// The points' indices in angular order around the pivot ([`pivot_index`]), pivot
+    /// first: counter-clockwise by the angle seen from the pivot, nearer first on each ray
+    /// except the last, where the farther come first. Copies of the pivot are dropped;
+    /// other repeated points stay (consecutive). With at least three non-collinear
+    /// points, the points in this order are the vertices of a simple polygon (the notes'
+    /// angular sort). Exact; O(n log n). Points must be finite.
+    ///
+    /// ```
+    /// use polysect::polygon::angular_order;
+    /// use polysect::Point;
+    /// // The pivot (0, 0); (1, 1) and (2, 2) lie on the last ray: farthest first.
+    /// let pts = [[2.0, 2.0], [1.0, 1.0], [0.0, 0.0], [3.0, 1.0], [2.0, 0.0]].map(Point::from);
+    /// assert_eq!(angular_order(&pts), [2, 4, 3, 0, 1]);
+    /// ```
+    #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+    fn angular_order(points: &[Point]) -> Vec<usize> {
+        let Some(pivot) = pivot_index(points) else {
+            return Vec::new();
+        };
+        let o = points[pivot];
+        let mut rest: Vec<usize> = (0..points.len()).filter(|&i| points[i] != o).collect();
+        rest.sort_by(|&a, &b| by_angle(o, points[a], points[b]).then(a.cmp(&b)));
+        // The last ray: the trailing run collinear with the pivot and the last point,
+        // reversed (farthest first). When every point is on one ray, that ray is the last.
+        if let Some(&last) = rest.last() {
+            let run = rest
+                .iter()
+                .rev()
+                .take_while(|&&i| Exact.orient(o, points[last], points[i]) == Orientation::Collinear)
+                .count();
+            let len = rest.len();
+            rest[len - run..].reverse();
+        }
+        let mut order = Vec::with_capacity(rest.len() + 1);
+        order.push(pivot);
+        order.extend(rest);
+        order
     }
-    let mut order = Vec::with_capacity(rest.len() + 1);
-    order.push(pivot);
-    order.extend(rest);
-    order
 }
 
 /// Graham's scan on finite points: the hull's vertex indices, counter-clockwise from

@@ -62,31 +62,31 @@ pub const COST_SIZES: usize = 17;
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct CostModel {
     /// Converting one linked polygon of that size to an array, shuffled arena.
-    pub convert_ns: [f64; COST_SIZES],
+    pub(crate) convert_ns: [f64; COST_SIZES],
     /// The same, arena in boundary order.
-    pub convert_ordered_ns: [f64; COST_SIZES],
+    pub(crate) convert_ordered_ns: [f64; COST_SIZES],
     /// The sampled test (Chazelle–Liu–Magen) on two linked polygons of that size
     /// (shuffled arenas; its reads are random anyway).
-    pub sampled_ns: [f64; COST_SIZES],
+    pub(crate) sampled_ns: [f64; COST_SIZES],
     /// The linear test walking two linked polygons of that size
     /// ([`LinearLinked`](crate::intersect::LinearLinked)), shuffled arenas.
-    pub linear_ns: [f64; COST_SIZES],
+    pub(crate) linear_ns: [f64; COST_SIZES],
     /// The same, arenas in boundary order.
-    pub linear_ordered_ns: [f64; COST_SIZES],
+    pub(crate) linear_ordered_ns: [f64; COST_SIZES],
     /// The array test on two snapshots of that size: [`Linear`](crate::intersect::Linear)
     /// up to `array_linear_max` vertices, Barba–Langerman above.
-    pub array_ns: [f64; COST_SIZES],
+    pub(crate) array_ns: [f64; COST_SIZES],
     /// The largest size at which the linear array test beats Barba–Langerman; a pair
     /// of snapshots with at most twice this many vertices in all is tested linearly.
-    pub array_linear_max: usize,
+    pub(crate) array_linear_max: usize,
     /// Summary, at 2^18 vertices: conversion per vertex (shuffled arena).
-    pub convert_ns_per_vertex: f64,
+    pub(crate) convert_ns_per_vertex: f64,
     /// Summary: the median over the sizes of the sampled test's time per √n.
-    pub sampled_ns_per_sqrt_n: f64,
+    pub(crate) sampled_ns_per_sqrt_n: f64,
     /// The largest size at which two fresh polygons (arenas in boundary order) are
     /// converted on their first query (converting both costs less than what snapshots
     /// save that query); 0 if none.
-    pub crossover: usize,
+    pub(crate) crossover: usize,
 }
 
 /// What the cost model needs to know of a linked polygon: its size and how far its
@@ -203,6 +203,20 @@ impl CostModel {
              root of the size per sampled query).",
             self.convert_ns_per_vertex, self.sampled_ns_per_sqrt_n
         )
+    }
+
+    /// The model's tables, in the order [`from_tables`](Self::from_tables) takes them:
+    /// a model built from them prices every query as this one does, except that the
+    /// linear array test's range (`array_linear_max`, measured by calibration) is 0.
+    pub fn tables(&self) -> [[f64; COST_SIZES]; 6] {
+        [
+            self.convert_ns,
+            self.convert_ordered_ns,
+            self.sampled_ns,
+            self.linear_ns,
+            self.linear_ordered_ns,
+            self.array_ns,
+        ]
     }
 
     /// A model from its tables, in this order: conversion (shuffled, ordered), sampled,

@@ -100,5 +100,7 @@ pub mod workload;
 
 pub use crate::kernel::BoundingBox;
 pub use cost::{COST_SIZES, CostModel, PlannerStats, Strategy};
+// Warm-start counts: for experiments.
 pub use scene::{PolygonId, Scene, SceneError};
+#[cfg(feature = "instrument")]
 pub use warm::WarmStats;

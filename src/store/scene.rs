@@ -323,9 +323,12 @@ impl<K: Kernel> Scene<K> {
         }
     }
 
-    /// Counters of the warm starts (cleared by [`reset_stats`](Self::reset_stats)).
-    pub fn warm_stats(&self) -> WarmStats {
-        self.warm.stats
+    instrument_pub! {
+        /// Counters of the warm starts (cleared by [`reset_stats`](Self::reset_stats)).
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn warm_stats(&self) -> WarmStats {
+            self.warm.stats
+        }
     }
 
     /// Number of polygons.
@@ -348,9 +351,12 @@ impl<K: Kernel> Scene<K> {
         })
     }
 
-    /// Number of polygons that currently hold an array snapshot.
-    pub fn snapshot_count(&self) -> usize {
-        self.entries.iter().filter(|(_, e)| e.holds_snapshot()).count()
+    instrument_pub! {
+        /// Number of polygons that currently hold an array snapshot.
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn snapshot_count(&self) -> usize {
+            self.entries.iter().filter(|(_, e)| e.holds_snapshot()).count()
+        }
     }
 
     /// Heap memory held by the scene's structures, in bytes: the polygons' arenas (with
@@ -482,12 +488,15 @@ impl<K: Kernel> Scene<K> {
         self.key(id).map(|k| self.entries[k].version)
     }
 
-    /// True while the polygon holds a valid array snapshot.
-    ///
-    /// # Errors
-    /// `StalePolygon`, `ForeignPolygon`.
-    pub fn has_snapshot(&self, id: PolygonId) -> Result<bool, SceneError> {
-        self.key(id).map(|k| self.entries[k].holds_snapshot())
+    instrument_pub! {
+        /// True while the polygon holds a valid array snapshot.
+        ///
+        /// # Errors
+        /// `StalePolygon`, `ForeignPolygon`.
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn has_snapshot(&self, id: PolygonId) -> Result<bool, SceneError> {
+            self.key(id).map(|k| self.entries[k].holds_snapshot())
+        }
     }
 
     /// Inserts a vertex after `after` (see [`LinkedPolygon::insert_after`]). O(1).

@@ -68,16 +68,19 @@ struct Kept {
     warm: Warm,
 }
 
-/// Counters of the warm starts, for tests and benches.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct WarmStats {
-    /// Pairs proved separated by their kept certificate.
-    pub hits: u64,
-    /// Kept certificates that no longer separate (or whose handles died): the planner's
-    /// test answered.
-    pub misses: u64,
-    /// Linear walks run to find a certificate for a pair separated the frame before.
-    pub fills: u64,
+instrument_pub! {
+    /// Counters of the warm starts, for tests and benches.
+    #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+    #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+    struct WarmStats {
+        /// Pairs proved separated by their kept certificate.
+        pub hits: u64,
+        /// Kept certificates that no longer separate (or whose handles died): the planner's
+        /// test answered.
+        pub misses: u64,
+        /// Linear walks run to find a certificate for a pair separated the frame before.
+        pub fills: u64,
+    }
 }
 
 /// The warm-start cache: the last frame's candidate pairs, sorted by keys.

@@ -55,42 +55,45 @@ impl LinkedPolygon {
         out.into_iter().map(|p| self.id_at(p as usize)).collect()
     }
 
-    /// Appends to `out` the positions of `min(k, len)` distinct vertices, a uniformly
-    /// random subset. Expected O(k): for k ≤ len/2, rejection sampling with marks in
-    /// `workspace` (expected fewer than 2k draws); otherwise the len − k excluded
-    /// positions are drawn the same way and the rest are listed, O(len) ≤ O(2k).
-    /// The order of the returned positions is not uniform; the set is.
-    pub fn sample_positions<R: Rng + ?Sized>(
-        &self,
-        k: usize,
-        rng: &mut R,
-        workspace: &mut SampleWorkspace,
-        out: &mut Vec<u32>,
-    ) {
-        let n = self.len();
-        if k >= n {
-            out.extend(0..n as u32);
-            return;
-        }
-        workspace.begin(n);
-        if 2 * k <= n {
-            let mut taken = 0;
-            while taken < k {
-                let i = rng.random_range(0..n);
-                if workspace.mark(i) {
-                    out.push(i as u32);
-                    taken += 1;
-                }
+    instrument_pub! {
+        /// Appends to `out` the positions of `min(k, len)` distinct vertices, a uniformly
+        /// random subset. Expected O(k): for k ≤ len/2, rejection sampling with marks in
+        /// `workspace` (expected fewer than 2k draws); otherwise the len − k excluded
+        /// positions are drawn the same way and the rest are listed, O(len) ≤ O(2k).
+        /// The order of the returned positions is not uniform; the set is.
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn sample_positions<R: Rng + ?Sized>(
+            &self,
+            k: usize,
+            rng: &mut R,
+            workspace: &mut SampleWorkspace,
+            out: &mut Vec<u32>,
+        ) {
+            let n = self.len();
+            if k >= n {
+                out.extend(0..n as u32);
+                return;
             }
-        } else {
-            let mut excluded = 0;
-            while excluded < n - k {
-                if workspace.mark(rng.random_range(0..n)) {
-                    excluded += 1;
+            workspace.begin(n);
+            if 2 * k <= n {
+                let mut taken = 0;
+                while taken < k {
+                    let i = rng.random_range(0..n);
+                    if workspace.mark(i) {
+                        out.push(i as u32);
+                        taken += 1;
+                    }
                 }
+            } else {
+                let mut excluded = 0;
+                while excluded < n - k {
+                    if workspace.mark(rng.random_range(0..n)) {
+                        excluded += 1;
+                    }
+                }
+                let epoch = workspace.epoch;
+                out.extend((0..n as u32).filter(|&i| workspace.stamps[i as usize] != epoch));
             }
-            let epoch = workspace.epoch;
-            out.extend((0..n as u32).filter(|&i| workspace.stamps[i as usize] != epoch));
         }
     }
 }
