@@ -106,7 +106,12 @@ pub mod polygon;
 pub mod protocol;
 #[cfg(feature = "protocol")]
 pub mod render;
+// How unseeded entry points are seeded: an API for the tool (`instrument`), decided
+// in one place for both builds.
+#[cfg(feature = "instrument")]
 pub mod seeding;
+#[cfg(not(feature = "instrument"))]
+mod seeding;
 #[cfg(feature = "cli")]
 pub mod serve;
 pub mod store;

@@ -53,7 +53,7 @@ impl BoundingBox {
 
     /// Extends the box to contain `p`.
     #[inline]
-    pub fn grow(&mut self, p: Point) {
+    pub(crate) fn grow(&mut self, p: Point) {
         self.min.x = self.min.x.min(p.x);
         self.min.y = self.min.y.min(p.y);
         self.max.x = self.max.x.max(p.x);
@@ -68,7 +68,7 @@ impl BoundingBox {
 
     /// True when `p` lies on the box's boundary (removing or moving it may shrink the box).
     #[inline]
-    pub fn touches_boundary(&self, p: Point) -> bool {
+    pub(crate) fn touches_boundary(&self, p: Point) -> bool {
         p.x == self.min.x || p.x == self.max.x || p.y == self.min.y || p.y == self.max.y
     }
 }

@@ -30,7 +30,7 @@ pub(crate) mod exact;
 #[cfg(feature = "serde")]
 mod point_serde;
 mod pose;
-pub mod rational;
+mod rational;
 mod segment;
 
 pub use bbox::BoundingBox;
@@ -167,7 +167,7 @@ impl Sign {
 
     /// As an ordering against zero.
     #[inline]
-    pub fn to_ordering(self) -> Ordering {
+    pub(crate) fn to_ordering(self) -> Ordering {
         match self {
             Sign::Negative => Ordering::Less,
             Sign::Zero => Ordering::Equal,

@@ -54,7 +54,7 @@ fn pow2(e: i64) -> f64 {
 
 impl Rational {
     /// Zero.
-    pub fn zero() -> Rational {
+    pub(crate) fn zero() -> Rational {
         Rational {
             num: BigInt::zero(),
             den: BigInt::one(),
@@ -65,7 +65,7 @@ impl Rational {
     ///
     /// # Panics
     /// On NaN or infinity (validated polygons never hold them).
-    pub fn from_f64(x: f64) -> Rational {
+    pub(crate) fn from_f64(x: f64) -> Rational {
         assert!(x.is_finite(), "exact arithmetic on a non-finite value");
         let (m, e) = decompose(x);
         let m = BigInt::from(m);
@@ -87,7 +87,7 @@ impl Rational {
     ///
     /// # Panics
     /// When `den` is zero.
-    pub fn new(num: BigInt, den: BigInt) -> Rational {
+    pub(crate) fn new(num: BigInt, den: BigInt) -> Rational {
         assert!(!den.is_zero(), "a rational with denominator zero");
         if den.is_negative() {
             Rational { num: -num, den: -den }.reduced()
@@ -150,7 +150,7 @@ impl Rational {
     }
 
     /// The square `self · self`.
-    pub fn square(&self) -> Rational {
+    pub(crate) fn square(&self) -> Rational {
         self * self
     }
 
@@ -167,7 +167,7 @@ impl Rational {
     ///
     /// # Panics
     /// When the value is negative.
-    pub fn sqrt_to_f64(&self) -> f64 {
+    pub(crate) fn sqrt_to_f64(&self) -> f64 {
         assert!(!self.num.is_negative(), "square root of a negative rational");
         round_sqrt_quotient(&self.num, &self.den)
     }

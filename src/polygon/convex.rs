@@ -164,25 +164,28 @@ impl ConvexPolygon {
         self.bbox
     }
 
-    /// The largest coordinate difference along an edge: the maximum of
-    /// `|fl(vᵢ₊₁.x − vᵢ.x)|` and `|fl(vᵢ₊₁.y − vᵢ.y)|` over the edges (closing edge
-    /// included), each difference computed in `f64` as the predicates compute it.
-    /// The cross product of two edges of polygons whose extents are at most `w` can be
-    /// asked of [`Kernel::within_differences`]`(w)`, whose exact kernel's error bound is
-    /// scaled to `w` instead of the boxes. O(1) after [`ConvexPolygon::new`], which
-    /// computes it; after [`ConvexPolygon::from_ccw_unchecked`] O(n) on the first call
-    /// and O(1) after (kept with the polygon). Infinite
-    /// when a difference overflows (coordinates beside `±f64::MAX`).
-    ///
-    /// ```
-    /// use polysect::ConvexPolygon;
-    /// let p = ConvexPolygon::new([[0.0, 0.0], [4.0, 0.0], [4.0, 1.0], [0.0, 3.0]])?;
-    /// assert_eq!(p.edge_extent(), 4.0);
-    /// # Ok::<(), polysect::PolygonError>(())
-    /// ```
-    #[inline]
-    pub fn edge_extent(&self) -> f64 {
-        *self.edge_extent.get_or_init(|| edge_extent_of(&self.vertices))
+    instrument_pub! {
+        /// The largest coordinate difference along an edge: the maximum of
+        /// `|fl(vᵢ₊₁.x − vᵢ.x)|` and `|fl(vᵢ₊₁.y − vᵢ.y)|` over the edges (closing edge
+        /// included), each difference computed in `f64` as the predicates compute it.
+        /// The cross product of two edges of polygons whose extents are at most `w` can be
+        /// asked of [`Kernel::within_differences`]`(w)`, whose exact kernel's error bound is
+        /// scaled to `w` instead of the boxes. O(1) after [`ConvexPolygon::new`], which
+        /// computes it; after [`ConvexPolygon::from_ccw_unchecked`] O(n) on the first call
+        /// and O(1) after (kept with the polygon). Infinite
+        /// when a difference overflows (coordinates beside `±f64::MAX`).
+        ///
+        /// ```
+        /// use polysect::ConvexPolygon;
+        /// let p = ConvexPolygon::new([[0.0, 0.0], [4.0, 0.0], [4.0, 1.0], [0.0, 3.0]])?;
+        /// assert_eq!(p.edge_extent(), 4.0);
+        /// # Ok::<(), polysect::PolygonError>(())
+        /// ```
+        #[inline]
+        #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
+        fn edge_extent(&self) -> f64 {
+            *self.edge_extent.get_or_init(|| edge_extent_of(&self.vertices))
+        }
     }
 
     instrument_pub! {

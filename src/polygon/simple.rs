@@ -184,12 +184,6 @@ impl SimplePolygon {
         Ok(SimplePolygon { vertices })
     }
 
-    /// Wraps a vertex list already known to be simple, with no repeated and no
-    /// straight vertex. Nothing is checked; use [`SimplePolygon::debug_validate`] in tests.
-    pub fn from_vertices_unchecked(vertices: Vec<Point>) -> Self {
-        SimplePolygon { vertices }
-    }
-
     /// The vertices, in input orientation.
     #[inline]
     pub fn vertices(&self) -> &[Point] {

@@ -93,8 +93,9 @@ impl Which {
         }
     }
 
-    /// `"p"` or `"q"`, as in the CLI's JSON.
-    pub fn name(self) -> &'static str {
+    /// `"p"` or `"q"`, as in the CLI's JSON (and [`Display`](fmt::Display)).
+    #[cfg_attr(not(feature = "protocol"), allow(dead_code))]
+    pub(crate) fn name(self) -> &'static str {
         match self {
             Which::P => "p",
             Which::Q => "q",
@@ -170,7 +171,7 @@ impl Certificate {
 
     /// The same certificate for the query with P and Q exchanged.
     #[inline]
-    pub fn swapped(self) -> Certificate {
+    pub(crate) fn swapped(self) -> Certificate {
         match self {
             Certificate::Separated { of, from, to } => Certificate::Separated {
                 of: of.other(),
