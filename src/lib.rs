@@ -4,8 +4,8 @@
 //! arena-backed doubly linked lists ([`LinkedPolygon`]) with O(1) validated edits and
 //! O(1) uniform vertex sampling. "Do P and Q intersect?" is answered in O(log n) on
 //! arrays ([`intersect::Barba`], [`intersect::Dobkin`], [`intersect::ChazelleDobkin`]),
-//! in expected O(√n) straight on linked lists ([`intersect::Clm`], built on the 2D LP in
-//! [`lp`]), or by the O(n + m) reference [`intersect::Linear`]. A [`store::Scene`] keeps
+//! in expected O(√n) straight on linked lists ([`intersect::Clm`], built on an in-crate
+//! Seidel 2D LP), or by the O(n + m) reference [`intersect::Linear`]. A [`store::Scene`] keeps
 //! many editable polygons and plans each query. [`crossings`] finds the points where
 //! two simple polygons' boundaries meet.
 //!
@@ -124,8 +124,8 @@ pub struct ReadmeDoctests;
 pub use kernel::{BoundingBox, Exact, Fast, Kernel, Orientation, Point, Precision, Sign};
 
 /// The `rand` crate (0.9) whose types appear in this crate's signatures: sampled
-/// queries take any `R: rand::Rng`, and [`LinkedPolygon::from_convex_shuffled`] a
-/// generator to shuffle with. Use this re-export (`polysect::rand::SeedableRng`,
+/// queries take any `R: rand::Rng` (and with `instrument`,
+/// `LinkedPolygon::from_convex_shuffled` a generator to shuffle with). Use this re-export (`polysect::rand::SeedableRng`,
 /// `polysect::rand::rngs::SmallRng`) to get the same version without naming it in
 /// your own `Cargo.toml`.
 pub use rand;

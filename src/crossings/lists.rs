@@ -42,7 +42,7 @@ use std::cmp::Ordering;
 /// needles). On the report's random polygons r is a small fraction of n. Memory
 /// O(n + m). W depends only on the order of the vertices: [`Sweep`](super::Sweep)
 /// counts it in O(n + m) before testing any pair, to choose between this and
-/// [`TreeSweep`](super::TreeSweep) ([`ListSweep::work`] reports W with the number of
+/// [`TreeSweep`](super::TreeSweep) (with `instrument`, `ListSweep::work` reports W with the number of
 /// pair tests).
 ///
 /// # Degeneracies and precision

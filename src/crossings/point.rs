@@ -36,7 +36,7 @@ use num_traits::Zero;
 ///    tie, a result that is zero or subnormal, coordinates of one pair spanning more
 ///    than 2²⁰⁰, or D and N too small for the filter's underflow-free range) the
 ///    numerator a·D + N·(b − a) and D are evaluated exactly on the inputs' dyadic
-///    values with big integers ([`Dyadic`]) and their quotient is rounded by a big
+///    values with big integers (the exact kernel's dyadic numbers) and their quotient is rounded by a big
 ///    integer division with a sticky remainder.
 ///
 /// Both paths return the same value, the rounded exact coordinate, so the point does

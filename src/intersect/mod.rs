@@ -4,32 +4,32 @@
 //! collinear edges and containment all count as intersection. Every algorithm is
 //! written once, generic over the [`Kernel`]; under [`Exact`] all of them give the
 //! same answer on every valid input, which the test suite checks against
-//! [`Linear`] and [`brute_force`].
+//! [`Linear`] and an O(n·m) brute force (`brute_force`, with `instrument`).
 //!
 //! | algorithm | input | time | notes |
 //! |---|---|---|---|
 //! | [`Linear`] | arrays | O(n + m) | separating-edge search with rotating pointers; the reference |
-//! | [`brute_force`] | arrays | O(n·m) | every edge pair plus containment; the oracle for `Linear` |
 //! | [`Barba`] | arrays | O(log n + log m) | inner triangle of P against the edge hull of three edges of Q; halves one of them per step; uses one degree-4 predicate |
 //! | [`Dobkin`] | arrays | O(log n + log m) | top/bottom by binary search, then left chain against right chain twice by slope comparisons; orient/cross only |
 //! | [`ChazelleDobkin`] | arrays | O(log n + log m) | pivot, pencil of tangents, the two L chains halved by middle-edge slopes in a projective frame |
-//! | [`Clm`] | linked | expected O(√n + √m) | Chazelle–Liu–Magen: samples, a 2D LP, chains ([`crate::lp`]) |
+//! | [`Clm`] | linked | expected O(√n + √m) | Chazelle–Liu–Magen: samples, a 2D LP, chains |
 //! | [`Convert`] | linked | O(n + m) + array test | walk the lists into arrays, then an array algorithm |
 //! | [`LinearLinked`] | linked | O(n + m) | `Linear`'s rotating pointers along the links, no conversion; the store's route for small polygons |
 //!
 //! Each algorithm is a unit struct implementing [`ArrayIntersection`] and is listed
 //! once in [`Algorithm`], which the CLI, tests and benches iterate over. Tests on
 //! [`LinkedPolygon`](crate::LinkedPolygon)s implement [`LinkedIntersection`]; through
-//! [`Algorithm::run`] they take array polygons, which are linked in a shuffled arena
-//! order (as the thesis's experiments do) with a generator seeded from the operating
-//! system, or the caller's generator ([`Algorithm::run_rng`]) for reproducible runs.
+//! [`Algorithm`] they take array polygons, which are linked in a shuffled arena order
+//! (as the thesis's experiments do) with a generator seeded from the operating system
+//! (with `instrument`, `Algorithm::run_rng` takes the caller's generator, for
+//! reproducible runs).
 
 //! # Certificates
 //! Every test also has a certified call ([`ArrayIntersection::certified_with`],
 //! [`LinkedIntersection::certified_with`], [`Algorithm::certified`]) that returns a
 //! [`Certificate`] of its answer, derived from what the algorithm found
-//! ([`ArrayIntersection::derive_probed`], each algorithm's module docs) and completed
-//! by a slower search where that gives only the answer ([`Fallback`]). [`verify`]
+//! (each algorithm's module docs) and completed by a slower search where that gives
+//! only the answer. [`verify`]
 //! checks any certificate exactly in O(n + m), independently of every algorithm:
 //! run it when in doubt. docs/certificates.md has the details and the measured cost.
 
@@ -180,7 +180,7 @@ impl Algorithm {
     }
 
     instrument_pub! {
-        /// The tests on linked polygons (through [`Algorithm::run`] they link array inputs in
+        /// The tests on linked polygons (through `Algorithm::run` they link array inputs in
         /// a shuffled arena order first, which costs O(n) per call).
         #[cfg_attr(not(feature = "instrument"), allow(dead_code))]
         const LINKED: &'static [Algorithm] = &[Algorithm::Clm, Algorithm::Convert];

@@ -12,9 +12,9 @@
 //!   call at the cost of the fast kernel plus one comparison, Shewchuk's
 //!   adaptive orientation (the `robust` crate) inside the exponent range where
 //!   it is exact, and exact big-integer arithmetic on the dyadic values of the
-//!   inputs everywhere else (see [`exact`]). A query that knows the bounding boxes of
-//!   its points asks [`Kernel::within`] for [`ExactWithin`], which puts a semi-static
-//!   filter (one error bound per query) in front of those layers.
+//!   inputs everywhere else (docs/design.md, "The exact kernel's range"). The algorithms, which know the
+//!   bounding boxes of the points a query reads, narrow the kernel to them: a
+//!   semi-static filter (one error bound per query) in front of those layers.
 //!
 //! Kernels are zero-sized values chosen at compile time (`Barba.intersects_with(Exact, ..)`);
 //! [`Precision`] names them at run time (the CLI's `--precision`).
@@ -420,11 +420,11 @@ pub(crate) mod sealed {
 /// Geometric predicates, answered either quickly ([`Fast`]) or exactly ([`Exact`]).
 ///
 /// All methods take finite coordinates. `orient` is the hot predicate and has a
-/// dedicated implementation; everything else goes through [`Kernel::sign`].
+/// dedicated implementation; the others evaluate a predicate polynomial.
 ///
 /// The trait is sealed: the crate's kernels implement it, and no other type can (the
-/// algorithms rely on contracts a signature cannot state, such as what a
-/// [`within`](Kernel::within) kernel may assume). To count the predicates an algorithm
+/// algorithms rely on contracts a signature cannot state, such as what a kernel
+/// narrowed to a query's bounding boxes may assume). To count the predicates an algorithm
 /// asks, the `instrument` feature has `kernel::Counted`.
 #[allow(private_bounds)] // the supertrait seals it: see `sealed`
 pub trait Kernel: sealed::Predicates + Copy + Clone + Default + fmt::Debug + Send + Sync + 'static {

@@ -180,6 +180,7 @@ impl Pose {
     }
 
     /// Whether this is the identity map (`c = 1`, `s = 0`, no translation).
+    #[cfg(test)]
     pub(crate) fn is_identity(&self) -> bool {
         self.c == 1.0 && self.s == 0.0 && self.tx == 0.0 && self.ty == 0.0
     }

@@ -53,7 +53,7 @@
 //! not left, every point of B not right) and collects the points of each set that lie
 //! on it: since the line supports both hulls, CH(A) ∩ CH(B) = CH(A ∩ L) ∩ CH(B ∩ L), two
 //! intervals on L compared with `dot`. Under an exact kernel
-//! ([`Kernel::EXACT`](crate::Kernel::EXACT)) the pass re-tests no point when the
+//! (`Predicates::EXACT`) the pass re-tests no point when the
 //! incremental loop ran: the loop tested every point after the line's last change
 //! against it, and the one-dimensional step that made the line every point before
 //! (collecting the ones on it), with the same predicate. Under [`Fast`](crate::Fast) the predicates may

@@ -16,7 +16,8 @@
 //!
 //! # Complexity
 //! O(n) for a polygon of n vertices (each caliper goes around at most once);
-//! O(n log n) for a set of n points (the hull); [`farthest_pair_naive`] is O(n²).
+//! O(n log n) for a set of n points (the hull); the naive oracles (`*_naive`, with `instrument`) are
+//! O(n²) or worse.
 //!
 //! # Degeneracies
 //! Ties are real answers: when several pairs are equally far apart, the walk reports

@@ -63,7 +63,7 @@ impl ConvexPolygon {
 
     /// Wraps a list already known to be strictly convex and counter-clockwise.
     /// Nothing is checked; an invalid list makes every algorithm's answer meaningless.
-    /// Use [`ConvexPolygon::debug_validate`] in tests.
+    /// Tests check such lists with `ConvexPolygon::debug_validate` (`instrument`).
     pub fn from_ccw_unchecked(vertices: Vec<Point>) -> Self {
         ConvexPolygon::with_box(vertices)
     }
@@ -169,7 +169,7 @@ impl ConvexPolygon {
         /// `|fl(vᵢ₊₁.x − vᵢ.x)|` and `|fl(vᵢ₊₁.y − vᵢ.y)|` over the edges (closing edge
         /// included), each difference computed in `f64` as the predicates compute it.
         /// The cross product of two edges of polygons whose extents are at most `w` can be
-        /// asked of [`Kernel::within_differences`]`(w)`, whose exact kernel's error bound is
+        /// asked of the kernel narrowed to differences of at most `w`, whose error bound is
         /// scaled to `w` instead of the boxes. O(1) after [`ConvexPolygon::new`], which
         /// computes it; after [`ConvexPolygon::from_ccw_unchecked`] O(n) on the first call
         /// and O(1) after (kept with the polygon). Infinite

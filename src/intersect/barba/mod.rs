@@ -246,7 +246,7 @@ impl<const T: bool, const S: usize, const E: bool> ArrayIntersection for BarbaVa
 
     array_entry_points!(plain);
 
-    /// [`certified_probed`](ArrayIntersection::certified_probed) without a probe, from
+    /// [`ArrayEngine::certified_probed`] without a probe, from
     /// a run that builds the certificate where it ends (the `Certify` mode): the same
     /// certificate, written once instead of passed up as a [`Derivation`] and moved.
     fn certified_with<K: Kernel>(&self, k: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Certificate {

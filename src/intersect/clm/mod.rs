@@ -195,7 +195,7 @@ use query::clm;
 use rand::{Rng, RngCore};
 
 /// The Chazelle–Liu–Magen sublinear test with the default sample factor
-/// [`Clm::SAMPLE_FACTOR`]; see the module docs.
+/// `Clm::SAMPLE_FACTOR` (1); see the module docs.
 ///
 /// ```
 /// use polysect::{ConvexPolygon, LinkedPolygon};

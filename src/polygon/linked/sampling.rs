@@ -5,7 +5,7 @@
 use super::{LinkedPolygon, VertexId};
 use rand::Rng;
 
-/// Scratch memory for [`LinkedPolygon::sample_positions`], reused across queries so a
+/// Scratch memory for the sampling of [`LinkedPolygon`]s, reused across queries so a
 /// query allocates nothing in the steady state. Holds one `u32` stamp per vertex of the
 /// largest polygon sampled so far.
 #[derive(Clone, Debug, Default)]
@@ -48,7 +48,7 @@ impl LinkedPolygon {
     }
 
     /// `k` distinct uniformly random vertices (all of them when `k >= len`), as handles.
-    /// Allocates; queries use [`sample_positions`](Self::sample_positions) with a workspace.
+    /// Allocates; the crate's queries sample positions into a reused workspace.
     pub fn sample<R: Rng + ?Sized>(&self, k: usize, rng: &mut R) -> Vec<VertexId> {
         let mut out = Vec::with_capacity(k.min(self.len()));
         self.sample_positions(k, rng, &mut SampleWorkspace::new(), &mut out);
