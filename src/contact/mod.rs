@@ -95,8 +95,8 @@ mod walk;
 
 pub use walk::Feature;
 
-use crate::kernel::sealed::Predicates as _;
 use crate::intersect::{ArrayIntersection, Barba};
+use crate::kernel::sealed::Predicates as _;
 use crate::kernel::{Exact, Kernel, Point, Rational, Sign};
 use crate::polygon::{ConvexPolygon, LinkedPolygon};
 use construct::DepthOrder;

@@ -48,11 +48,11 @@ mod sweep;
 mod tree;
 
 pub use brute::Brute;
+#[cfg(feature = "instrument")]
+pub use lists::ListWork;
 #[cfg(feature = "cli")]
 pub(crate) use lists::every_candidate;
 pub use lists::{ListSweep, ListWorkspace};
-#[cfg(feature = "instrument")]
-pub use lists::ListWork;
 pub use point::crossing_point;
 pub use sweep::{Sweep, SweepWorkspace};
 pub use tree::TreeSweep;

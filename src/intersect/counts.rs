@@ -25,7 +25,7 @@ pub struct LpCall {
 ///
 /// ```
 /// use polysect::generate::regular_polygon;
-/// use polysect::intersect::{ArrayIntersection, Barba, Counts};
+/// use polysect::intersect::{ArrayEngine, Barba, Counts};
 /// let p = regular_polygon(1024, 1.0);
 /// let q = p.map(|v| polysect::Point::new(v.x + 3.0, v.y))?;
 /// let mut counts = Counts::default();

@@ -8,11 +8,40 @@
 //! it; [`array_entry_points!`] and [`linked_entry_points!`] write the public calls of
 //! an algorithm as its engine's with `()`, so both run one body.
 
-use super::fallback::{complete, complete_linked};
 use super::{ArrayIntersection, Certificate, Derivation, LinkedIntersection, Probe};
-use crate::kernel::Kernel;
+use crate::kernel::{Kernel, Point};
 use crate::polygon::{ConvexPolygon, LinkedPolygon};
 use rand::Rng;
+
+/// The completing searches the certified calls end with where a derivation gave only
+/// the answer. Declared here and implemented for [`Completer`] in `fallback.rs`, whose
+/// searches are algorithms' (Barba's witness, Dobkin's separation): so the engines'
+/// default calls reach them without this file depending on the algorithms that
+/// implement the engines.
+pub(crate) trait Completion {
+    /// The certificate of `derivation` for the polygons with vertices `pv` and `qv`,
+    /// reporting each completion to `probe`.
+    fn complete<K: Kernel, P: Probe>(
+        k: K,
+        pv: &[Point],
+        qv: &[Point],
+        derivation: Derivation,
+        probe: &mut P,
+    ) -> Certificate;
+
+    /// [`complete`](Self::complete) for linked polygons (completed on the walked
+    /// arrays).
+    fn complete_linked<K: Kernel, P: Probe>(
+        k: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        derivation: Derivation,
+        probe: &mut P,
+    ) -> Certificate;
+}
+
+/// The implementer of [`Completion`] (in `fallback.rs`).
+pub(crate) struct Completer;
 
 instrument_pub! {
     /// An array test's run reporting to a probe, and its derivation.
@@ -49,7 +78,7 @@ instrument_pub! {
             probe: &mut P,
         ) -> Certificate {
             let derivation = self.derive_probed(kernel, p, q, probe);
-            complete(kernel, p.vertices(), q.vertices(), derivation, probe)
+            Completer::complete(kernel, p.vertices(), q.vertices(), derivation, probe)
         }
     }
 }
@@ -96,7 +125,7 @@ instrument_pub! {
             probe: &mut P,
         ) -> Certificate {
             let derivation = self.derive_in(kernel, p, q, rng, workspace, probe);
-            complete_linked(kernel, p, q, derivation, probe)
+            Completer::complete_linked(kernel, p, q, derivation, probe)
         }
     }
 }

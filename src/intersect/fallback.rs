@@ -17,13 +17,14 @@
 //! they check it exactly and replace a failing one with [`exact_certificate`]'s.
 
 use super::certificate::{Certificate, Complete, Derivation, Searches, Which};
+use super::engine::{Completer, Completion};
 use super::{Fallback, Probe, barba, dobkin, linear};
 use crate::kernel::{Exact, Kernel, Orientation, Point, segment_contact};
 use crate::polygon::{ConvexPolygon, LinkedPolygon};
 
 /// The certificate of a derivation: its own, or one completed by the searches in the
 /// module docs.
-pub(crate) fn complete<K: Kernel, P: Probe>(
+fn complete<K: Kernel, P: Probe>(
     k: K,
     pv: &[Point],
     qv: &[Point],
@@ -46,6 +47,30 @@ pub(crate) fn complete<K: Kernel, P: Probe>(
     })
 }
 
+impl Completion for Completer {
+    #[inline]
+    fn complete<K: Kernel, P: Probe>(
+        k: K,
+        pv: &[Point],
+        qv: &[Point],
+        derivation: Derivation,
+        probe: &mut P,
+    ) -> Certificate {
+        complete(k, pv, qv, derivation, probe)
+    }
+
+    #[inline]
+    fn complete_linked<K: Kernel, P: Probe>(
+        k: K,
+        p: &LinkedPolygon,
+        q: &LinkedPolygon,
+        derivation: Derivation,
+        probe: &mut P,
+    ) -> Certificate {
+        complete_linked(k, p, q, derivation, probe)
+    }
+}
+
 impl Complete for Searches {
     #[inline]
     fn complete<K: Kernel>(k: K, pv: &[Point], qv: &[Point], answer: bool) -> Certificate {
@@ -56,7 +81,7 @@ impl Complete for Searches {
 /// [`complete`] for linked polygons: a certificate passes through unchanged, an answer
 /// alone is completed on the walked arrays.
 #[inline]
-pub(crate) fn complete_linked<K: Kernel, P: Probe>(
+fn complete_linked<K: Kernel, P: Probe>(
     k: K,
     p: &LinkedPolygon,
     q: &LinkedPolygon,

@@ -213,7 +213,9 @@ impl From<Sign> for Orientation {
 /// A number type a predicate polynomial can be evaluated in: plain `f64`
 /// (the fast kernel), a rounding-safe interval (the exact kernel's filter) or an
 /// exact dyadic big number (the exact kernel's fallback).
-pub(crate) trait Ring: Clone + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Sized {
+pub(crate) trait Ring:
+    Clone + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Sized
+{
     /// The exact value of a finite `f64` (or its plain copy, for `f64`).
     fn from_f64(x: f64) -> Self;
     /// The sign if it is certain, `None` when this representation cannot tell.
@@ -268,15 +270,6 @@ pub(crate) mod sealed {
         /// A predicate asked of the returned kernel on a point outside the boxes may
         /// answer wrongly: callers pass the boxes of every polygon whose vertices the
         /// query reads, and ask only about those vertices.
-        ///
-        /// ```
-        /// use polysect::{ConvexPolygon, Exact, Kernel, Orientation, Point};
-        /// let p = ConvexPolygon::new([[0.0, 0.0], [4.0, 0.0], [0.0, 3.0]])?;
-        /// let k = Exact.within([p.bounding_box(), p.bounding_box()]);
-        /// let v = p.vertices();
-        /// assert_eq!(k.orient(v[0], v[1], v[2]), Orientation::Ccw);
-        /// # Ok::<(), polysect::PolygonError>(())
-        /// ```
         fn within(self, boxes: [BoundingBox; 2]) -> Self::Within;
 
         /// The same predicates for calls whose coordinate differences, as computed in
@@ -294,16 +287,6 @@ pub(crate) mod sealed {
         /// for kernels whose `within` relies only on the differences of points in the
         /// boxes being at most the boxes' side (both kernels of this crate; [`Fast`]
         /// returns itself).
-        ///
-        /// ```
-        /// use polysect::{ConvexPolygon, Exact, Kernel, Orientation};
-        /// let p = ConvexPolygon::new([[0.0, 0.0], [4.0, 0.0], [4.0, 1.0], [0.0, 3.0]])?;
-        /// let k = Exact.within_differences(p.edge_extent());
-        /// let v = p.vertices();
-        /// // Edge 0 against edge 2, both edges of p.
-        /// assert_eq!(k.cross(v[0], v[1], v[2], v[3]), Orientation::Ccw);
-        /// # Ok::<(), polysect::PolygonError>(())
-        /// ```
         #[inline]
         fn within_differences(self, w: f64) -> Self::Within {
             let side = BoundingBox::new(Point::new(0.0, 0.0), Point::new(w, w));
@@ -329,14 +312,6 @@ pub(crate) mod sealed {
         /// instead of computing two differences per call. The answer is the same
         /// orientation (exact under [`Exact`] and [`ExactWithin`]); the default calls
         /// [`orient`](Kernel::orient).
-        ///
-        /// ```
-        /// use polysect::{Exact, Kernel, Orientation, Point};
-        /// use polysect::kernel::DirectedLine;
-        /// let line = DirectedLine::new(Point::new(0.0, 0.0), Point::new(2.0, 1.0));
-        /// assert_eq!(Exact.orient_line(&line, Point::new(0.0, 1.0)), Orientation::Ccw);
-        /// assert_eq!(Exact.orient_line(&line, Point::new(4.0, 2.0)), Orientation::Collinear);
-        /// ```
         #[inline]
         fn orient_line(self, line: &DirectedLine, c: Point) -> Orientation
         where
@@ -398,17 +373,6 @@ pub(crate) mod sealed {
         /// outside this contract may answer wrongly; the other predicates are unchanged.
         /// `e` is called only by a kernel that uses it. The default returns the kernel
         /// itself.
-        ///
-        /// ```
-        /// use polysect::{ConvexPolygon, Exact, Kernel, Sign};
-        /// let p = ConvexPolygon::new([[0.0, 0.0], [4.0, 0.0], [4.0, 1.0], [0.0, 3.0]])?;
-        /// let v = p.vertices();
-        /// let k = Exact.within([p.bounding_box(), p.bounding_box()]).within_short_edges(|| p.edge_extent());
-        /// // (v1 − v0) × (v3 − v0) times (v2 − v1) × (v0 − v2), plus 0 × anything.
-        /// let f = [[v[0], v[1], v[0], v[3]], [v[1], v[2], v[2], v[0]], [v[0], v[0], v[1], v[2]], [v[2], v[3], v[0], v[1]]];
-        /// assert_eq!(k.cross_products_sign_of_short_edges(f), Sign::Positive);
-        /// # Ok::<(), polysect::PolygonError>(())
-        /// ```
         #[inline]
         fn within_short_edges(self, e: impl FnOnce() -> f64) -> Self {
             let _ = e;

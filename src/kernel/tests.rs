@@ -9,8 +9,8 @@ fn point_measures_stay_finite_at_the_extremes() {
     assert!(Point::new(1.0, 0.0).cross(Point::new(0.0, 1.0)) > 0.0);
 }
 
-use crate::kernel::sealed::Predicates as _;
 use super::*;
+use crate::kernel::sealed::Predicates as _;
 
 #[test]
 fn display_is_short_for_every_magnitude() {

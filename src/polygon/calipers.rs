@@ -36,9 +36,9 @@
 //! ([`Width::value`], [`Rectangle::area`], [`Rectangle::corners`]) are computed in
 //! floating point and are approximate.
 
-use crate::kernel::sealed::Predicates as _;
 use super::hull::hull_indices;
 use super::{ConvexPolygon, LinkedPolygon, PolygonError};
+use crate::kernel::sealed::Predicates as _;
 use crate::kernel::{Exact, Kernel, Orientation, Point, Polynomial, Ring, Sign};
 use std::cmp::Ordering;
 

@@ -38,15 +38,15 @@ pub(crate) use boundary::Boundary;
 pub use convex::ConvexPolygon;
 pub(crate) use convex::box_of;
 pub use error::{EditError, PolygonError};
+#[cfg(not(feature = "instrument"))]
+pub(crate) use graham::angular_order;
 pub use graham::graham_scan;
 #[cfg(feature = "instrument")]
 pub use graham::{angular_order, pivot_index};
-#[cfg(not(feature = "instrument"))]
-pub(crate) use graham::angular_order;
 pub use hull::{HullAlgorithm, convex_hull, hull_vertices};
-pub use line_query::{Chord, ChordEnd, LineQueryError};
 #[cfg(feature = "instrument")]
 pub use line_query::line_chord_linear;
+pub use line_query::{Chord, ChordEnd, LineQueryError};
 pub(crate) use linked::Identity;
 pub use linked::sampling::SampleWorkspace;
 pub use linked::{LinkedPolygon, VertexId};

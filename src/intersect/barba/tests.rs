@@ -1,4 +1,3 @@
-use crate::kernel::sealed::Predicates as _;
 use super::engine::*;
 use super::witness::*;
 use super::*;
@@ -6,6 +5,7 @@ use crate::Exact;
 use crate::Point;
 use crate::intersect::Which;
 use crate::intersect::{Iterations, brute_force};
+use crate::kernel::sealed::Predicates as _;
 
 fn poly(pts: &[[f64; 2]]) -> ConvexPolygon {
     ConvexPolygon::new(pts.iter().copied()).unwrap()

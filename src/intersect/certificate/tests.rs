@@ -1,8 +1,8 @@
-use crate::kernel::sealed::Predicates as _;
 use super::chords::*;
 use super::separation::*;
 use super::verify::*;
 use super::*;
+use crate::kernel::sealed::Predicates as _;
 use crate::kernel::{DirectedLine, Kernel, SegmentContact, segment_contact};
 use crate::{ConvexPolygon, Exact, LinkedPolygon};
 

@@ -66,15 +66,6 @@ impl Default for ExactWithin {
 impl ExactWithin {
     /// The kernel for queries on points inside the union of `boxes` .
     /// Boxes with non-finite corners give infinite bounds (every call goes to [`Exact`](super::Exact)).
-    ///
-    /// ```
-    /// use polysect::{BoundingBox, ExactWithin, Kernel, Orientation, Point};
-    /// let b = BoundingBox::new(Point::new(0.0, 0.0), Point::new(1.0, 1.0));
-    /// let k = ExactWithin::new([b, b]);
-    /// let (o, x, y) = (Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(0.0, 1.0));
-    /// assert_eq!(k.orient(o, x, y), Orientation::Ccw);
-    /// assert_eq!(k.orient(o, x, Point::new(0.5, 0.0)), Orientation::Collinear);
-    /// ```
     #[inline]
     pub fn new([b0, b1]: [BoundingBox; 2]) -> ExactWithin {
         let ((lo0, hi0), (lo1, hi1)) = ((b0.min, b0.max), (b1.min, b1.max));
@@ -106,16 +97,6 @@ impl ExactWithin {
     /// edges' own differences, each at most `w`: under this kernel it is decided by
     /// `|l − r| > B₂` with `B₂ ≈ 6.7·10^-16·w²`, where the boxes' bound has the boxes'
     /// side in place of the (much shorter) longest edge.
-    ///
-    /// ```
-    /// use polysect::{BoundingBox, ExactWithin, Kernel, Orientation, Point};
-    /// let k = ExactWithin::for_differences(1.0);
-    /// // Two unit edges, 2^40 apart: the boxes' bound would be 2^80 times larger.
-    /// let (a, b) = (Point::new(0.0, 0.0), Point::new(1.0, 0.0));
-    /// let (c, d) = (Point::new(1e12, 0.0), Point::new(1e12 + 1.0, 1e-9));
-    /// assert_eq!(k.cross(a, b, c, d), Orientation::Ccw);
-    /// assert!(k.two_products_bound() < 1e-15);
-    /// ```
     #[inline]
     pub fn for_differences(w: f64) -> ExactWithin {
         // A negative `w` promises nothing about magnitudes: NaN fails both range tests.

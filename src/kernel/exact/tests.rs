@@ -1,10 +1,10 @@
-use crate::kernel::sealed::Predicates as _;
 use super::dyadic::*;
 use super::interval::*;
 use super::out_of_line::*;
 use super::semi_static::*;
 use super::static_filter::*;
 use super::*;
+use crate::kernel::sealed::Predicates as _;
 use crate::kernel::{
     CrossPoly, CrossProductsPoly, DotPoly, Fast, Kernel, Orientation, Point, Polynomial, Ring, Sign,
 };
