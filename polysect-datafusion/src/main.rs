@@ -76,6 +76,10 @@ enum Command {
         /// Where polygons are placed.
         #[arg(long, value_enum, default_value_t = LayoutArg::Uniform)]
         layout: LayoutArg,
+        /// With `--layout adversarial`: where to write the second table, whose row i
+        /// touches (or misses by the smallest step) row i of the first.
+        #[arg(long)]
+        partner_out: Option<PathBuf>,
     },
 }
 
@@ -89,6 +93,9 @@ enum Invalid {
 enum LayoutArg {
     Uniform,
     Clustered,
+    /// Pairs of exact touchings, one-ulp gaps and nested polygons, written row for row
+    /// to `--out` and `--partner-out` (`--partners` does not apply).
+    Adversarial,
 }
 
 fn main() -> ExitCode {
@@ -114,6 +121,17 @@ fn io(e: impl std::fmt::Display) -> std::io::Error {
     std::io::Error::other(e.to_string())
 }
 
+/// Writes polygons as a GeoParquet table (`id` from 0, batches of 8,192 rows).
+fn write_table(out: &std::path::Path, polygons: &[polysect::ConvexPolygon]) -> std::io::Result<()> {
+    let batches = polygons
+        .chunks(8192)
+        .enumerate()
+        .map(|(i, c)| tables::batch(c, (i * 8192) as i64))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(io)?;
+    tables::write_geoparquet(out, &batches).map_err(io)
+}
+
 async fn run(command: Command) -> std::io::Result<()> {
     match command {
         Command::Gen {
@@ -123,16 +141,37 @@ async fn run(command: Command) -> std::io::Result<()> {
             seed,
             partners,
             layout,
+            partner_out,
         } => {
             if !(partners.is_finite() && partners > 0.0) {
                 return Err(io(format!(
                     "--partners {partners} must be a finite positive number"
                 )));
             }
+            let started = Instant::now();
             let layout = match layout {
                 LayoutArg::Uniform => Layout::Uniform,
                 LayoutArg::Clustered => Layout::Clustered,
+                LayoutArg::Adversarial => {
+                    let Some(partner_out) = partner_out else {
+                        return Err(io("--layout adversarial needs --partner-out"));
+                    };
+                    let (left, right) = tables::adversarial_pairs(rows, vertices as usize, seed)
+                        .map_err(|e| io(format!("--layout adversarial: {e}")))?;
+                    write_table(&out, &left)?;
+                    write_table(&partner_out, &right)?;
+                    eprintln!(
+                        "wrote {rows} adversarial pairs to {} and {} in {:.2?}",
+                        out.display(),
+                        partner_out.display(),
+                        started.elapsed()
+                    );
+                    return Ok(());
+                }
             };
+            if partner_out.is_some() {
+                return Err(io("--partner-out needs --layout adversarial"));
+            }
             let spec = TableSpec {
                 rows,
                 vertices: vertices as usize,
@@ -140,15 +179,7 @@ async fn run(command: Command) -> std::io::Result<()> {
                 partners,
                 layout,
             };
-            let started = Instant::now();
-            let polygons = tables::polygons(&spec);
-            let batches = polygons
-                .chunks(8192)
-                .enumerate()
-                .map(|(i, c)| tables::batch(c, (i * 8192) as i64))
-                .collect::<Result<Vec<_>, _>>()
-                .map_err(io)?;
-            tables::write_geoparquet(&out, &batches).map_err(io)?;
+            write_table(&out, &tables::polygons(&spec))?;
             eprintln!(
                 "wrote {rows} polygons to {} in {:.2?}",
                 out.display(),

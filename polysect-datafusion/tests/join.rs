@@ -153,6 +153,48 @@ async fn lattices_touching_along_edges_and_corners_match_the_scene() {
     assert!(check(&huge(0.0), &huge(1.0), "huge lattice").await > 0);
 }
 
+/// The generator's adversarial tables (`gen --layout adversarial`): only row i meets
+/// row i, about half the rows touch, the one-ulp rows are touching or exactly one ulp
+/// apart, and the join finds the `Scene`'s pairs.
+#[tokio::test]
+async fn generated_adversarial_tables_match_the_scene() {
+    let families = tables::ADVERSARIAL_FAMILIES;
+    let ulp_row = families.iter().position(|&f| f == Family::OneUlpGap).unwrap();
+    for vertices in [3usize, 8, 33] {
+        let rows = 90;
+        let (left, right) = tables::adversarial_pairs(rows, vertices, SEED + vertices as u64).unwrap();
+        assert_eq!((left.len(), right.len()), (rows, rows));
+        let (mut touching, mut gaps) = (0, 0);
+        for i in (ulp_row..rows).step_by(families.len()) {
+            let (a, b) = (left[i].bounding_box(), right[i].bounding_box());
+            let (lo, hi) = if a.min.x < b.min.x { (a, b) } else { (b, a) };
+            if hi.min.x == lo.max.x {
+                touching += 1;
+            } else {
+                assert_eq!(hi.min.x, lo.max.x.next_up(), "row {i}: {lo:?} {hi:?}");
+                gaps += 1;
+            }
+        }
+        assert!(
+            touching > 0 && gaps > 0,
+            "{touching} touching, {gaps} one ulp apart"
+        );
+        let expected = scene_pairs(&left, &right);
+        assert!(expected.iter().all(|&(i, j)| i == j), "a pair across tiles");
+        assert!(
+            (rows / 4..rows * 3 / 4).contains(&expected.len()),
+            "{} of {rows} rows meet",
+            expected.len()
+        );
+        check(
+            &left,
+            &right,
+            &format!("generated adversarial, {vertices} vertices"),
+        )
+        .await;
+    }
+}
+
 #[tokio::test]
 async fn empty_tables_give_no_pairs() {
     let some = tables::polygons(&TableSpec {
