@@ -16,8 +16,8 @@ use rand::Rng;
 /// The completing searches the certified calls end with where a derivation gave only
 /// the answer. Declared here and implemented for [`Completer`] in `fallback.rs`, whose
 /// searches are algorithms' (Barba's witness, Dobkin's separation): so the engines'
-/// default calls reach them without this file depending on the algorithms that
-/// implement the engines.
+/// default calls, and Barba's certified run that completes where it ends, reach them
+/// without depending on the file that runs them.
 pub(crate) trait Completion {
     /// The certificate of `derivation` for the polygons with vertices `pv` and `qv`,
     /// reporting each completion to `probe`.

@@ -16,39 +16,17 @@
 //! certificate that fails [`verify`](super::verify) (the CLI under `--precision fast`):
 //! they check it exactly and replace a failing one with [`exact_certificate`]'s.
 
-use super::certificate::{Certificate, Complete, Derivation, Searches, Which};
+use super::certificate::{Certificate, Derivation, Which};
 use super::engine::{Completer, Completion};
 use super::{Fallback, Probe, barba, dobkin, linear};
 use crate::kernel::{Exact, Kernel, Orientation, Point, segment_contact};
 use crate::polygon::{ConvexPolygon, LinkedPolygon};
 
-/// The certificate of a derivation: its own, or one completed by the searches in the
-/// module docs.
-fn complete<K: Kernel, P: Probe>(
-    k: K,
-    pv: &[Point],
-    qv: &[Point],
-    derivation: Derivation,
-    probe: &mut P,
-) -> Certificate {
-    let answer = match derivation {
-        Derivation::Certified(c) => return c,
-        Derivation::Answer(answer) => answer,
-    };
-    probe.fallback(Fallback::Search);
-    let found = if answer {
-        barba::meeting_certificate(k, pv, qv)
-    } else {
-        dobkin::separating_certificate(k, pv, qv)
-    };
-    found.unwrap_or_else(|| {
-        probe.fallback(Fallback::Reference);
-        exact_certificate_on(pv, qv)
-    })
-}
-
+/// The searches of the module docs, for the engines' certified calls and Barba's
+/// in-place certified run.
 impl Completion for Completer {
-    #[inline]
+    /// The certificate of a derivation: its own, or one completed by the searches in
+    /// the module docs.
     fn complete<K: Kernel, P: Probe>(
         k: K,
         pv: &[Point],
@@ -56,9 +34,24 @@ impl Completion for Completer {
         derivation: Derivation,
         probe: &mut P,
     ) -> Certificate {
-        complete(k, pv, qv, derivation, probe)
+        let answer = match derivation {
+            Derivation::Certified(c) => return c,
+            Derivation::Answer(answer) => answer,
+        };
+        probe.fallback(Fallback::Search);
+        let found = if answer {
+            barba::meeting_certificate(k, pv, qv)
+        } else {
+            dobkin::separating_certificate(k, pv, qv)
+        };
+        found.unwrap_or_else(|| {
+            probe.fallback(Fallback::Reference);
+            exact_certificate_on(pv, qv)
+        })
     }
 
+    /// A certificate passes through unchanged, an answer alone is completed on the
+    /// walked arrays.
     #[inline]
     fn complete_linked<K: Kernel, P: Probe>(
         k: K,
@@ -67,36 +60,16 @@ impl Completion for Completer {
         derivation: Derivation,
         probe: &mut P,
     ) -> Certificate {
-        complete_linked(k, p, q, derivation, probe)
-    }
-}
-
-impl Complete for Searches {
-    #[inline]
-    fn complete<K: Kernel>(k: K, pv: &[Point], qv: &[Point], answer: bool) -> Certificate {
-        complete(k, pv, qv, Derivation::Answer(answer), &mut ())
-    }
-}
-
-/// [`complete`] for linked polygons: a certificate passes through unchanged, an answer
-/// alone is completed on the walked arrays.
-#[inline]
-fn complete_linked<K: Kernel, P: Probe>(
-    k: K,
-    p: &LinkedPolygon,
-    q: &LinkedPolygon,
-    derivation: Derivation,
-    probe: &mut P,
-) -> Certificate {
-    match derivation {
-        Derivation::Certified(c) => c,
-        answer => complete(
-            k,
-            p.to_convex().vertices(),
-            q.to_convex().vertices(),
-            answer,
-            probe,
-        ),
+        match derivation {
+            Derivation::Certified(c) => c,
+            answer => Self::complete(
+                k,
+                p.to_convex().vertices(),
+                q.to_convex().vertices(),
+                answer,
+                probe,
+            ),
+        }
     }
 }
 

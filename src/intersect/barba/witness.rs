@@ -5,9 +5,10 @@
 use super::engine::{Exit, Mode, Range, Record, SMALL_Q, SegmentExit, SegmentTable, Sep, SmallQ, run};
 use super::{Ours, Variant};
 use crate::intersect::certificate::{
-    Complete, Reduced, Searches, crossing, edge_between, endpoint_on_other, extreme_left, reduce_chord,
-    resolve_chords, resolve_crossing_chords, separates,
+    Reduced, crossing, edge_between, endpoint_on_other, extreme_left, reduce_chord, resolve_chords,
+    resolve_crossing_chords, separates,
 };
+use crate::intersect::engine::{Completer, Completion};
 use crate::intersect::{Certificate, Derivation, Which};
 use crate::kernel::{Kernel, Orientation, Point, SegmentContact, point_on_segment};
 use Orientation::{Ccw, Collinear, Cw};
@@ -46,7 +47,7 @@ impl Mode for Derive {
 }
 
 /// The certified call without a probe: [`Derive`]'s derivation completed where the run
-/// ends ([`Searches`](crate::intersect::certificate::Searches) where it gives only the
+/// ends ([`Completer`] where it gives only the
 /// answer), so that the certificate is written once, in the caller's place.
 pub(super) struct Certify;
 
@@ -80,7 +81,7 @@ impl Mode for Certify {
 /// [`derivation`]'s body is written out here (no call, no [`Derivation`] moved).
 #[inline(never)]
 pub(super) fn completed<K: Kernel, V: Variant>(k: K, pv: &[Point], qv: &[Point], exit: Exit) -> Certificate {
-    let complete = |answer| Searches::complete(k, pv, qv, answer);
+    let complete = |answer| Completer::complete(k, pv, qv, Derivation::Answer(answer), &mut ());
     match exit {
         Exit::Apart { pr, q, line } => {
             match lift(k, pv, qv, pr, q, line).or_else(|| rerun_lift::<K, V>(k, pv, qv)) {
@@ -114,7 +115,14 @@ pub(super) fn segment_certificate<K: Kernel>(
     qv: &[Point],
     exit: SegmentExit,
 ) -> Certificate {
-    segment_witness(k, pv, qv, exit, |c| c, || Searches::complete(k, pv, qv, true))
+    segment_witness(
+        k,
+        pv,
+        qv,
+        exit,
+        |c| c,
+        || Completer::complete(k, pv, qv, Derivation::Answer(true), &mut ()),
+    )
 }
 
 /// The certified call's result for a run's exit (the module docs' "Certificate"). Out

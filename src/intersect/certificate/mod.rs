@@ -69,7 +69,7 @@ pub(crate) use separation::{
 };
 pub use verify::{verify, verify_linked};
 
-use crate::kernel::{Kernel, Orientation, Point};
+use crate::kernel::{Orientation, Point};
 use std::fmt;
 
 use Orientation::{Ccw, Collinear, Cw};
@@ -196,21 +196,6 @@ impl Certificate {
         }
     }
 }
-
-/// The searches that complete an answer an algorithm could not certify from its own
-/// findings ([`Derivation::Answer`]), O(log n + log m): Dobkin's separation for
-/// "disjoint", Barba's witness for "intersecting", the exact O(n + m) reference when an
-/// inconsistent kernel leaves them without one. Declared here, below the algorithms, and
-/// implemented for [`Searches`] in `fallback.rs`, above them: so an algorithm that
-/// completes its certificates where its run ends (Barba's certified call) reaches the
-/// searches without depending on the file that runs them.
-pub(crate) trait Complete {
-    /// The certificate of `answer` for the polygons with vertices `pv` and `qv`.
-    fn complete<K: Kernel>(k: K, pv: &[Point], qv: &[Point], answer: bool) -> Certificate;
-}
-
-/// The completing searches of `fallback.rs` ([`Complete`]).
-pub(crate) struct Searches;
 
 /// What an algorithm's certified run derived from its own findings.
 #[derive(Clone, Copy, Debug, PartialEq)]
