@@ -10,7 +10,8 @@
 //!   `paused` (changed in place).
 //! - `{"op":"move","scene":S,"polygon":I,"vertex":V,"to":[x,y]}`,
 //!   `{"op":"insert","scene":S,"polygon":I,"after":V,"point":[x,y]}`,
-//!   `{"op":"remove","scene":S,"polygon":I,"vertex":V}`: edits in box coordinates. `S`
+//!   `{"op":"remove","scene":S,"polygon":I,"vertex":V}`: edits at world points (the
+//!   pointer; the simulation maps them into the polygon's shape). `S`
 //!   is the scene number the page is showing: an edit meant for an older scene is an
 //!   error, never applied to the new one.
 //! - `{"op":"trace","scene":S,"polygons":[A,B],"algorithm":"barba|dobkin|chazelle-dobkin|clm"}`:
@@ -24,11 +25,14 @@
 //! # To the page
 //! - `{"type":"settings", ...}`: the settings in force (after every `settings` message).
 //! - `{"type":"scene","scene":S,"world":[w,h],"sizes":[n0,n1,...]}` followed by one
-//!   binary message: every polygon's base vertices as little-endian `f64` pairs,
+//!   binary message: every polygon's shape vertices as little-endian `f64` pairs,
 //!   counter-clockwise, polygon after polygon; vertex `k` of a polygon has wire id `k`.
-//! - `{"type":"frame", ...}`: a [`Frame`](super::sim::Frame), only what changed: one
-//!   offset per polygon, the pairs, figures.
-//! - `{"type":"edit", ...}`: an accepted [`Edit`](super::sim::Edit).
+//! - `{"type":"frame", ...}`: a [`Frame`](super::sim::Frame): one pose per polygon, the
+//!   pairs, figures; when its `world` is true (at most
+//!   [`MAX_WORLD_POINTS`](super::sim::MAX_WORLD_POINTS) vertices in all) it is followed
+//!   by one binary message of every world point, in the order of the scene's shapes.
+//! - `{"type":"edit", ...}`: an accepted [`Edit`](super::sim::Edit) (its point in shape
+//!   coordinates).
 //! - `{"type":"refused","op":..,"polygon":I,"reason":"..."}`: the store refused an edit;
 //!   the reason is the store error's text.
 //! - `{"type":"trace", ...}`: a trace ([`super::trace::trace_json`]): the
@@ -155,8 +159,8 @@ impl Session {
             Err(e) => return vec![error_reply(format!("invalid message: {e}"))],
         };
         match request {
-            Request::Frame {} => vec![self.frame(!self.sim.settings().paused)],
-            Request::Step {} => vec![self.frame(true)],
+            Request::Frame {} => self.frame(!self.sim.settings().paused),
+            Request::Step {} => self.frame(true),
             Request::Settings {
                 polygons,
                 vertices,
@@ -280,11 +284,15 @@ impl Session {
         }
     }
 
-    fn frame(&mut self, advance: bool) -> Reply {
+    fn frame(&mut self, advance: bool) -> Vec<Reply> {
         let f = self.sim.frame(advance);
         let mut v = serde_json::to_value(&f).expect("serialisable");
         v["type"] = json!("frame");
-        Reply::Text(v.to_string())
+        let mut out = vec![Reply::Text(v.to_string())];
+        if f.world {
+            out.push(Reply::Binary(le_bytes(self.sim.world_coordinates())));
+        }
+        out
     }
 
     fn settings_reply(&self) -> Reply {
@@ -306,10 +314,7 @@ impl Session {
 
     fn scene_replies(&self) -> Vec<Reply> {
         let (sizes, coords) = self.sim.base_vertices();
-        let mut bytes = Vec::with_capacity(coords.len() * 8);
-        for c in coords {
-            bytes.extend_from_slice(&c.to_le_bytes());
-        }
+        let bytes = le_bytes(coords);
         vec![
             Reply::Text(
                 json!({"type": "scene", "scene": self.sim.scene(), "world": WORLD, "sizes": sizes})
@@ -318,6 +323,10 @@ impl Session {
             Reply::Binary(bytes),
         ]
     }
+}
+
+fn le_bytes(coords: Vec<f64>) -> Vec<u8> {
+    coords.into_iter().flat_map(f64::to_le_bytes).collect()
 }
 
 fn parse_strategy(s: &str) -> Result<Strategy, String> {
@@ -544,7 +553,25 @@ mod tests {
         let f = one(&mut s, "{\"op\":\"frame\"}");
         assert_eq!(f["type"], "frame");
         assert_eq!(f["frame"], 1);
-        assert_eq!(f["offsets"].as_array().expect("offsets").len(), 72);
+        assert_eq!(f["poses"].as_array().expect("poses").len(), 4 * 36);
+        assert_eq!(f["world"], true);
+        // The world points follow: the store's own coordinates, in the shapes' order.
+        let replies = s.handle(b"{\"op\":\"step\"}");
+        let Some(Reply::Binary(bytes)) = replies.get(1) else {
+            panic!("a binary message of world points after the frame: {replies:?}")
+        };
+        let world: Vec<f64> = s
+            .simulation()
+            .current_vertices()
+            .iter()
+            .flatten()
+            .flat_map(|p| [p.x, p.y])
+            .collect();
+        let sent: Vec<f64> = bytes
+            .chunks_exact(8)
+            .map(|b| f64::from_le_bytes(b.try_into().expect("8 bytes")))
+            .collect();
+        assert_eq!(sent, world);
         let r = one(
             &mut s,
             "{\"op\":\"settings\",\"paused\":true,\"strategy\":\"cached\",\"precision\":\"fast\"}",
@@ -552,8 +579,8 @@ mod tests {
         assert_eq!(r["paused"], true);
         assert_eq!(r["strategy"], "cached");
         assert_eq!(r["precision"], "fast");
-        assert_eq!(one(&mut s, "{\"op\":\"frame\"}")["frame"], 1);
-        assert_eq!(one(&mut s, "{\"op\":\"step\"}")["frame"], 2);
+        assert_eq!(one(&mut s, "{\"op\":\"frame\"}")["frame"], 2);
+        assert_eq!(one(&mut s, "{\"op\":\"step\"}")["frame"], 3);
         assert_eq!(one(&mut s, "{\"op\":\"frame\"}")["advanced"], false);
     }
 

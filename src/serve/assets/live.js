@@ -14,8 +14,13 @@
 
   const S = {
     ws: null, ready: false, scene: 0, world: [1200, 800], sizes: null,
-    polys: [], // {ids: Int32Array, c: Float64Array (x0, y0, x1, y1, ... base), path, handles, box}
-    offsets: new Float64Array(0), pairs: [], normals: [], hit: new Uint8Array(0),
+    // Per polygon: ids, c (shape coordinates x0, y0, x1, y1, ...), box (of c), path and
+    // handles (cached, in pixels of shape coordinates); w (the world points of the last
+    // frame, when the server sends them), wbox, wpath, whandles (rebuilt per frame).
+    polys: [],
+    poses: new Float64Array(0), // c, s, tx, ty per polygon
+    awaiting: null, // a frame whose world points are the next binary message
+    pairs: [], normals: [], hit: new Uint8Array(0),
     settings: null, frame: 0, last: null, pending: null, inflight: false, dirty: true,
     edits: 0, editsAtFrame: 0, moveInflight: false, moveQueued: null, drag: null, hover: null,
     times: [], fps: 0, drawMs: 0, refusals: 0, errors: 0, lastRefusal: "", lastError: "",
@@ -65,7 +70,7 @@
         resumeIfTracePaused();
         if (S.scene > 1) status(`New scene: ${m.sizes.length} polygons`, "ok");
         break;
-      case "frame": onFrame(m); break;
+      case "frame": if (m.world) S.awaiting = m; else onFrame(m); break;
       case "edit": onEdit(m); break;
       case "trace": onTrace(m); break;
       case "refused":
@@ -79,13 +84,22 @@
     }
   }
 
+  function floats(buf) {
+    if (littleEndian) return new Float64Array(buf);
+    const dv = new DataView(buf), all = new Float64Array(buf.byteLength / 8);
+    for (let i = 0; i < all.length; i++) all[i] = dv.getFloat64(8 * i, true);
+    return all;
+  }
+  // A binary message is a frame's world points when a frame announced them, else a new
+  // scene's shapes.
   function onBinary(buf) {
-    let all;
-    if (littleEndian) all = new Float64Array(buf);
-    else {
-      const dv = new DataView(buf);
-      all = new Float64Array(buf.byteLength / 8);
-      for (let i = 0; i < all.length; i++) all[i] = dv.getFloat64(8 * i, true);
+    const all = floats(buf);
+    if (S.awaiting) {
+      const m = S.awaiting;
+      S.awaiting = null;
+      m.worldPoints = all;
+      onFrame(m);
+      return;
     }
     let at = 0;
     S.polys = S.sizes.map((n) => {
@@ -93,7 +107,8 @@
       at += 2 * n;
       return { ids: Int32Array.from({ length: n }, (_, k) => k), c, path: null, handles: null, box: bbox(c) };
     });
-    S.offsets = new Float64Array(2 * S.polys.length);
+    S.poses = new Float64Array(4 * S.polys.length);
+    for (let i = 0; i < S.polys.length; i++) S.poses[4 * i] = 1;
     S.pairs = []; S.normals = []; S.hit = new Uint8Array(S.polys.length);
     S.frame = 0; S.last = null; S.pending = null; S.inflight = false; S.drag = null; S.hover = null;
     S.ready = true; S.dirty = true;
@@ -106,6 +121,7 @@
     for (const k of ["polygons", "vertices", "seed", "strategy", "precision", "speed"]) $(k).value = m[k];
     $("speedValue").textContent = Number(m.speed).toFixed(1);
     $("pause").textContent = m.paused ? "Resume" : "Pause";
+    clearStaleError(`Settings in force: ${m.paused ? "paused" : "running"}, ${m.strategy}, ${m.precision}`);
     if (!S.appliedParams) {
       // Settings from the address (?polygons=200&vertices=64&strategy=cached ...).
       S.appliedParams = true;
@@ -138,7 +154,16 @@
     S.last = m;
     S.frame = m.frame;
     S.editsAtFrame = m.editsSeen;
-    S.offsets = Float64Array.from(m.offsets);
+    S.poses = Float64Array.from(m.poses);
+    // World points only when they follow this polygon's shape (an edit since changes
+    // the shape; its world points come with the next frame).
+    let at = 0;
+    for (const p of S.polys) {
+      const n = p.ids.length;
+      p.w = m.worldPoints && m.editsSeen === S.edits ? m.worldPoints.subarray(at, at + 2 * n) : null;
+      p.wbox = p.w && bbox(p.w); p.wpath = null; p.whandles = null;
+      at += 2 * n;
+    }
     S.pairs = m.pairs; S.normals = m.normals;
     S.hit = new Uint8Array(S.polys.length);
     for (const [i, j] of m.pairs) { S.hit[i] = 1; S.hit[j] = 1; }
@@ -173,7 +198,7 @@
       c.set(p.c.subarray(0, 2 * k)); c.set(p.c.subarray(2 * k + 2), 2 * k);
       p.ids = ids; p.c = c;
     }
-    p.path = null; p.handles = null; p.box = bbox(p.c);
+    p.path = null; p.handles = null; p.box = bbox(p.c); p.w = null;
     S.edits++;
     S.dirty = true;
     if (m.kind !== "move") status(`${m.kind === "insert" ? "Inserted" : "Removed"} vertex ${m.vertex} of polygon ${m.polygon}`, "ok");
@@ -220,15 +245,36 @@
     return toWorld(ev.clientX - r.left, ev.clientY - r.top);
   }
 
+  // The pose's map of shape point (x, y) to the world, and its inverse (for drawing and
+  // picking only: the server maps edit targets itself).
+  function toPose(i, x, y) {
+    const q = S.poses, c = q[4 * i], s = q[4 * i + 1];
+    return [c * x - s * y + q[4 * i + 2], s * x + c * y + q[4 * i + 3]];
+  }
+  function fromPose(i, x, y) {
+    const q = S.poses, c = q[4 * i], s = q[4 * i + 1], rx = x - q[4 * i + 2], ry = y - q[4 * i + 3], l = c * c + s * s;
+    return [(c * rx + s * ry) / l, (c * ry - s * rx) / l];
+  }
+  // Polygon i's points to pick on (its world points when the page has them, else its
+  // shape) and the world point w in the same frame.
+  function pickFrame(i, w) {
+    const p = S.polys[i];
+    return p.w ? { c: p.w, b: p.wbox, at: w } : { c: p.c, b: p.box, at: fromPose(i, w[0], w[1]) };
+  }
+  // The world position of polygon i's k-th vertex.
+  function worldVertex(i, k) {
+    const p = S.polys[i];
+    return p.w ? [p.w[2 * k], p.w[2 * k + 1]] : toPose(i, p.c[2 * k], p.c[2 * k + 1]);
+  }
   // Nearest vertex within `px` pixels, over polygons whose box is near; topmost first.
   function pickVertex(w, px) {
     const tol = px / S.view.scale;
     let best = null, bestD = tol * tol;
     for (let i = S.polys.length - 1; i >= 0; i--) {
-      const p = S.polys[i], x = w[0] - S.offsets[2 * i], y = w[1] - S.offsets[2 * i + 1], b = p.box;
+      const p = S.polys[i], f = pickFrame(i, w), [x, y] = f.at, b = f.b, c = f.c;
       if (x < b[0] - tol || x > b[2] + tol || y < b[1] - tol || y > b[3] + tol) continue;
       for (let k = 0; k < p.ids.length; k++) {
-        const dx = p.c[2 * k] - x, dy = p.c[2 * k + 1] - y, d = dx * dx + dy * dy;
+        const dx = c[2 * k] - x, dy = c[2 * k + 1] - y, d = dx * dx + dy * dy;
         if (d <= bestD) { bestD = d; best = { poly: i, vertex: p.ids[k] }; }
       }
       if (best) return best;
@@ -239,11 +285,11 @@
   function pickEdge(w, px) {
     const tol = px / S.view.scale;
     for (let i = S.polys.length - 1; i >= 0; i--) {
-      const p = S.polys[i], x = w[0] - S.offsets[2 * i], y = w[1] - S.offsets[2 * i + 1], b = p.box, n = p.ids.length;
+      const p = S.polys[i], f = pickFrame(i, w), [x, y] = f.at, b = f.b, c = f.c, n = p.ids.length;
       if (x < b[0] - tol || x > b[2] + tol || y < b[1] - tol || y > b[3] + tol) continue;
       let best = -1, bestD = tol * tol;
       for (let k = 0; k < n; k++) {
-        const ax = p.c[2 * k], ay = p.c[2 * k + 1], k2 = (k + 1) % n, bx = p.c[2 * k2], by = p.c[2 * k2 + 1];
+        const ax = c[2 * k], ay = c[2 * k + 1], k2 = (k + 1) % n, bx = c[2 * k2], by = c[2 * k2 + 1];
         const ex = bx - ax, ey = by - ay, len = ex * ex + ey * ey;
         const t = len > 0 ? Math.max(0, Math.min(1, ((x - ax) * ex + (y - ay) * ey) / len)) : 0;
         const dx = ax + t * ex - x, dy = ay + t * ey - y, d = dx * dx + dy * dy;
@@ -277,13 +323,14 @@
   canvas.addEventListener("contextmenu", removeAt);
 
   // ---- drawing ----
-  // The outline in pixels relative to the polygon's offset, decimated to the half-pixel
-  // grid: a vertex is kept only if it falls in another half-pixel cell than the last one
-  // kept, so a 65,536-vertex polygon becomes a few hundred points. Rebuilt after an edit
-  // or a resize, never per frame: a frame only translates it.
+  // The outline in pixels, decimated to the half-pixel grid: a vertex is kept only if it
+  // falls in another half-pixel cell than the last one kept, so a 65,536-vertex polygon
+  // becomes a few hundred points. From the world points when the frame brought them
+  // (rebuilt per frame: what the store holds, exactly), else from the shape (rebuilt
+  // after an edit or a resize, drawn under the pose's transform).
   function pathOf(p) {
-    if (p.path) return p.path;
-    const s = S.view.scale, c = p.c, path = new Path2D();
+    if (p.w ? p.wpath : p.path) return p.w ? p.wpath : p.path;
+    const s = S.view.scale, c = p.w || p.c, path = new Path2D();
     let lx = NaN, ly = NaN, kept = 0;
     for (let k = 0; k < c.length; k += 2) {
       const x = c[k] * s, y = c[k + 1] * s, cx = Math.round(2 * x), cy = Math.round(2 * y);
@@ -292,19 +339,23 @@
       lx = cx; ly = cy;
     }
     path.closePath();
-    p.path = path;
+    if (p.w) p.wpath = path; else p.path = path;
     p.kept = kept;
     return path;
   }
   // Handles only where vertices are at least 5 px apart on average.
   function handlesOf(p) {
-    if (p.handles !== null) return p.handles;
-    const s = S.view.scale, n = p.ids.length, b = p.box;
+    const cached = p.w ? p.whandles : p.handles;
+    if (cached !== null && cached !== undefined) return cached;
+    const s = S.view.scale, n = p.ids.length, b = p.box, c = p.w || p.c;
     const perimeter = 2 * ((b[2] - b[0]) + (b[3] - b[1])) * s;
-    if (perimeter / n < 5) return (p.handles = false);
-    const h = new Path2D();
-    for (let k = 0; k < n; k++) h.rect(p.c[2 * k] * s - 2, p.c[2 * k + 1] * s - 2, 4, 4);
-    return (p.handles = h);
+    let h = false;
+    if (perimeter / n >= 5) {
+      h = new Path2D();
+      for (let k = 0; k < n; k++) h.rect(c[2 * k] * s - 2, c[2 * k + 1] * s - 2, 4, 4);
+    }
+    if (p.w) p.whandles = h; else p.handles = h;
+    return h;
   }
 
   function draw() {
@@ -317,7 +368,11 @@
     const handles = $("showVertices").checked;
     for (let i = 0; i < S.polys.length; i++) {
       const p = S.polys[i];
-      ctx.setTransform(d, 0, 0, d, d * (v.ox + S.offsets[2 * i] * v.scale), d * (v.oy + S.offsets[2 * i + 1] * v.scale));
+      if (p.w) ctx.setTransform(d, 0, 0, d, d * v.ox, d * v.oy);
+      else {
+        const q = S.poses, c = q[4 * i], s = q[4 * i + 1];
+        ctx.setTransform(d * c, d * s, -d * s, d * c, d * (v.ox + q[4 * i + 2] * v.scale), d * (v.oy + q[4 * i + 3] * v.scale));
+      }
       const path = pathOf(p);
       ctx.fillStyle = S.hit[i] ? HIT_FILL : FILL;
       ctx.fill(path);
@@ -346,9 +401,9 @@
     if (S.hover) {
       const p = S.polys[S.hover.poly], k = p && p.ids.indexOf(S.hover.vertex);
       if (p && k >= 0) {
-        const i = S.hover.poly;
+        const [x, y] = worldVertex(S.hover.poly, k);
         ctx.beginPath();
-        ctx.arc(v.ox + (p.c[2 * k] + S.offsets[2 * i]) * v.scale, v.oy + (p.c[2 * k + 1] + S.offsets[2 * i + 1]) * v.scale, 6, 0, 2 * Math.PI);
+        ctx.arc(v.ox + x * v.scale, v.oy + y * v.scale, 6, 0, 2 * Math.PI);
         ctx.strokeStyle = "#000"; ctx.lineWidth = 1.5; ctx.stroke();
       }
     }
@@ -364,7 +419,7 @@
     ctx.lineWidth = 3; ctx.strokeStyle = "rgba(255,255,255,0.85)"; ctx.fillStyle = "#1d2330";
     S.numbered = 0;
     for (let i = 0; i < S.polys.length; i++) {
-      const b = S.polys[i].box;
+      const b = worldBox(i);
       if ((b[2] - b[0]) * v.scale < 14) continue;
       const c = centre(i), x = v.ox + c[0] * v.scale, y = v.oy + c[1] * v.scale;
       ctx.strokeText(String(i), x, y); ctx.fillText(String(i), x, y);
@@ -407,7 +462,8 @@
     const X = (pt) => v.ox + pt[0] * v.scale, Y = (pt) => v.oy + pt[1] * v.scale;
     ctx.save();
     const r = canvas.getBoundingClientRect();
-    ctx.fillStyle = "rgba(251,252,254,0.93)";
+    // Only the pair: the scene is covered, not shown faintly behind.
+    ctx.fillStyle = "#fbfcfe";
     ctx.fillRect(0, 0, r.width, r.height);
     ctx.fillStyle = "#566"; ctx.font = "12px system-ui, sans-serif"; ctx.textAlign = "left"; ctx.textBaseline = "top";
     ctx.fillText(`Zoomed on P = polygon ${t.polygons[0]} (blue) and Q = polygon ${t.polygons[1]} (red); Close returns to the scene`, 8, 6);
@@ -463,9 +519,17 @@
     showTraceStep();
   }
 
+  // The world box: of the world points, else of the shape's box corners under the pose
+  // (a box around the polygon, a little larger when it is turned).
+  function worldBox(i) {
+    const p = S.polys[i];
+    if (p.w) return p.wbox;
+    const b = p.box, corners = [toPose(i, b[0], b[1]), toPose(i, b[2], b[1]), toPose(i, b[2], b[3]), toPose(i, b[0], b[3])];
+    return bbox(Float64Array.from(corners.flat()));
+  }
   function centre(i) {
-    const b = S.polys[i].box;
-    return [(b[0] + b[2]) / 2 + S.offsets[2 * i], (b[1] + b[3]) / 2 + S.offsets[2 * i + 1]];
+    const b = worldBox(i);
+    return [(b[0] + b[2]) / 2, (b[1] + b[3]) / 2];
   }
 
   // At most four times a second (the DOM is slower than the canvas); tick() catches up.
@@ -520,9 +584,10 @@
   $("traceClose").onclick = () => { S.trace = null; showTraceStep(); resumeIfTracePaused(); };
   window.addEventListener("resize", resize);
 
-  // What the page shows, for tests and the curious: exact world coordinates (base +
-  // offset, the same additions the server made), the pairs drawn as colliding, and
-  // whether the drawn pairs already account for every edit received.
+  // What the page shows, for tests and the curious: the world coordinates drawn (the
+  // store's own, sent with each frame; `exact` is false when some polygon is drawn from
+  // its shape under the pose instead, e.g. in large scenes), the poses, the pairs drawn
+  // as colliding, and whether the drawn pairs already account for every edit received.
   window.polysect = {
     get ready() { return S.ready; },
     // No frame requested and none waiting to be drawn.
@@ -535,6 +600,8 @@
     get settings() { return S.settings; },
     get figures() { return S.last && { timing: S.last.timing, queries: S.last.queries, candidates: S.last.candidates, stats: S.last.stats, totals: S.last.totals }; },
     get refusals() { return S.refusals; },
+    // Edits the page received as accepted.
+    get edits() { return S.edits; },
     get lastRefusal() { return S.lastRefusal; },
     get errors() { return S.errors; },
     get lastError() { return S.lastError; },
@@ -554,10 +621,13 @@
     shown() {
       return {
         scene: S.scene, frame: S.frame, pairs: S.pairs.map((p) => [p[0], p[1]]),
-        consistent: S.editsAtFrame === S.edits && !S.moveInflight,
+        // A frame of this scene drawn (before it, the page has shapes but no poses).
+        consistent: S.last !== null && S.editsAtFrame === S.edits && !S.moveInflight,
+        exact: S.polys.every((p) => p.w),
+        poses: S.polys.map((_, i) => Array.from(S.poses.subarray(4 * i, 4 * i + 4))),
         polygons: S.polys.map((p, i) => {
           const out = [];
-          for (let k = 0; k < p.ids.length; k++) out.push([p.c[2 * k] + S.offsets[2 * i], p.c[2 * k + 1] + S.offsets[2 * i + 1]]);
+          for (let k = 0; k < p.ids.length; k++) out.push(worldVertex(i, k));
           return out;
         }),
         ids: S.polys.map((p) => Array.from(p.ids)),

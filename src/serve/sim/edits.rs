@@ -1,5 +1,10 @@
 //! The page's edits: a vertex moved, inserted or removed through the store's validated
-//! O(1) edits, with wire vertex ids checked and the polygon's mass brought up to date.
+//! edits, with wire vertex ids checked and the body's mass and inertia brought up to
+//! date. The page sends world points (the pointer); a posed polygon's edits take shape
+//! coordinates, so the target goes through the inverse of the body's pose (in `f64`,
+//! then snapped to the grid: the vertex lands within rounding of the pointer). The store
+//! checks that the shape and its world image both stay strictly convex (O(n) for a
+//! posed polygon: the new shape's array and its image).
 
 use super::*;
 
@@ -58,8 +63,9 @@ impl Simulation {
         }
     }
 
-    /// Validates an edit target and snaps it to the grid.
-    fn target(point: [f64; 2]) -> Result<Point, EditFailure> {
+    /// Validates an edit target (a world point), maps it into polygon `polygon`'s shape
+    /// through the inverse of its pose and snaps it to the grid.
+    fn target(&self, polygon: usize, point: [f64; 2]) -> Result<Point, EditFailure> {
         for axis in 0..2 {
             if !(AREA_MIN[axis]..=AREA_MAX[axis]).contains(&point[axis]) {
                 return Err(EditFailure::Invalid(format!(
@@ -68,30 +74,34 @@ impl Simulation {
                 )));
             }
         }
-        Ok(Point::new(snap(point[0]), snap(point[1])))
-    }
-
-    fn base(&self, polygon: usize, p: Point) -> [f64; 2] {
-        let o = self.bodies[polygon].offset;
-        [p.x - o[0], p.y - o[1]]
+        let pose = self.bodies[polygon].pose;
+        let ([c, s], [tx, ty]) = (pose.rotation(), pose.translation());
+        let (rx, ry) = (point[0] - tx, point[1] - ty);
+        // The inverse of x ↦ R·x + t, with R = [[c, −s], [s, c]] of scale c² + s².
+        let scale = c * c + s * s;
+        Ok(Point::new(
+            snap((c * rx + s * ry) / scale),
+            snap((c * ry - s * rx) / scale),
+        ))
     }
 
     fn edited(&mut self, polygon: usize) {
         let id = self.bodies[polygon].id;
-        let p = on_scene!(&self.store, s => s.polygon(id)).expect("live polygon");
-        self.bodies[polygon].mass = area(p.iter().map(|(_, p)| p));
+        let shape = on_scene!(&self.store, s => s.shape(id)).expect("live polygon");
+        (self.bodies[polygon].mass, self.bodies[polygon].inertia) =
+            mass_and_inertia(shape.iter().map(|(_, p)| p));
     }
 
-    /// Moves vertex `vertex` (a wire id) of polygon `polygon` to `to` (box coordinates,
-    /// snapped to the grid) through [`Scene::move_vertex`]. O(1) plus the polygon's new
-    /// mass, O(n).
+    /// Moves vertex `vertex` (a wire id) of polygon `polygon` to the world point `to`
+    /// (mapped into the shape, snapped to the grid) through [`Scene::move_vertex`]. O(n):
+    /// the store's check of the posed polygon, the new mass and inertia.
     ///
     /// # Errors
     /// `Invalid` for an unknown polygon or vertex or a point outside the area; `Refused`
     /// when the store refuses the move (it would break convexity).
     pub fn move_vertex(&mut self, polygon: usize, vertex: u32, to: [f64; 2]) -> Result<Edit, EditFailure> {
         let v = self.vertex(polygon, vertex)?;
-        let p = Self::target(to)?;
+        let p = self.target(polygon, to)?;
         let id = self.bodies[polygon].id;
         on_scene!(&mut self.store, s => s.move_vertex(id, v, p)).map_err(refused)?;
         self.edited(polygon);
@@ -100,7 +110,7 @@ impl Simulation {
             kind: "move",
             vertex,
             after: None,
-            point: Some(self.base(polygon, p)),
+            point: Some([p.x, p.y]),
         })
     }
 
@@ -108,7 +118,8 @@ impl Simulation {
     /// [`Scene::insert_vertex`]; the new vertex takes the polygon's next wire id.
     ///
     /// # Errors
-    /// As [`move_vertex`](Self::move_vertex), and `Invalid` once the polygon has handed
+    /// As [`move_vertex`](Self::move_vertex) (`Refused` also for a point on an edge or
+    /// inside the polygon), and `Invalid` once the polygon has handed
     /// out [`MAX_VERTEX_IDS`] ids, has [`MAX_VERTICES`] vertices, or the scene has
     /// [`MAX_TOTAL_VERTICES`] in all.
     pub fn insert_vertex(
@@ -118,7 +129,7 @@ impl Simulation {
         point: [f64; 2],
     ) -> Result<Edit, EditFailure> {
         let a = self.vertex(polygon, after)?;
-        let p = Self::target(point)?;
+        let p = self.target(polygon, point)?;
         let next = self.bodies[polygon].ids.next;
         if next as usize >= MAX_VERTEX_IDS {
             return Err(EditFailure::Invalid(format!(
@@ -148,7 +159,7 @@ impl Simulation {
             kind: "insert",
             vertex: next,
             after: Some(after),
-            point: Some(self.base(polygon, p)),
+            point: Some([p.x, p.y]),
         })
     }
 

@@ -2,11 +2,14 @@
 //! [`Scene`], bouncing elastically off the walls and off each other.
 //!
 //! # One frame
-//! 1. **Update**: each polygon moves by its velocity times the speed with
-//!    [`Scene::translate`] (O(n) per polygon: the store validates the translated
-//!    polygon, and translates a snapshot in place instead of dropping it); a polygon
-//!    whose box would leave the box through a wall has that velocity component flipped
-//!    first.
+//! 1. **Update**: each body's angle and position advance by its angular velocity and
+//!    velocity times the speed, and [`Scene::set_pose`] places its shape there
+//!    absolutely (the shape stays in its own frame, so nothing drifts; O(log n) per
+//!    polygon when the store can prove the rounded image convex, else O(n)); a body whose
+//!    box would leave the box through a wall has that velocity component flipped first.
+//!    A pose the store refuses (its rounded image not strictly convex, rare) leaves the
+//!    body where it was and reverses its motion, so the next frame goes back towards an
+//!    accepted pose.
 //! 2. **Broad phase**: [`Scene::candidate_pairs`], the pairs whose boxes overlap (timed
 //!    on its own and reported as the candidate count).
 //! 3. **Narrow phase**: [`Scene::candidate_pairs_certified`], the store's own answer
@@ -19,19 +22,22 @@
 //!    its contact normal from the separating edge of its last disjoint frame
 //!    ([`separation_normal`]), or, when it has none (it was never seen disjoint with
 //!    overlapping boxes), from the library's penetration normal ([`penetration_normal`]); a
-//!    pair approaching along its normal exchanges momentum along it, an elastic
-//!    collision with masses proportional to area.
+//!    pair whose points at the contact approach along its normal gets one impulse
+//!    there, which changes velocities and angular velocities ([`physics`]: restitution
+//!    1, masses the areas, inertias the second moments about the pivots).
 //!
-//! # Exact positions on both sides of the wire
-//! Every coordinate in the simulation (vertices, edit targets, per-frame moves) is a
-//! multiple of [`GRID`] = 2^-36 inside the area [`AREA_MIN`]..[`AREA_MAX`] (the box and
-//! half its size around it), so every coordinate has magnitude below 2^12 and needs at
-//! most 48 significant bits. A sum or difference of two such numbers is therefore exact
-//! in `f64`: [`Scene::translate`]'s rounding never rounds, a polygon's current vertex is
-//! exactly its first vertex plus the sum of its moves, and the page can draw each
-//! polygon as a cached outline plus one offset per frame while holding the same
-//! coordinates as the store, bit for bit. The browser test relies on it: it checks the
-//! page's pairs against the exact reference on the page's own coordinates.
+//! # Shapes, poses and world points
+//! Every shape coordinate (generated vertices, edit targets mapped into the shape) is a
+//! multiple of [`GRID`] = 2^-36 of magnitude below 2^12. A body's world polygon is its
+//! shape under its pose, each world coordinate the exact value rounded once
+//! ([`Pose::apply`]): it depends on the shape and the pose only, never on the history
+//! of frames. The page gets the shapes once per scene, one pose per polygon per frame,
+//! and (up to [`MAX_WORLD_POINTS`] vertices in all) every world point the store holds,
+//! so it draws and reports the store's own coordinates, bit for bit. The browser test
+//! relies on it: it checks the page's pairs against the exact reference on the page's
+//! own coordinates. An edit's target is a world point (the pointer), mapped into the
+//! shape through the inverse of the body's pose and snapped to the grid: the vertex
+//! lands within rounding of the pointer.
 //!
 //! # Bounds
 //! At most [`MAX_POLYGONS`] polygons of [`MIN_VERTICES`]..=[`MAX_VERTICES`] vertices,
@@ -43,13 +49,14 @@
 
 use super::contact::{penetration_normal, separation_normal};
 use crate::intersect::{Algorithm, Certificate, Trace, trace_rng};
-use crate::kernel::{Exact, Fast, Point, Precision};
+use crate::kernel::{Exact, Fast, Point, Pose, Precision};
 use crate::polygon::{ConvexPolygon, LinkedPolygon, VertexId, convex_hull};
 use crate::store::{PlannerStats, PolygonId, Scene, SceneError, Strategy};
+use physics::{Motion, clamp_speed, impulse, mass_and_inertia};
 use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};
 use std::collections::HashMap;
-use std::f64::consts::TAU;
+use std::f64::consts::{PI, TAU};
 use std::time::Instant;
 
 /// The box the polygons move in: `[0, WORLD[0]] × [0, WORLD[1]]`.
@@ -82,6 +89,15 @@ const BASE_SPEED: f64 = 1.6;
 const MAX_VELOCITY: f64 = 4.0 * BASE_SPEED;
 /// The largest distance a polygon moves in one frame, whatever the speed.
 const MAX_STEP: f64 = 20.0;
+/// The largest starting turn rate, radians per frame at speed 1.
+const BASE_OMEGA: f64 = 0.02;
+/// The largest turn rate after collisions, radians per frame at speed 1.
+const MAX_OMEGA: f64 = 0.06;
+/// The largest angle a polygon turns in one frame, whatever the speed.
+const MAX_TURN: f64 = 0.2;
+/// Frames carry every world point while the scene has at most this many vertices (above,
+/// the page draws the shapes under the poses).
+pub const MAX_WORLD_POINTS: usize = 1 << 16;
 
 /// Rounds to the nearest multiple of [`GRID`] (exact: scaling by a power of two).
 pub fn snap(x: f64) -> f64 {
@@ -176,6 +192,7 @@ macro_rules! on_scene {
 
 // After the macro: it is in scope only below its definition.
 mod edits;
+pub mod physics;
 use edits::VertexIds;
 
 impl Store {
@@ -192,14 +209,33 @@ impl Store {
 #[derive(Debug)]
 struct Body {
     id: PolygonId,
-    /// The sum of all moves: current vertex = base vertex + offset, exactly.
-    offset: [f64; 2],
+    /// The pose the store holds: world polygon = shape under it.
+    pose: Pose,
+    /// The angle (radians, in [−π, π]) and translation the pose is made of.
+    angle: f64,
+    position: [f64; 2],
     /// Box units per frame at speed 1.
     velocity: [f64; 2],
-    /// Proportional to the area.
+    /// Radians per frame at speed 1, counter-clockwise.
+    omega: f64,
+    /// The shape's area.
     mass: f64,
+    /// The shape's second moment of area about its origin (the pivot).
+    inertia: f64,
     /// Wire vertex id → vertex handle, live vertices only.
     ids: VertexIds,
+}
+
+impl Body {
+    fn motion(&self) -> Motion {
+        Motion {
+            velocity: self.velocity,
+            omega: self.omega,
+            mass: self.mass,
+            inertia: self.inertia,
+            pivot: self.position,
+        }
+    }
 }
 
 /// Milliseconds spent in each part of a frame on the server.
@@ -224,8 +260,12 @@ pub struct Frame {
     pub frame: u64,
     /// Whether the polygons moved (false while paused).
     pub advanced: bool,
-    /// Per polygon, x then y: current vertex = base vertex + offset, exactly.
-    pub offsets: Vec<f64>,
+    /// Per polygon `c, s, tx, ty`: world point = (c·x − s·y + tx, s·x + c·y + ty) of
+    /// each shape point, rounded.
+    pub poses: Vec<f64>,
+    /// Whether a binary message with every world point follows (at most
+    /// [`MAX_WORLD_POINTS`] vertices in all).
+    pub world: bool,
     /// Intersecting pairs of polygon indices `[i, j]`, `i < j`, sorted.
     pub pairs: Vec<[usize; 2]>,
     /// The contact normal of each pair, from `i` towards `j` (null when degenerate).
@@ -242,8 +282,7 @@ pub struct Frame {
     pub totals: PlannerStats,
 }
 
-/// An accepted edit, as the page applies it: points are base coordinates (current
-/// position minus the polygon's offset).
+/// An accepted edit, as the page applies it: points are shape coordinates.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Edit {
     /// The polygon's index.
@@ -255,7 +294,7 @@ pub struct Edit {
     /// For an insertion: the wire id of the vertex it follows.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub after: Option<u32>,
-    /// For a move or an insertion: the vertex's new base point.
+    /// For a move or an insertion: the vertex's new shape point.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub point: Option<[f64; 2]>,
 }
@@ -304,22 +343,33 @@ impl Simulation {
             vertices: 0,
         };
         let mut rng = SmallRng::seed_from_u64(settings.seed);
-        for (points, velocity) in generate(&settings, &mut rng) {
-            let polygon = match LinkedPolygon::from_points(points.iter().copied()) {
+        for (points, position, velocity, omega) in generate(&settings, &mut rng) {
+            let shape = match LinkedPolygon::from_points(points.iter().copied()) {
                 Ok(p) => p,
                 // Snapping made some vertices collinear: keep their hull (still on the grid).
                 Err(_) => LinkedPolygon::from_convex(&convex_hull(&points).map_err(|e| e.to_string())?),
             };
-            let ids = VertexIds::new(polygon.iter().map(|(v, _)| v));
-            let mass = area(polygon.iter().map(|(_, p)| p));
-            sim.vertices += polygon.len();
-            let id = on_scene!(&mut sim.store, s => s.insert(polygon));
+            let ids = VertexIds::new(shape.iter().map(|(v, _)| v));
+            let (mass, inertia) = mass_and_inertia(shape.iter().map(|(_, p)| p));
+            sim.vertices += shape.len();
+            // Angle 0 and a translation on the grid: every world coordinate is a sum of
+            // two grid numbers below 2^12, exact, so the first pose cannot be refused.
+            let pose = Pose::new([1.0, 0.0], position).map_err(|e| e.to_string())?;
+            let id = on_scene!(&mut sim.store, s => {
+                let id = s.insert(shape);
+                s.set_pose(id, pose).map(|()| id)
+            })
+            .map_err(|e| e.to_string())?;
             sim.index.insert(id, sim.bodies.len());
             sim.bodies.push(Body {
                 id,
-                offset: [0.0, 0.0],
+                pose,
+                angle: 0.0,
+                position,
                 velocity,
+                omega,
                 mass,
+                inertia,
                 ids,
             });
         }
@@ -352,7 +402,7 @@ impl Simulation {
     }
 
     /// Changes what can change in place: strategy, speed, pause, and the precision (the
-    /// polygons move into a scene on the other kernel, handles and offsets unchanged;
+    /// shapes move into a scene on the other kernel, handles and poses unchanged;
     /// the planner's counters start again).
     ///
     /// # Errors
@@ -373,9 +423,19 @@ impl Simulation {
             let mut store = Store::new(precision, strategy);
             self.index.clear();
             for (i, body) in self.bodies.iter_mut().enumerate() {
-                let polygon =
-                    on_scene!(&mut self.store, s => s.remove(body.id)).map_err(|e| e.to_string())?;
-                body.id = on_scene!(&mut store, s => s.insert(polygon));
+                let shape = on_scene!(&mut self.store, s => {
+                    // A twin keeps the polygon's identity, so the wire ids' handles stay
+                    // valid (a clone would be another polygon).
+                    let shape = s.shape(body.id).map(|p| p.translated_twin(&[]));
+                    s.remove(body.id).and(shape)
+                })
+                .map_err(|e| e.to_string())?;
+                // The same shape under the same pose: accepted before, accepted again.
+                body.id = on_scene!(&mut store, s => {
+                    let id = s.insert(shape);
+                    s.set_pose(id, body.pose).map(|()| id)
+                })
+                .map_err(|e| e.to_string())?;
                 self.index.insert(body.id, i);
             }
             self.store = store;
@@ -388,31 +448,50 @@ impl Simulation {
         Ok(())
     }
 
-    /// Every polygon's base vertices (counter-clockwise, wire ids 0, 1, ... in that order
-    /// for a new scene), as `x, y` pairs, with the count per polygon.
+    /// Every polygon's shape vertices (counter-clockwise, wire ids 0, 1, ... in that
+    /// order for a new scene), as `x, y` pairs, with the count per polygon.
     pub fn base_vertices(&self) -> (Vec<usize>, Vec<f64>) {
         let mut sizes = Vec::with_capacity(self.bodies.len());
         let mut coords = Vec::new();
         for body in &self.bodies {
-            let polygon = on_scene!(&self.store, s => s.polygon(body.id)).expect("live polygon");
-            sizes.push(polygon.len());
-            for (_, p) in polygon.iter() {
-                coords.push(p.x - body.offset[0]);
-                coords.push(p.y - body.offset[1]);
-            }
+            let shape = on_scene!(&self.store, s => s.shape(body.id)).expect("live polygon");
+            sizes.push(shape.len());
+            coords.extend(shape.iter().flat_map(|(_, p)| [p.x, p.y]));
         }
         (sizes, coords)
     }
 
-    /// Every polygon's current vertices, counter-clockwise.
+    /// Every polygon's world vertices, in the order of [`base_vertices`](Self::base_vertices)
+    /// (vertex k of the world polygon is the image of the shape's vertex k).
     pub fn current_vertices(&self) -> Vec<Vec<Point>> {
-        self.bodies
-            .iter()
-            .map(|b| {
-                let polygon = on_scene!(&self.store, s => s.polygon(b.id)).expect("live polygon");
-                polygon.iter().map(|(_, p)| p).collect()
-            })
-            .collect()
+        self.bodies.iter().map(|b| self.world_of(b)).collect()
+    }
+
+    fn world_of(&self, body: &Body) -> Vec<Point> {
+        on_scene!(&self.store, s => {
+            let (shape, world) = (s.shape(body.id).expect("live polygon"), s.polygon(body.id).expect("live polygon"));
+            shape.iter().map(|(v, _)| world.point(v).expect("a twin has the shape's handles")).collect()
+        })
+    }
+
+    /// Every world point, `x, y` pairs polygon after polygon, in the order of
+    /// [`base_vertices`](Self::base_vertices). O(total vertices).
+    pub fn world_coordinates(&self) -> Vec<f64> {
+        let mut out = Vec::with_capacity(2 * self.vertices);
+        for body in &self.bodies {
+            out.extend(self.world_of(body).into_iter().flat_map(|p| [p.x, p.y]));
+        }
+        out
+    }
+
+    /// The total kinetic energy (linear and rotational, [`physics`]), for the tests.
+    pub fn energy(&self) -> f64 {
+        self.bodies.iter().map(|b| b.motion().energy()).sum()
+    }
+
+    /// Each body's angle (radians) and turn rate (radians per frame at speed 1).
+    pub fn turning(&self) -> Vec<(f64, f64)> {
+        self.bodies.iter().map(|b| (b.angle, b.omega)).collect()
     }
 
     /// The store's intersecting pairs as polygon indices, sorted (no timing, no motion).
@@ -462,7 +541,15 @@ impl Simulation {
             scene: self.scene,
             frame: self.frame,
             advanced: advance,
-            offsets: self.bodies.iter().flat_map(|b| b.offset).collect(),
+            poses: self
+                .bodies
+                .iter()
+                .flat_map(|b| {
+                    let ([c, s], [tx, ty]) = (b.pose.rotation(), b.pose.translation());
+                    [c, s, tx, ty]
+                })
+                .collect(),
+            world: self.vertices <= MAX_WORLD_POINTS,
             pairs,
             normals,
             candidates: candidates.len(),
@@ -499,14 +586,28 @@ impl Simulation {
             if len > MAX_STEP {
                 d = [d[0] * MAX_STEP / len, d[1] * MAX_STEP / len];
             }
-            let d = [snap(d[0]), snap(d[1])];
-            if d == [0.0, 0.0] {
+            let turn = (body.omega * speed).clamp(-MAX_TURN, MAX_TURN);
+            if d == [0.0, 0.0] && turn == 0.0 {
                 continue;
             }
-            // Exact by construction (module docs), so the store cannot refuse; if it
-            // did, the polygon would simply not move this frame.
-            if on_scene!(&mut self.store, s => s.translate(body.id, d[0], d[1])).is_ok() {
-                body.offset = [body.offset[0] + d[0], body.offset[1] + d[1]];
+            // Kept in [−π, π] so that the angle never grows with the frames.
+            let angle = (body.angle + turn + PI).rem_euclid(TAU) - PI;
+            let position = [body.position[0] + d[0], body.position[1] + d[1]];
+            let placed = Pose::from_angle(angle, position)
+                .map_err(|e| e.to_string())
+                .and_then(|pose| {
+                    on_scene!(&mut self.store, s => s.set_pose(body.id, pose))
+                        .map(|()| pose)
+                        .map_err(|e| e.to_string())
+                });
+            match placed {
+                Ok(pose) => (body.pose, body.angle, body.position) = (pose, angle, position),
+                // Refused (the rounded image not strictly convex): stay, and go back
+                // towards the accepted pose next frame (energy unchanged).
+                Err(_) => {
+                    body.velocity = [-body.velocity[0], -body.velocity[1]];
+                    body.omega = -body.omega;
+                }
             }
         }
     }
@@ -529,8 +630,8 @@ impl Simulation {
     }
 
     /// Contact normals for the intersecting pairs `hits` (module docs, "Contact
-    /// normals"); when the frame advanced, the elastic bounce of every pair approaching
-    /// along its normal. Records the separating edge of every candidate pair found
+    /// normals"); when the frame advanced, the impulse of every pair approaching along
+    /// its normal at the contact. Records the separating edge of every candidate pair found
     /// disjoint (`apart`, with the certificates the narrow phase gave), for its next
     /// contact.
     fn respond(
@@ -568,9 +669,20 @@ impl Simulation {
             normals.push(n);
             if let (true, Some(n)) = (bounce, n) {
                 let (a, b) = (&self.bodies[i], &self.bodies[j]);
-                if let Some((va, vb)) = elastic(a.velocity, b.velocity, a.mass, b.mass, n) {
-                    self.bodies[i].velocity = clamp_speed(va);
-                    self.bodies[j].velocity = clamp_speed(vb);
+                let contact = on_scene!(&self.store, s => {
+                    let (p, q) = (s.bounding_box(a.id).expect("live polygon"), s.bounding_box(b.id).expect("live polygon"));
+                    // The centre of the boxes' overlap (they overlap: the pair is a
+                    // candidate), an O(1) estimate of where the two meet.
+                    [
+                        0.5 * (p.min.x.max(q.min.x) + p.max.x.min(q.max.x)),
+                        0.5 * (p.min.y.max(q.min.y) + p.max.y.min(q.max.y)),
+                    ]
+                });
+                if let Some(((va, wa), (vb, wb))) = impulse(&a.motion(), &b.motion(), contact, n) {
+                    for (k, v, w) in [(i, va, wa), (j, vb, wb)] {
+                        self.bodies[k].velocity = clamp_speed(v, MAX_VELOCITY);
+                        self.bodies[k].omega = w.clamp(-MAX_OMEGA, MAX_OMEGA);
+                    }
                 }
             }
         }
@@ -617,8 +729,9 @@ impl Simulation {
         Ok((p.vertices().to_vec(), q.vertices().to_vec(), t))
     }
 
-    /// Checks that every store vertex is its base vertex plus the offset and lies on the
-    /// grid (the module docs' claim), and the store's own invariants.
+    /// Checks that every world vertex is the image of its shape vertex (in `base`, the
+    /// shapes as [`base_vertices`](Self::base_vertices) gave them) under the body's pose,
+    /// that the shapes lie on the grid, and the store's own invariants.
     ///
     /// # Errors
     /// The first violation found, described.
@@ -626,17 +739,23 @@ impl Simulation {
         on_scene!(&self.store, s => s.debug_validate())?;
         let mut k = 0;
         for (i, body) in self.bodies.iter().enumerate() {
-            let polygon = on_scene!(&self.store, s => s.polygon(body.id)).map_err(|e| e.to_string())?;
-            for (_, p) in polygon.iter() {
+            let stored = on_scene!(&self.store, s => s.pose(body.id)).map_err(|e| e.to_string())?;
+            if stored != Some(body.pose) {
+                return Err(format!(
+                    "polygon {i}: the store's pose {stored:?} is not {:?}",
+                    body.pose
+                ));
+            }
+            for p in self.world_of(body) {
                 let (bx, by) = (base[k], base[k + 1]);
                 k += 2;
-                if p.x != bx + body.offset[0] || p.y != by + body.offset[1] {
+                if Some(p) != body.pose.apply(Point::new(bx, by)) {
                     return Err(format!(
-                        "polygon {i}: vertex {p:?} is not base ({bx}, {by}) + offset"
+                        "polygon {i}: vertex {p:?} is not the image of ({bx}, {by})"
                     ));
                 }
-                if snap(p.x) != p.x || snap(p.y) != p.y {
-                    return Err(format!("polygon {i}: vertex {p:?} is off the grid"));
+                if snap(bx) != bx || snap(by) != by {
+                    return Err(format!("polygon {i}: shape vertex ({bx}, {by}) is off the grid"));
                 }
             }
         }
@@ -656,49 +775,12 @@ fn stats_delta(a: PlannerStats, b: PlannerStats) -> PlannerStats {
     }
 }
 
-/// The area of a polygon (shoelace), at least the smallest positive `f64`.
-fn area(points: impl Iterator<Item = Point>) -> f64 {
-    let pts: Vec<Point> = points.collect();
-    let n = pts.len();
-    let twice: f64 = (0..n)
-        .map(|i| {
-            let (a, b) = (pts[i], pts[(i + 1) % n]);
-            a.x * b.y - a.y * b.x
-        })
-        .sum();
-    (0.5 * twice).abs().max(f64::MIN_POSITIVE)
-}
-
-/// The elastic collision of bodies with velocities `va`, `vb` and masses `ma`, `mb`
-/// along the unit normal `n` (from a to b): the new velocities, or `None` when they do
-/// not approach along `n`. Momentum and kinetic energy are conserved.
-pub fn elastic(va: [f64; 2], vb: [f64; 2], ma: f64, mb: f64, n: [f64; 2]) -> Option<([f64; 2], [f64; 2])> {
-    let rel = (vb[0] - va[0]) * n[0] + (vb[1] - va[1]) * n[1];
-    // NaN or non-negative: not approaching.
-    if rel.is_nan() || rel >= 0.0 {
-        return None;
-    }
-    let total = ma + mb;
-    let (ka, kb) = (2.0 * mb / total * rel, 2.0 * ma / total * rel);
-    Some((
-        [va[0] + ka * n[0], va[1] + ka * n[1]],
-        [vb[0] - kb * n[0], vb[1] - kb * n[1]],
-    ))
-}
-
-fn clamp_speed(v: [f64; 2]) -> [f64; 2] {
-    let len = v[0].hypot(v[1]);
-    if len > MAX_VELOCITY {
-        [v[0] * MAX_VELOCITY / len, v[1] * MAX_VELOCITY / len]
-    } else {
-        v
-    }
-}
-
-/// The polygons of a new scene (on the grid, counter-clockwise) and their velocities:
-/// ellipses of random axes and rotation with `vertices` vertices at equal parameter
-/// steps, sized so that they cover about a fifth of the box, on a jittered grid of cells.
-fn generate(settings: &Settings, rng: &mut SmallRng) -> Vec<(Vec<Point>, [f64; 2])> {
+/// The bodies of a new scene: shapes (on the grid, counter-clockwise, about their
+/// centres), positions (on the grid), velocities and turn rates. The shapes are ellipses
+/// of random axes and rotation with `vertices` vertices at equal parameter steps, sized so
+/// that they cover about a fifth of the box, on a jittered grid of cells.
+#[allow(clippy::type_complexity)]
+fn generate(settings: &Settings, rng: &mut SmallRng) -> Vec<(Vec<Point>, [f64; 2], [f64; 2], f64)> {
     let count = settings.polygons;
     let [w, h] = WORLD;
     let cols = ((count as f64 * w / h).sqrt().ceil() as usize).max(1);
@@ -717,7 +799,7 @@ fn generate(settings: &Settings, rng: &mut SmallRng) -> Vec<(Vec<Point>, [f64; 2
             let slack = |cell: f64| (0.5 * cell - a).max(0.0);
             let cx = (col as f64 + 0.5) * cw + rng.random_range(-1.0..=1.0) * slack(cw);
             let cy = (row as f64 + 0.5) * ch + rng.random_range(-1.0..=1.0) * slack(ch);
-            let (cx, cy) = (cx.clamp(a, w - a), cy.clamp(a, h - a));
+            let (cx, cy) = (snap(cx.clamp(a, w - a)), snap(cy.clamp(a, h - a)));
             let rot: f64 = rng.random_range(0.0..TAU);
             let phase: f64 = rng.random_range(0.0..TAU);
             let (c, s) = (rot.cos(), rot.sin());
@@ -726,12 +808,13 @@ fn generate(settings: &Settings, rng: &mut SmallRng) -> Vec<(Vec<Point>, [f64; 2
                 .map(|i| {
                     let t = phase + TAU * i as f64 / n as f64;
                     let (x, y) = (a * t.cos(), b * t.sin());
-                    Point::new(snap(cx + c * x - s * y), snap(cy + s * x + c * y))
+                    Point::new(snap(c * x - s * y), snap(s * x + c * y))
                 })
                 .collect();
             let dir: f64 = rng.random_range(0.0..TAU);
             let speed = BASE_SPEED * rng.random_range(0.6..=1.4);
-            (points, [speed * dir.cos(), speed * dir.sin()])
+            let omega = BASE_OMEGA * rng.random_range(-1.0..=1.0);
+            (points, [cx, cy], [speed * dir.cos(), speed * dir.sin()], omega)
         })
         .collect()
 }
