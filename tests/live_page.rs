@@ -163,7 +163,7 @@ impl Browser {
                 "args": ["--headless", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
                          "--disable-quic", "--no-first-run", "--disable-background-networking",
                          "--disable-component-update", "--disable-sync", "--hide-scrollbars",
-                         "--window-size=1280,900", "--force-device-scale-factor=1",
+                         "--window-size=1280,800", "--force-device-scale-factor=1",
                          format!("--user-data-dir={}", profile.display())]
             }
         }}});
@@ -283,6 +283,23 @@ struct Shown {
     pairs: Vec<[usize; 2]>,
     polygons: Vec<Vec<Point>>,
     ids: Vec<Vec<u32>>,
+}
+
+/// The direction of a polygon's edge from vertex 0 to vertex 1, in radians.
+fn direction(p: &[Point]) -> f64 {
+    (p[1].y - p[0].y).atan2(p[1].x - p[0].x)
+}
+
+/// The status box is above every control and entirely in the viewport.
+fn status_in_view(b: &Browser) {
+    let v = b.js(
+        "const s = document.getElementById('status').getBoundingClientRect(),          f = document.querySelector('fieldset').getBoundingClientRect();          return [s.top, s.bottom, f.top, window.innerHeight];",
+    );
+    let [top, bottom, controls, height] = [0, 1, 2, 3].map(|k| v[k].as_f64().expect("a number"));
+    assert!(
+        top >= 0.0 && bottom <= controls && bottom <= height,
+        "the status box spans {top}..{bottom}, the controls start at {controls}, the viewport ends at {height}"
+    );
 }
 
 /// What the page shows, once the drawn pairs account for every edit it received.
@@ -486,6 +503,20 @@ fn live_page_in_a_browser() {
         later.frame
     );
     assert_ne!(first.polygons, later.polygons, "polygons move");
+    // They turn: edge 0's direction changes (a translation keeps it).
+    let turned = first
+        .polygons
+        .iter()
+        .zip(&later.polygons)
+        .filter(|(a, b)| (direction(a) - direction(b)).abs() > 1e-4)
+        .count();
+    assert!(
+        2 * turned >= first.polygons.len(),
+        "only {turned} of {} polygons turned",
+        first.polygons.len()
+    );
+    // The status box sits at the top of the sidebar, in view.
+    status_in_view(&b);
 
     // 2. Collisions appear within the first seconds, and every colliding pair the page
     //    shows is the exact reference's answer for the page's own coordinates.
@@ -670,6 +701,7 @@ fn live_page_in_a_browser() {
     );
     let now = assert_pairs_match_the_library(&b);
     assert_eq!(now.polygons[d], tri, "the refused drag moved nothing");
+    status_in_view(&b);
 
     // 6b. Step-through: each algorithm's trace on a pair, stepped to its end with the
     // page's buttons; the last step's answer and the certificate are the library's.
@@ -685,6 +717,32 @@ fn live_page_in_a_browser() {
         b.wait_for("the trace", &format!("window.polysect.traces > {traces}"), 20);
         let t = b.js("return window.polysect.trace;");
         assert_eq!(t["algorithm"], json!(algorithm));
+        if algorithm == "barba" {
+            // Only the pair is drawn: no other polygon's fill shows at its centroid.
+            std::thread::sleep(Duration::from_millis(200));
+            let img = decode_png(&b.screenshot());
+            let mut bare = 0;
+            for (i, poly) in now.polygons.iter().enumerate().filter(|(i, _)| !pair.contains(i)) {
+                let at = to_screen(&b, centroid(poly)).map(|c| c * dpr);
+                let paint = paint_at(&img, at);
+                assert!(
+                    paint != Paint::Plain && paint != Paint::Hit,
+                    "polygon {i} drawn during the trace of {pair:?}"
+                );
+                // Not even faintly: the trace's background itself (unless one of the
+                // pair's zoomed lines happens to cross there).
+                let (x, y) = (at[0].round() as usize, at[1].round() as usize);
+                let k = 4 * (y * img.width + x);
+                if img.rgba[k..k + 3]
+                    .iter()
+                    .zip([251, 252, 254])
+                    .all(|(&c, w)| (c as i32 - w).abs() <= 2)
+                {
+                    bare += 1;
+                }
+            }
+            assert!(bare >= 1, "the scene shows behind the trace of {pair:?}");
+        }
         let steps = t["steps"].as_u64().expect("steps");
         for k in 1..steps {
             assert_eq!(t_step(&b), k - 1);
@@ -733,6 +791,14 @@ fn live_page_in_a_browser() {
          return side.scrollWidth <= side.clientWidth && t.scrollWidth <= t.clientWidth + 1;",
     );
     assert_eq!(fits, json!(true), "the certificate text overflows the sidebar");
+    let clear = b.js(
+        "const t = document.getElementById('traceText').getBoundingClientRect();          return ['traceA', 'traceB', 'traceAlgorithm', 'trace', 'traceBack', 'traceForward', 'traceClose'].every((id) => {            const r = document.getElementById(id).getBoundingClientRect();            return r.bottom <= t.top + 0.5 && r.top >= 0 && r.bottom <= window.innerHeight; });",
+    );
+    assert_eq!(
+        clear,
+        json!(true),
+        "the certificate text covers the step-through's inputs, or they are out of view"
+    );
     let zoom = b.js("return window.polysect.traceZoom;").as_f64().expect("zoom");
     assert!(
         zoom > 1.0,
@@ -742,6 +808,10 @@ fn live_page_in_a_browser() {
     b.click("#traceClose");
     std::thread::sleep(Duration::from_millis(300));
     assert_eq!(b.js("return window.polysect.settings.paused;"), json!(true));
+    assert_eq!(
+        b.js("return document.getElementById('pause').textContent;"),
+        json!("Resume")
+    );
 
     // 6c. A trace of a running simulation pauses it while shown and resumes it on Close;
     // a refused trace does not pause; a success clears an old error from the status.
@@ -786,6 +856,10 @@ fn live_page_in_a_browser() {
         10,
     );
     assert_eq!(b.js("return window.polysect.trace;"), Value::Null);
+    assert_eq!(
+        b.js("return document.getElementById('pause').textContent;"),
+        json!("Pause")
+    );
     // A new scene chosen while a trace holds the motion starts moving.
     let traces = traces + 1;
     b.click("#trace");
@@ -805,10 +879,48 @@ fn live_page_in_a_browser() {
         b.js("return document.getElementById('pause').textContent;"),
         json!("Pause")
     );
-    // The help text is in view without scrolling.
+    // The help text is in view without scrolling (the window is 1280 × 800).
     let help =
         b.js("return document.getElementById('help').getBoundingClientRect().bottom <= window.innerHeight;");
     assert_eq!(help, json!(true), "the help text is below the fold");
+
+    // 6d. An edit while the bodies spin (slowly, so that the vertex is still under the
+    // pointer when the drag starts): a vertex pulled outwards is accepted.
+    b.js("const s = document.getElementById('speed'); s.value = '0.1'; s.dispatchEvent(new Event('input')); return true;");
+    b.wait_for("the slow speed", "window.polysect.settings.speed === 0.1", 10);
+    let spin = shown(&b);
+    let (edits, refusals, errors) = (
+        b.js("return window.polysect.edits;").as_u64().expect("count"),
+        b.js("return window.polysect.refusals;").as_u64().expect("count"),
+        b.js("return window.polysect.errors;").as_u64().expect("count"),
+    );
+    let tri = &spin.polygons[0];
+    let c = centroid(tri);
+    let (v, len) = (tri[0], (tri[0].x - c.x).hypot(tri[0].y - c.y));
+    let out = Point::new(v.x + 15.0 * (v.x - c.x) / len, v.y + 15.0 * (v.y - c.y) / len);
+    b.drag(to_screen(&b, v), to_screen(&b, out), 200);
+    b.wait_for(
+        "the edit while spinning",
+        &format!("window.polysect.edits > {edits}"),
+        20,
+    );
+    assert_eq!(
+        (
+            b.js("return window.polysect.refusals;").as_u64(),
+            b.js("return window.polysect.errors;").as_u64()
+        ),
+        (Some(refusals), Some(errors)),
+        "the drag while spinning was refused: {}",
+        b.js("return window.polysect.status;")
+    );
+    std::thread::sleep(Duration::from_millis(300));
+    let spun = shown(&b);
+    assert!(spun.frame > spin.frame, "still running");
+    assert!(
+        (1..spin.polygons.len())
+            .any(|i| (direction(&spin.polygons[i]) - direction(&spun.polygons[i])).abs() > 1e-6),
+        "still turning"
+    );
 
     // 7. SIGTERM stops the server with status 0.
     drop(b);
@@ -1018,6 +1130,8 @@ fn the_served_page_has_the_help_the_numbers_and_the_trace_controls() {
         page.find("<fieldset>").expect("the controls"),
     );
     assert!(help < side, "the help text comes before the controls");
+    let status = page.find("id=\"status\"").expect("the status box");
+    assert!(status < help, "the status box is at the top of the sidebar");
     assert!(
         page.contains("id=\"showNumbers\""),
         "the polygon numbers can be switched"

@@ -182,6 +182,12 @@ fn websocket_sessions_answer_and_refuse_as_the_protocol_says() {
     let f = read_text(&mut ws);
     assert_eq!(f["type"], "frame");
     assert_eq!(f["frame"], 1);
+    // A small scene's frame is followed by its world points, as many as the shapes'.
+    assert_eq!(f["world"], true);
+    match ws.read().expect("the world points") {
+        Message::Binary(b) => assert_eq!(b.len() as u64, 16 * n),
+        other => panic!("expected binary, got {other:?}"),
+    }
     ws.send(Message::text("{\"op\":\"teleport\"}")).expect("sends");
     assert!(
         read_text(&mut ws)["message"]
@@ -210,6 +216,7 @@ fn websocket_sessions_answer_and_refuse_as_the_protocol_says() {
     // The session goes on after every error.
     ws.send(Message::text("{\"op\":\"frame\"}")).expect("sends");
     assert_eq!(read_text(&mut ws)["frame"], 2);
+    assert!(matches!(ws.read().expect("the world points"), Message::Binary(_)));
     // Above the transport limit the connection is closed (status 1009).
     // Only the frame header is sent: the server refuses on the declared
     // length, and a client still writing a 2 MiB payload into a socket the
@@ -438,6 +445,10 @@ fn idle_pages_are_closed_and_active_ones_are_not() {
             .send(Message::text("{\"op\":\"frame\"}"))
             .expect("still open");
         assert!(matches!(active.read().expect("a frame"), Message::Text(_)));
+        assert!(matches!(
+            active.read().expect("its world points"),
+            Message::Binary(_)
+        ));
         std::thread::sleep(Duration::from_millis(200));
     }
     // Idle: closed with status 1001 (going away).
