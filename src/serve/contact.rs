@@ -1,4 +1,4 @@
-//! The contact normal of a colliding pair, for the elastic bounce, taken from the
+//! The contact normal of a colliding pair, for the collision impulse, taken from the
 //! store's certificates (docs/live.md, "The contact normal").
 //!
 //! * **From the last disjoint frame**: while a pair's boxes overlap and the polygons do

@@ -5,10 +5,12 @@
 //! The simulation runs **in this process**, in Rust, one [`Simulation`] per open page;
 //! the page is plain HTML, JavaScript and a canvas (built into the binary with
 //! `include_str!`), talking to it over one WebSocket. The page asks for a frame, the
-//! server moves the polygons, asks the store for the intersecting pairs and answers with
-//! what changed: one offset per polygon, the pairs, the figures; edits from the page go
-//! through the store's validated O(1) edits and come back as the edited vertex. Whole
-//! polygons cross the wire once per scene, as binary `f64` data. docs/live.md argues
+//! server moves and turns the polygons (an absolute pose each), asks the store for the
+//! intersecting pairs and answers with one pose per polygon, the pairs, the figures and,
+//! for scenes of at most [`MAX_WORLD_POINTS`](sim::MAX_WORLD_POINTS) vertices, every
+//! world point as binary `f64` data; edits from the page go through the store's
+//! validated edits and come back as the edited vertex. The shapes cross the wire once
+//! per scene, as binary `f64` data. docs/live.md argues
 //! the choice against compiling the library to WebAssembly.
 //!
 //! # Threads and bounds

@@ -1,5 +1,5 @@
 //! The simulation behind the live page: convex polygons moving in a box, held in a real
-//! [`Scene`], bouncing elastically off the walls and off each other.
+//! [`Scene`], turning, bouncing off the walls and off each other.
 //!
 //! # One frame
 //! 1. **Update**: each body's angle and position advance by its angular velocity and

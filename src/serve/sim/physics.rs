@@ -48,15 +48,13 @@ impl Motion {
     }
 }
 
+/// A body's velocity and angular velocity after a collision.
+pub type Turned = ([f64; 2], f64);
+
 /// The collision of `a` and `b` at the world point `contact` along the unit normal `n`
 /// (from a towards b): the new (velocity, omega) of each, or `None` when their points
 /// at `contact` do not approach along `n` (or a value is not finite).
-pub fn impulse(
-    a: &Motion,
-    b: &Motion,
-    contact: [f64; 2],
-    n: [f64; 2],
-) -> Option<(([f64; 2], f64), ([f64; 2], f64))> {
+pub fn impulse(a: &Motion, b: &Motion, contact: [f64; 2], n: [f64; 2]) -> Option<(Turned, Turned)> {
     let (pa, pb) = (a.point_velocity(contact), b.point_velocity(contact));
     let rel = (pb[0] - pa[0]) * n[0] + (pb[1] - pa[1]) * n[1];
     // NaN or non-negative: not approaching.
