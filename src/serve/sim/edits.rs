@@ -103,7 +103,7 @@ impl Simulation {
         let v = self.vertex(polygon, vertex)?;
         let p = self.target(polygon, to)?;
         let id = self.bodies[polygon].id;
-        on_scene!(&mut self.store, s => s.move_vertex(id, v, p)).map_err(refused)?;
+        on_scene!(&mut self.store, s => s.move_vertex(id, v, p)).map_err(|e| refused_at(e, to))?;
         self.edited(polygon);
         Ok(Edit {
             polygon,
@@ -148,7 +148,8 @@ impl Simulation {
                 self.vertices
             )));
         }
-        let v = on_scene!(&mut self.store, s => s.insert_vertex(id, a, p)).map_err(refused)?;
+        let v =
+            on_scene!(&mut self.store, s => s.insert_vertex(id, a, p)).map_err(|e| refused_at(e, point))?;
         let ids = &mut self.bodies[polygon].ids;
         ids.map.insert(next, v);
         ids.next = next + 1;
@@ -181,6 +182,18 @@ impl Simulation {
             after: None,
             point: None,
         })
+    }
+}
+
+/// A refusal of an edit at the world point `at`: the store names the point in the
+/// polygon's own (shape) coordinates, so the page's message adds the pointer's.
+fn refused_at(e: SceneError, at: [f64; 2]) -> EditFailure {
+    match refused(e) {
+        EditFailure::Refused(reason) => EditFailure::Refused(format!(
+            "{reason} (in the polygon's own coordinates; the pointer is at ({:?}, {:?}))",
+            at[0], at[1]
+        )),
+        invalid => invalid,
     }
 }
 
