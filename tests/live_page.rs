@@ -614,6 +614,14 @@ fn live_page_in_a_browser() {
         "window.polysect.ready && window.polysect.settings.vertices === 3 && window.polysect.shown().polygons.length === 6",
         20,
     );
+    // A new scene keeps the user's pause, and the button says so.
+    assert_eq!(
+        (
+            b.js("return window.polysect.settings.paused;"),
+            b.js("return document.getElementById('pause').textContent;")
+        ),
+        (json!(true), json!("Resume"))
+    );
     let before = assert_pairs_match_the_library(&b);
     // A disjoint pair (a, c); a's vertex whose opposite edge has c's centroid deepest
     // on its inner side moves onto c's centroid: the drag keeps a convex, so it is
@@ -849,6 +857,29 @@ fn live_page_in_a_browser() {
     assert!(
         b.js("return document.getElementById('status').className;") != json!("ok"),
         "the refusal is shown"
+    );
+    // An index out of range: refused the same way, the motion still running.
+    let errors = b.js("return window.polysect.errors;").as_u64().expect("count");
+    b.type_into("#traceB", "999");
+    b.click("#trace");
+    b.wait_for(
+        "the out-of-range trace refused",
+        &format!("window.polysect.errors > {errors}"),
+        20,
+    );
+    let status = b.js("return window.polysect.status;");
+    assert!(
+        status.as_str().is_some_and(|t| t.contains("no polygon 999")),
+        "{status}"
+    );
+    std::thread::sleep(Duration::from_millis(300));
+    assert_eq!(
+        (
+            b.js("return window.polysect.settings.paused;"),
+            b.js("return document.getElementById('pause').textContent;")
+        ),
+        (json!(false), json!("Pause")),
+        "a refused trace leaves the motion running"
     );
     let traces = b.js("return window.polysect.traces;").as_u64().expect("count");
     b.type_into("#traceB", "1");
