@@ -134,7 +134,7 @@ fn exact_certificate_on(pv: &[Point], qv: &[Point]) -> Certificate {
 
 /// Every vertex against the other polygon, then every pair of edges: O(n·m). Reached
 /// only if the exact witness derivation of an intersecting pair failed, which its
-/// proof rules out (tests/certificates.rs checks that no certified call under the exact
+/// proof rules out (tests/geometry/certificates.rs checks that no certified call under the exact
 /// kernel reaches even [`exact_certificate`]).
 fn brute_force_witness(pv: &[Point], qv: &[Point]) -> Certificate {
     let k = Exact;
