@@ -76,7 +76,7 @@ fn distinct_samples_are_uniform_subsets() {
     let mut rng = SmallRng::seed_from_u64(SEED + 1);
     let p = thinned_polygon(&mut rng);
     let index = index_of(&p);
-    let mut ws = SampleWorkspace::new();
+    let mut ws = SampleWorkspace::default();
     for k in [5usize, 30] {
         let mut counts = vec![0u64; 50];
         let mut out = Vec::new();

@@ -379,6 +379,33 @@ fn shared_queries_answer_exactly_from_several_threads_and_change_nothing() {
                         let want = worlds[i].contains_point(x);
                         assert_eq!(shared.contains_point_shared(ids[i], x), Ok(want), "{i} {x:?}");
                     }
+                    // One polygon against all, and the frame, from two of the threads,
+                    // against the same truth.
+                    let n = ids.len();
+                    match t {
+                        0 => {
+                            for i in 0..n {
+                                let want: Vec<_> = (0..n)
+                                    .filter(|&j| j != i && truth[i * n + j])
+                                    .map(|j| ids[j])
+                                    .collect();
+                                assert_eq!(
+                                    shared.intersecting_shared(ids[i]),
+                                    Ok(want),
+                                    "round {round}: {i}"
+                                );
+                            }
+                        }
+                        1 => {
+                            let want: Vec<_> = (0..n)
+                                .flat_map(|i| (i + 1..n).map(move |j| (i, j)))
+                                .filter(|&(i, j)| truth[i * n + j])
+                                .map(|(i, j)| (ids[i], ids[j]))
+                                .collect();
+                            assert_eq!(shared.intersecting_pairs_shared(), want, "round {round}");
+                        }
+                        _ => {}
+                    }
                 });
             }
         });
@@ -401,5 +428,11 @@ fn shared_queries_answer_exactly_from_several_threads_and_change_nothing() {
             scene.contains_point_shared(gone, [0.0, 0.0]),
             Err(SceneError::StalePolygon(gone))
         );
+        assert_eq!(
+            scene.intersecting_shared(gone),
+            Err(SceneError::StalePolygon(gone))
+        );
+        // The frame through `&self` is the planned frame.
+        assert_eq!(scene.intersecting_pairs_shared(), scene.intersecting_pairs());
     }
 }

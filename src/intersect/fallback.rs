@@ -12,7 +12,7 @@
 //! Each step is reported to the [`Probe`]. Linked polygons are walked into arrays first
 //! (O(n + m)); [`Clm`](super::Clm) needs that only under an inconsistent kernel.
 //!
-//! [`proven`] and [`proven_linked`] are for callers that must never hand out a
+//! [`verified_or_exact`] and [`verified_or_exact_linked`] are for callers that must never hand out a
 //! certificate that fails [`verify`](super::verify) (the CLI under `--precision fast`):
 //! they check it exactly and replace a failing one with [`exact_certificate`]'s.
 
@@ -99,26 +99,30 @@ pub fn exact_certificate(p: &ConvexPolygon, q: &ConvexPolygon) -> Certificate {
 ///
 /// ```
 /// use polysect::{ConvexPolygon, Point};
-/// use polysect::intersect::{Certificate, Which, proven, verify};
+/// use polysect::intersect::{Certificate, Which, verified_or_exact, verify};
 /// let p = ConvexPolygon::new([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])?;
 /// let q = ConvexPolygon::new([[1.0, 0.5], [2.0, 0.0], [2.0, 1.0]])?;
 /// // A wrong claim (q's vertex (1, 0.5) lies on p's edge x = 1) is replaced.
 /// let wrong = Certificate::Separated { of: Which::P, from: Point::new(1.0, 0.0), to: Point::new(1.0, 1.0) };
-/// let c = proven(&p, &q, wrong);
+/// let c = verified_or_exact(&p, &q, wrong);
 /// assert!(c.intersects());
 /// assert_eq!(verify(&p, &q, &c), Ok(()));
 /// # Ok::<(), polysect::PolygonError>(())
 /// ```
-pub fn proven(p: &ConvexPolygon, q: &ConvexPolygon, certificate: Certificate) -> Certificate {
+pub fn verified_or_exact(p: &ConvexPolygon, q: &ConvexPolygon, certificate: Certificate) -> Certificate {
     match super::verify(p, q, &certificate) {
         Ok(()) => certificate,
         Err(_) => exact_certificate(p, q),
     }
 }
 
-/// [`proven`] on linked polygons: verified in place; a failing certificate is replaced
+/// [`verified_or_exact`] on linked polygons: verified in place; a failing certificate is replaced
 /// by [`exact_certificate`]'s on the walked arrays. O(n + m).
-pub fn proven_linked(p: &LinkedPolygon, q: &LinkedPolygon, certificate: Certificate) -> Certificate {
+pub fn verified_or_exact_linked(
+    p: &LinkedPolygon,
+    q: &LinkedPolygon,
+    certificate: Certificate,
+) -> Certificate {
     match super::verify_linked(p, q, &certificate) {
         Ok(()) => certificate,
         Err(_) => exact_certificate(&p.to_convex(), &q.to_convex()),
@@ -134,7 +138,7 @@ fn exact_certificate_on(pv: &[Point], qv: &[Point]) -> Certificate {
 
 /// Every vertex against the other polygon, then every pair of edges: O(n·m). Reached
 /// only if the exact witness derivation of an intersecting pair failed, which its
-/// proof rules out (tests/certificates.rs checks that no certified call under the exact
+/// proof rules out (tests/geometry/certificates.rs checks that no certified call under the exact
 /// kernel reaches even [`exact_certificate`]).
 fn brute_force_witness(pv: &[Point], qv: &[Point]) -> Certificate {
     let k = Exact;

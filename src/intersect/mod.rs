@@ -66,7 +66,7 @@ pub use counts::{Counts, CountsSummary, LpCall};
 pub use dobkin::Dobkin;
 #[cfg(feature = "instrument")]
 pub use dobkin::DobkinVariant;
-pub use fallback::{exact_certificate, proven, proven_linked};
+pub use fallback::{exact_certificate, verified_or_exact, verified_or_exact_linked};
 pub use linear::Linear;
 #[cfg(feature = "instrument")]
 pub use linear::brute_force;

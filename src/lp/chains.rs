@@ -58,7 +58,7 @@
 //! Sets of one or two points, a shared point (aᵢ = bⱼ: every `orient` is zero, so the
 //! walk stops there and the verdict is *intersecting*), touching hulls, collinear
 //! edges on the separator and separators in any direction follow the same path; the
-//! tests (tests/lp_chains.rs) compare with the LP and an exact brute force on random,
+//! tests (tests/geometry/lp_chains.rs) compare with the LP and an exact brute force on random,
 //! touching, one-ulp-gap, collinear and extreme-scale inputs.
 //!
 //! # Precision

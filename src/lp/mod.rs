@@ -73,7 +73,7 @@
 //! Single points, duplicates (within a set or across sets: a shared point is an
 //! intersection), collinear sets, all points on one line, separators in any
 //! direction (vertical, horizontal, parallel to d₀) and touching hulls are all handled
-//! by the same code path; tests/lp.rs checks each against an exact brute force.
+//! by the same code path; tests/geometry/lp.rs checks each against an exact brute force.
 
 mod chains;
 mod seidel;

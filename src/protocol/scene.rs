@@ -44,7 +44,7 @@
 use super::json::shown;
 use super::line::{Channel, Stop, each_line, json_string};
 use super::{certified_answer_json, write_point};
-use crate::intersect::proven_linked;
+use crate::intersect::verified_or_exact_linked;
 use crate::kernel::{Exact, Kernel, Point, Pose};
 use crate::polygon::{ConvexPolygon, EditError, LinkedPolygon, VertexId};
 use crate::store::{PolygonId, Scene, SceneError, Strategy};
@@ -671,7 +671,7 @@ impl<K: Kernel> SceneSession<K> {
                     self.scene.polygon(ia).map_err(internal)?,
                     self.scene.polygon(ib).map_err(internal)?,
                 );
-                certificate = proven_linked(p, q, certificate);
+                certificate = verified_or_exact_linked(p, q, certificate);
             }
             return Ok(certified_answer_json(&certificate));
         }

@@ -41,7 +41,7 @@ pub(crate) fn check(
                 let certificate = algorithm.run_certified_rng(precision, p, q, &mut rng).0;
                 match precision {
                     Precision::Exact => certificate,
-                    Precision::Fast => polysect::intersect::proven(p, q, certificate),
+                    Precision::Fast => polysect::intersect::verified_or_exact(p, q, certificate),
                 }
             },
         )?);

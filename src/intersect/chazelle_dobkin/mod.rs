@@ -85,7 +85,7 @@
 //!   every accepted edge separates the whole polygons. Then the faces at the final chains' vertices and the pencil lines
 //!   (O(1)). The maximum of h in the projective frame need not be where the polygons
 //!   are closest, so all of these can fail; then only the answer is returned
-//!   (completed by [`Dobkin`](crate::intersect::Dobkin)'s separation, which tests/certificates.rs
+//!   (completed by [`Dobkin`](crate::intersect::Dobkin)'s separation, which tests/geometry/certificates.rs
 //!   counts: 0 of 2,700 disjoint queries on the generator families).
 //!
 //! # Complexity

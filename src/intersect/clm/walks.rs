@@ -148,8 +148,10 @@ pub(super) fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: 
     for (slot, (walk, set)) in slots.iter_mut().zip(first.into_iter().zip([Set::Cp, Set::Cq])) {
         *slot = Some(Active::start(k, set, walk, chains));
     }
-    // At the top of this loop at least one slot walks: the loop returns when none does.
-    loop {
+    // At the top of this loop at least one slot walks: the loop ends when none does.
+    // An answer found while the other slot still walks leaves the loop with that slot's
+    // buffers out of `chains`; they go back below, so the workspace keeps them.
+    let answer = 'decide: loop {
         // Step every active walk until one of them ends.
         lockstep(k, &mut slots);
         for slot in &mut slots {
@@ -206,7 +208,7 @@ pub(super) fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: 
                             Separation::Intersecting,
                             probe,
                         );
-                        return true;
+                        break 'decide true;
                     }
                     // No answer, or a certified query's intersection (the LP records the
                     // witness): the LP decides.
@@ -258,7 +260,7 @@ pub(super) fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: 
                 if CERT {
                     trace.meet = Some((near, far));
                 }
-                return true;
+                break 'decide true;
             };
             if CERT {
                 trace.lines.push((line, near, far));
@@ -283,9 +285,13 @@ pub(super) fn walk_and_decide<K: Kernel, R: Rng + ?Sized, P: Probe, const CERT: 
             }
         }
         if slots.iter().all(Option::is_none) {
-            return false;
+            break false;
         }
+    };
+    for Active { set, buffers, .. } in slots.into_iter().flatten() {
+        chains.put(set, buffers);
     }
+    answer
 }
 
 /// [`separate_chains`] on the second chain `near` (C′_P or C′_Q, in walk order: its

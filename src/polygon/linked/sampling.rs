@@ -7,7 +7,7 @@ use rand::Rng;
 
 /// Scratch memory for the sampling of [`LinkedPolygon`]s, reused across queries so a
 /// query allocates nothing in the steady state. Holds one `u32` stamp per vertex of the
-/// largest polygon sampled so far.
+/// largest polygon sampled so far; `SampleWorkspace::default()` is an empty one.
 #[derive(Clone, Debug, Default)]
 pub struct SampleWorkspace {
     stamps: Vec<u32>,
@@ -15,11 +15,6 @@ pub struct SampleWorkspace {
 }
 
 impl SampleWorkspace {
-    /// An empty workspace; it grows to the largest polygon sampled with it.
-    pub fn new() -> Self {
-        Self::default()
-    }
-
     /// Starts a new round of marks over `n` positions; O(1) amortised.
     fn begin(&mut self, n: usize) {
         if self.stamps.len() < n {
@@ -51,7 +46,7 @@ impl LinkedPolygon {
     /// Allocates; the crate's queries sample positions into a reused workspace.
     pub fn sample<R: Rng + ?Sized>(&self, k: usize, rng: &mut R) -> Vec<VertexId> {
         let mut out = Vec::with_capacity(k.min(self.len()));
-        self.sample_positions(k, rng, &mut SampleWorkspace::new(), &mut out);
+        self.sample_positions(k, rng, &mut SampleWorkspace::default(), &mut out);
         out.into_iter().map(|p| self.id_at(p as usize)).collect()
     }
 

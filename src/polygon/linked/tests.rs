@@ -152,7 +152,7 @@ fn sample_positions_are_distinct_and_complete() {
         })
         .collect();
     let p = LinkedPolygon::from_convex(&ConvexPolygon::new(pts).unwrap());
-    let mut ws = SampleWorkspace::new();
+    let mut ws = SampleWorkspace::default();
     for k in [0, 1, 10, 50, 51, 99, 100, 500] {
         let mut out = Vec::new();
         p.sample_positions(k, &mut rng, &mut ws, &mut out);

@@ -18,7 +18,7 @@
 //!   The computed area A′ then satisfies
 //!   |A′ − A| ≤ 2^−53·A + 4n²·2^−106·P, where P is the sum of |dᵢ.x·dᵢ₊₁.y| +
 //!   |dᵢ.y·dᵢ₊₁.x| (so P/A is a condition number: about n for a regular polygon, large
-//!   only for needles). tests/queries.rs checks the bound against the exact area
+//!   only for needles). tests/geometry/queries.rs checks the bound against the exact area
 //!   computed with big integers; every area there came out correctly rounded.
 //! * The centroid is a quotient of constructed sums; each term cᵢ (dᵢ + dᵢ₊₁) is
 //!   rounded, so per coordinate |C′ − C| ≤ 4·2^−53·D·Q + ½ ulp(C), where D is the
@@ -206,7 +206,7 @@ fn linked_points(p: &LinkedPolygon) -> impl Iterator<Item = Point> + Clone + '_ 
 
 impl ConvexPolygon {
     /// The area, computed with compensated sums: relative error about 2^−53 (every
-    /// area in tests/queries.rs equals the exact area rounded to nearest). `+∞` when
+    /// area in tests/geometry/queries.rs equals the exact area rounded to nearest). `+∞` when
     /// the area exceeds `f64::MAX`.
     ///
     /// # Complexity

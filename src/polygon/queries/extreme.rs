@@ -34,7 +34,7 @@
 //! every polygon and direction (over the draws); O(n) in the worst case. No allocation.
 //! Walking a 2^20-gon for its rightmost vertex reads all 2^20 vertices; the sampled
 //! query evaluates about 1.6·√n = 1,600 predicates on average (counted in
-//! tests/queries.rs; timed in benches/queries.rs).
+//! tests/geometry/queries.rs; timed in benches/queries.rs).
 //!
 //! # Precision
 //! Every comparison is the sign of a polynomial in the coordinates of the vertices and

@@ -4,8 +4,7 @@
 //! fill their panels, a legend, error panels, simple polygons with crossing points, the
 //! limit warning, SVG only).
 
-mod common;
-use common::run;
+use crate::common::run;
 use std::path::PathBuf;
 
 fn temp(name: &str) -> PathBuf {

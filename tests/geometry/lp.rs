@@ -3,9 +3,7 @@
 //! touchings), all points on one line, single points, vertical and horizontal gaps, and
 //! the same sets scaled by 2^±1000 and shifted by 2^40..2^52.
 
-mod hulls;
-
-use hulls::hulls_intersect;
+use crate::hulls::hulls_intersect;
 use polysect::kernel::Kernel;
 use polysect::lp::{LpError, LpWorkspace, Separation, separating_line};
 use polysect::{Exact, Fast, Orientation, Point};

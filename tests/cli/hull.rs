@@ -7,8 +7,7 @@ use serde_json::{Value, json};
 use std::io::{BufRead, BufReader, Write};
 use std::process::{Command, Stdio};
 
-mod common;
-use common::run;
+use crate::common::run;
 
 fn answers(args: &[&str], input: &str) -> Vec<Value> {
     let (code, out, err) = run(args, input.as_bytes());

@@ -48,7 +48,7 @@ fn check_refs(p: &ConvexPolygon, q: &ConvexPolygon, family: &str, what: &str, fa
             "linear vs oracle: {what}\n{p:?}\n{q:?}"
         );
     }
-    // Linear is the reference itself (checked against the oracle in tests/reference.rs).
+    // Linear is the reference itself (checked against the oracle in tests/geometry/reference.rs).
     for &alg in Algorithm::ARRAY.iter().filter(|&&a| a != Algorithm::Linear) {
         for (a, b) in [(p, q), (q, p)] {
             let got = alg.intersects(Precision::Exact, a, b);

@@ -2,8 +2,7 @@
 //! line as soon as it is computed (a client can wait for each), hostile input answered
 //! line by line, output failures and closed pipes, bounded memory in long sessions.
 
-mod common;
-use common::run;
+use crate::common::run;
 use polysect::protocol::scene::{SceneOptions, SceneSession};
 use serde_json::{Value, json};
 use std::io::{self, BufRead, BufReader, Read, Write};
@@ -70,7 +69,7 @@ fn the_readme_session() {
         }
     }
     // The session with the README's options shown in its text.
-    let readme = include_str!("../README.md");
+    let readme = include_str!("../../README.md");
     assert!(readme.contains(r#"{"op": "insert", "name": "square", "after": 1, "point": [5, 2]}"#));
     assert!(
         readme.contains(

@@ -5,8 +5,7 @@
 use polysect::SimplePolygon;
 use serde_json::Value;
 
-mod common;
-use common::run;
+use crate::common::run;
 
 fn lines(args: &[&str]) -> Vec<Value> {
     let (code, out, err) = run(args, b"");

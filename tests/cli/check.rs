@@ -1,7 +1,6 @@
 //! The `polysect` binary per the CLI contract: JSON Lines in, one line out per line.
 
-mod common;
-use common::run;
+use crate::common::run;
 
 fn answers(args: &[&str], input: &str) -> Vec<serde_json::Value> {
     let (code, out, err) = run(args, input.as_bytes());

@@ -40,7 +40,7 @@ fn check_all_linked(
 ) {
     let (p, q) = pair;
     let (lp, lq) = linked;
-    // The reference itself (its fast kernel is measured in tests/reference.rs).
+    // The reference itself (its fast kernel is measured in tests/geometry/reference.rs).
     let truth = Linear.intersects(p, q);
     for &algorithm in Algorithm::LOGARITHMIC {
         assert_eq!(

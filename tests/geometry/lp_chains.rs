@@ -6,9 +6,7 @@
 //! separator, and everything scaled by 2^±500 or shifted by 2^40; every start pair and
 //! both orientations of each chain.
 
-mod hulls;
-
-use hulls::hulls_intersect;
+use crate::hulls::hulls_intersect;
 use polysect::kernel::Kernel;
 use polysect::lp::{LpWorkspace, Separation, separate_chains, separating_line};
 use polysect::polygon::{HullAlgorithm, hull_vertices};

@@ -6,8 +6,7 @@
 //! strategy and precision. Printed coordinates must be, bit for bit, vertices of the
 //! cleaned polygons. Corrupted printed certificates are rejected.
 
-mod common;
-use common::run;
+use crate::common::run;
 use polysect::intersect::{Certificate, CertificateError, Which, brute_force, verify};
 use polysect::{ConvexPolygon, Point};
 use serde_json::Value;

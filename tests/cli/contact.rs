@@ -2,9 +2,7 @@
 //! field names and order, the overlap's start and dropped repeats, `null` past the
 //! largest double, errors and ids as in `check`.
 
-mod common;
-
-use common::run;
+use crate::common::run;
 
 fn contact(input: &str, args: &[&str]) -> Vec<String> {
     let mut all = vec!["contact"];

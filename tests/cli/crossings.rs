@@ -3,8 +3,7 @@
 
 use serde_json::{Value, json};
 
-mod common;
-use common::run;
+use crate::common::run;
 
 fn answers(args: &[&str], input: &str) -> Vec<Value> {
     let (code, out, err) = run(args, input.as_bytes());
