@@ -33,6 +33,7 @@ mod linked;
 pub mod queries;
 mod shapes;
 mod simple;
+mod vertices;
 
 pub(crate) use boundary::Boundary;
 pub use convex::ConvexPolygon;
@@ -51,6 +52,7 @@ pub(crate) use linked::Identity;
 pub use linked::sampling::SampleWorkspace;
 pub use linked::{LinkedPolygon, VertexId};
 pub use simple::{SimplePolygon, SimplePolygonError};
+pub(crate) use vertices::{PosedVertices, Vertices};
 
 use crate::kernel::{Exact, Kernel, Orientation, Point};
 

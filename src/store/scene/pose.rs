@@ -44,7 +44,22 @@ pub(in crate::store) struct Posed {
     pub(in crate::store) snapshot_due: bool,
 }
 
+/// From this many vertices a posed polygon whose lazy pose left its snapshot owed is
+/// read by the array test through its pose ([`PosedVertices`](crate::polygon::PosedVertices):
+/// `Pose::apply` of each vertex the O(log n) search reads) instead of settling the
+/// snapshot (n applies). Below it the snapshot is built: a search on a small polygon
+/// reads a large share of its vertices, some more than once, and the linear walk the
+/// cost model picks there reads them all.
+pub(in crate::store) const VIEW_MIN_VERTICES: usize = 24;
+
 impl Posed {
+    /// Whether the array test reads this polygon through its pose: its snapshot is owed
+    /// (never built for this pose) and it has at least [`VIEW_MIN_VERTICES`] vertices.
+    #[inline]
+    pub(in crate::store) fn reads_through_pose(&self) -> bool {
+        self.snapshot_due && self.array.len() >= VIEW_MIN_VERTICES
+    }
+
     /// `shape` (strictly convex) under `pose`. O(n): the array and the margin.
     fn new(pose: Pose, shape: LinkedPolygon) -> Posed {
         let (array, margin) = shape_facts(&shape);
@@ -214,13 +229,14 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Builds the world snapshot a lazy pose left owed (one pass over the shape's
-    /// array); O(1) when none is owed.
+    /// array); O(1) when none is owed, or when the array test reads the polygon through
+    /// its pose instead ([`Posed::reads_through_pose`]: the snapshot stays owed).
     pub(in crate::store) fn settle(&mut self, key: usize) {
         let e = &mut self.entries[key];
         let Some(posed) = e.posed.as_deref_mut() else {
             return;
         };
-        if !std::mem::take(&mut posed.snapshot_due) {
+        if posed.reads_through_pose() || !std::mem::take(&mut posed.snapshot_due) {
             return;
         }
         let pose = posed.pose;
