@@ -5,9 +5,13 @@
 //! A pose is set in O(log n) when the shape's rounding margin proves the rounded image
 //! strictly convex ([`proves_convex`], O(1)): the world box from four extreme-vertex
 //! searches on the shape's array (`extreme.rs`), the pose recorded, the world polygon
-//! and its snapshot built only when something reads them (the linked image by the
-//! first reader, O(n); the snapshot, when the polygon had one, by the planner when the
-//! polygon's box meets another's, one O(n) pass over the shape's array). Otherwise
+//! built only when something reads it (the linked image by the first reader, O(n)).
+//! A snapshot the polygon had stays owed: from [`VIEW_MIN_VERTICES`] vertices the
+//! array test reads the world vertices through the pose (`Pose::apply` of the O(log n)
+//! vertices its search reads, `polygon::PosedVertices`), so the snapshot is never
+//! built; below it, where n images cost about what the four searches do, the pose
+//! computes the world array at once (O(n) with a small constant), which gives the box
+//! exactly and is the snapshot. Otherwise
 //! (first pose, a margin too small for the coordinates' rounding, an overflowing
 //! extreme) it is O(n): the image with its exact strict-convexity check, its box and
 //! its snapshot. Vertex edits of a posed polygon are O(n) (the new shape's array and
@@ -206,6 +210,47 @@ impl<K: Kernel> Scene<K> {
         let Some(posed) = e.posed.as_deref_mut() else {
             return false;
         };
+        let owed = e.snapshot.is_some() || posed.snapshot_due;
+        if owed && posed.array.len() < VIEW_MIN_VERTICES {
+            // A small polygon that holds (or owes) a snapshot: its world array, n images,
+            // costs about what the four extreme searches do, gives the box exactly, and
+            // is the snapshot the planner would build (in the old snapshot's buffer).
+            // Taking the old snapshot leaves it owed for the pose in place, so that an
+            // early return (the full path, or a refusal that keeps the old pose) builds
+            // it again when it is needed.
+            let mut world = e
+                .snapshot
+                .take()
+                .map(ConvexPolygon::into_vertices)
+                .unwrap_or_default();
+            posed.snapshot_due = true;
+            world.clear();
+            for &p in posed.array.vertices() {
+                // An overflowing image: the full path names the shape point.
+                let Some(w) = pose.apply(p) else {
+                    return false;
+                };
+                world.push(w);
+            }
+            let bbox = crate::polygon::box_of(&world);
+            if !proves_convex(posed.margin, &pose, &bbox) {
+                return false;
+            }
+            posed.pose = pose;
+            posed.snapshot_due = false;
+            e.snapshot = Some(ConvexPolygon::from_ccw_unchecked(world));
+            e.polygon.remap(&posed.shape, pose);
+            e.bbox = bbox;
+            e.bbox_tight = true;
+            e.rounding_margin = 0.0;
+            e.version += 1;
+            self.broad.mark(key);
+            #[cfg(test)]
+            {
+                self.lazy_poses += 1;
+            }
+            return true;
+        }
         // An overflowing extreme: the full path names the shape point.
         let Some(bbox) = extreme::image_box(posed.array.vertices(), &pose) else {
             return false;
