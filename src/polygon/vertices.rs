@@ -67,7 +67,7 @@ impl<'a> PosedVertices<'a> {
     }
 
     /// The world vertices, in order. O(n).
-    pub(crate) fn to_points(&self) -> Vec<Point> {
+    pub(crate) fn to_points(self) -> Vec<Point> {
         (0..self.shape.len()).map(|i| self.get(i)).collect()
     }
 }
