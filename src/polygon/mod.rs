@@ -50,6 +50,7 @@ pub use line_query::line_chord_linear;
 pub use line_query::{Chord, ChordEnd, LineQueryError};
 pub(crate) use linked::Identity;
 pub use linked::sampling::SampleWorkspace;
+pub(crate) use linked::turn_margin;
 pub use linked::{LinkedPolygon, VertexId};
 pub use simple::{SimplePolygon, SimplePolygonError};
 pub(crate) use vertices::{PosedVertices, Vertices};

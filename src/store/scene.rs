@@ -843,6 +843,7 @@ fn grid_of(p: Point) -> f64 {
 mod extreme;
 mod pose;
 mod user;
+mod weak;
 
 #[cfg(test)]
 mod tests;

@@ -24,6 +24,7 @@
 
 use super::super::lazy::LazyLinked;
 use super::extreme;
+use super::weak::WeakTurns;
 use super::{PolygonId, Scene, SceneError};
 use crate::kernel::{BoundingBox, Kernel, Point, Pose, PoseError};
 use crate::polygon::{ConvexPolygon, EditError, LinkedPolygon};
@@ -43,6 +44,8 @@ pub(in crate::store) struct Posed {
     /// The least `turn_margin` of the shape's turns (0 when none is proved): a bound on
     /// how far rounding may move the image's vertices and keep it strictly convex.
     pub(in crate::store) margin: f64,
+    /// The turns too flat for `margin`, each checked on its own at a pose (`weak.rs`).
+    pub(in crate::store) weak: WeakTurns,
     /// The polygon had a snapshot when a lazy pose dropped it: the planner rebuilds it
     /// (from `array`) when the polygon's box next meets another's.
     pub(in crate::store) snapshot_due: bool,
@@ -64,12 +67,20 @@ impl Posed {
         self.snapshot_due && self.array.len() >= VIEW_MIN_VERTICES
     }
 
+    /// Whether the rounded image under `pose`, lying in `world`, is proved strictly
+    /// convex: by the shape-wide margin, else by the strong turns' margin and each weak
+    /// turn on its own (`weak.rs`). O(1), or O(k) for k weak turns.
+    fn proves_convex(&self, pose: &Pose, world: &BoundingBox) -> bool {
+        proves_convex(self.margin, pose, world) || self.weak.prove(self.array.vertices(), pose, world)
+    }
+
     /// `shape` (strictly convex) under `pose`. O(n): the array and the margin.
     fn new(pose: Pose, shape: LinkedPolygon) -> Posed {
         let (array, margin) = shape_facts(&shape);
         Posed {
             pose,
             shape: Arc::new(shape),
+            weak: WeakTurns::of(array.vertices()),
             array,
             margin,
             snapshot_due: false,
@@ -106,29 +117,56 @@ pub(super) fn shape_facts(shape: &LinkedPolygon) -> (ConvexPolygon, f64) {
 /// several ulps each; outside [2^-600, 2^600] for ρ² (where products could leave the
 /// normal range) nothing is proved.
 pub(super) fn proves_convex(margin: f64, pose: &Pose, world: &BoundingBox) -> bool {
-    const U: f64 = f64::EPSILON / 2.0;
     if margin <= 0.0 {
         return false;
     }
+    rounding_bound(pose, world).is_some_and(|b| b.proves(margin))
+}
+
+/// What [`proves_convex`] compares a margin with: δ, the most rounding moves a world
+/// coordinate in `world`, and bounds on ρ² = c² + s² (below) and ρ (above). `None` where
+/// nothing is proved (coordinates beyond 2^52, ρ² outside [2^-600, 2^600]).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct RoundingBound {
+    pub(super) delta: f64,
+    pub(super) rho2_low: f64,
+    pub(super) rho_high: f64,
+}
+
+impl RoundingBound {
+    /// Whether a turn of margin `margin` stays strictly left under every motion of its
+    /// vertices by at most δ per coordinate.
+    pub(super) fn proves(&self, margin: f64) -> bool {
+        const U: f64 = f64::EPSILON / 2.0;
+        let need = self.delta * std::f64::consts::SQRT_2 * self.rho_high.max(1.0) * (1.0 + 16.0 * U);
+        let have = margin * self.rho2_low * (1.0 - 16.0 * U);
+        need < have
+    }
+}
+
+pub(super) fn rounding_bound(pose: &Pose, world: &BoundingBox) -> Option<RoundingBound> {
+    const U: f64 = f64::EPSILON / 2.0;
     let largest = [world.min.x, world.min.y, world.max.x, world.max.y]
         .into_iter()
         .fold(0.0f64, |m, v| m.max(v.abs()));
     if largest.is_nan() || largest > 2f64.powi(52) {
-        return false;
+        return None;
     }
     let delta = largest * U * (1.0 + f64::EPSILON) + f64::from_bits(1);
     let [c, s] = pose.rotation();
     let rho2 = c * c + s * s;
     if !(2f64.powi(-600)..=2f64.powi(600)).contains(&rho2) {
-        return false;
+        return None;
     }
     // c² + s² rounds three times: within a factor (1 ± 3.01U); 8U covers it, and the
     // square root, the constant √2 and each product below round once more.
     let rho2_low = rho2 * (1.0 - 8.0 * U);
     let rho_high = (rho2 * (1.0 + 8.0 * U)).sqrt() * (1.0 + 4.0 * U);
-    let need = delta * std::f64::consts::SQRT_2 * rho_high.max(1.0) * (1.0 + 16.0 * U);
-    let have = margin * rho2_low * (1.0 - 16.0 * U);
-    need < have
+    Some(RoundingBound {
+        delta,
+        rho2_low,
+        rho_high,
+    })
 }
 
 /// The image of `shape` under `pose`, each coordinate correctly rounded, checked exactly.
@@ -233,7 +271,7 @@ impl<K: Kernel> Scene<K> {
                 world.push(w);
             }
             let bbox = crate::polygon::box_of(&world);
-            if !proves_convex(posed.margin, &pose, &bbox) {
+            if !posed.proves_convex(&pose, &bbox) {
                 return false;
             }
             posed.pose = pose;
@@ -255,7 +293,7 @@ impl<K: Kernel> Scene<K> {
         let Some(bbox) = extreme::image_box(posed.array.vertices(), &pose) else {
             return false;
         };
-        if !proves_convex(posed.margin, &pose, &bbox) {
+        if !posed.proves_convex(&pose, &bbox) {
             return false;
         }
         posed.pose = pose;
@@ -342,6 +380,7 @@ impl<K: Kernel> Scene<K> {
         let out = edit(&mut shape).map_err(|err| SceneError::Edit(id, err))?;
         let world = world_of(&shape, &posed.pose).map_err(|err| SceneError::Pose(id, err))?;
         (posed.array, posed.margin) = shape_facts(&shape);
+        posed.weak = WeakTurns::of(posed.array.vertices());
         posed.shape = Arc::new(shape);
         e.polygon = LazyLinked::new(world);
         e.account.edited();
