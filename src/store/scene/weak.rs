@@ -80,7 +80,7 @@ impl WeakTurns {
             // Each difference rounds once (relative error U, or an absolute 2^-1075
             // below the normal range): widened by 4U and the least subnormal.
             let edge = norm(a, b).min(norm(b, c)) * (1.0 - 4.0 * U) - f64::from_bits(1);
-            if !(edge > 0.0) {
+            if edge.is_nan() || edge <= 0.0 {
                 return WeakTurns::default();
             }
             turns.push(WeakTurn { at: i, edge });
