@@ -10,8 +10,8 @@
 //! that u · v > 0 (exterior angle below π/2, exactly) and of the image that both edges
 //! be longer than 4δ: an edge moves by at most 2√2·δ (2δ per coordinate), less than
 //! its length over √2, so its direction turns by less than π/4 all along the motion and
-//! the exterior angle, starting in (0, π/2), stays in (−π/2, π) and never vanishes an
-//! edge. Every exterior angle thus stays in (−π, π) and varies continuously, so the
+//! the exterior angle, starting in (0, π/2), stays in (−π/2, π); neither edge vanishes.
+//! Every exterior angle thus stays in (−π, π) and varies continuously, so the
 //! total turning, a multiple of 2π, stays the shape's 2π. At the end every strong turn
 //! is strictly left and every weak one is checked strictly left exactly (the orientation
 //! of its three rounded vertices): all turns strictly left with total turning 2π is a
