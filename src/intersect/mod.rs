@@ -55,6 +55,9 @@ pub(crate) use crate::seeding::fresh_rng;
 pub use barba::Barba;
 #[cfg(feature = "instrument")]
 pub use barba::BarbaVariant;
+pub(crate) use barba::{
+    certified_vertices as barba_certified_vertices, intersects_vertices as barba_vertices,
+};
 pub use certificate::{Certificate, CertificateError, Which, verify, verify_linked};
 pub use chazelle_dobkin::ChazelleDobkin;
 pub use clm::{Clm, ClmWorkspace};

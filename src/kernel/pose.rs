@@ -193,8 +193,15 @@ impl Pose {
         if !p.is_finite() {
             return None;
         }
-        let x = rounded_affine(self.c, p.x, self.s, p.y, self.tx)?;
-        let y = rounded_affine(self.s, p.x, -self.c, p.y, self.ty)?;
+        let [fx, fy] = fast_apply(self, p);
+        let x = match fx {
+            Some(x) => x,
+            None => rounded_affine(self.c, p.x, self.s, p.y, self.tx)?,
+        };
+        let y = match fy {
+            Some(y) => y,
+            None => rounded_affine(self.s, p.x, -self.c, p.y, self.ty)?,
+        };
         Some(Point::new(x, y))
     }
 }
@@ -289,6 +296,78 @@ fn fast_affine(a: f64, x: f64, b: f64, y: f64, t: f64) -> Option<f64> {
     } else {
         None
     }
+}
+
+/// Both coordinates on [`fast_affine`]'s path, with the four factors split and
+/// range-checked once for the two (each coordinate's two products share them): `Some`
+/// only where the coordinate is proved the correctly rounded value; `None` sends that
+/// coordinate to [`rounded_affine`].
+#[inline]
+fn fast_apply(pose: &Pose, p: Point) -> [Option<f64>; 2] {
+    let (c, s, x, y) = (pose.c, pose.s, p.x, p.y);
+    let normal = |v: f64| v == 0.0 || v.abs() >= 1.0e-300;
+    let splittable = c.abs().max(s.abs()).max(x.abs()).max(y.abs()) < SPLIT_LIMIT
+        && normal(c)
+        && normal(s)
+        && normal(x)
+        && normal(y);
+    if !splittable {
+        return [None, None];
+    }
+    let (cx, sy, sx, cy) = (c * x, s * y, s * x, c * y);
+    let exact_product =
+        |p: f64, f: f64, g: f64| p.is_finite() && (p.abs() >= TINY_PRODUCT || f == 0.0 || g == 0.0);
+    if !(exact_product(cx, c, x)
+        && exact_product(sy, s, y)
+        && exact_product(sx, s, x)
+        && exact_product(cy, c, y))
+    {
+        return [None, None];
+    }
+    let ((ch, cl), (sh, sl), (xh, xl), (yh, yl)) = (split(c), split(s), split(x), split(y));
+    // Dekker's two-product error from the splits (`product_error`).
+    let err = |ah: f64, al: f64, bh: f64, bl: f64, p: f64| ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+    // c·x − s·y + tx and s·x + c·y + ty; negating a product and its error is exact.
+    [
+        finish_affine(
+            cx,
+            err(ch, cl, xh, xl, cx),
+            -sy,
+            -err(sh, sl, yh, yl, sy),
+            pose.tx,
+        ),
+        finish_affine(sx, err(sh, sl, xh, xl, sx), cy, err(ch, cl, yh, yl, cy), pose.ty),
+    ]
+}
+
+/// `p1 + e1 + p2 + e2 + t` (exactly the affine value, `e1`, `e2` the products' errors)
+/// rounded once, when [`fast_affine`]'s bound proves it; the same summation and test.
+#[inline(always)]
+fn finish_affine(p1: f64, e1: f64, p2: f64, e2: f64, t: f64) -> Option<f64> {
+    let (s1, t1) = two_sum(p1, p2);
+    let (s2, t2) = two_sum(s1, t);
+    if !s2.is_finite() {
+        return None;
+    }
+    let tail = ((t1 + t2) + e1) + e2;
+    let sum_abs = ((t1.abs() + t2.abs()) + e1.abs()) + e2.abs();
+    let delta = sum_abs * (4.0 * U) + f64::from_bits(1);
+    let (r, r_err) = two_sum(s2, tail);
+    if r.is_nan() || r.abs() >= f64::MAX {
+        return None;
+    }
+    // The gaps to r's neighbours, from the bits of |r| (finite, below MAX): what
+    // `next_up` and `next_down` give, without their special cases. At 0 the half-gaps
+    // round to 0 and the test below fails anyway.
+    let a = r.abs();
+    if a == 0.0 {
+        return None;
+    }
+    let bits = a.to_bits();
+    let (above, below) = (f64::from_bits(bits + 1) - a, a - f64::from_bits(bits - 1));
+    let (gap_up, gap_down) = if r > 0.0 { (above, below) } else { (below, above) };
+    let (half_up, half_down) = (gap_up * 0.5, gap_down * 0.5);
+    (r_err + delta < half_up && r_err - delta > -half_down).then_some(r)
 }
 
 /// The slow path: exact rationals, one rounding.

@@ -33,6 +33,7 @@ mod linked;
 pub mod queries;
 mod shapes;
 mod simple;
+mod vertices;
 
 pub(crate) use boundary::Boundary;
 pub use convex::ConvexPolygon;
@@ -49,8 +50,10 @@ pub use line_query::line_chord_linear;
 pub use line_query::{Chord, ChordEnd, LineQueryError};
 pub(crate) use linked::Identity;
 pub use linked::sampling::SampleWorkspace;
+pub(crate) use linked::turn_margin;
 pub use linked::{LinkedPolygon, VertexId};
 pub use simple::{SimplePolygon, SimplePolygonError};
+pub(crate) use vertices::{PosedVertices, Vertices};
 
 use crate::kernel::{Exact, Kernel, Orientation, Point};
 

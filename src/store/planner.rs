@@ -70,7 +70,7 @@ impl<K: Kernel> Scene<K> {
                         if let Route::Sampled(a, b) = *route {
                             for (k, other) in [(a, b), (b, a)] {
                                 let (ek, eo) = (&self.entries[k], &self.entries[other]);
-                                if !ek.will_have_snapshot() && eo.plan.convert && eo.snapshot.is_none() {
+                                if !ek.will_have_snapshot() && eo.plan.convert && !eo.has_array() {
                                     let half = 0.5 * self.saving(a, b);
                                     self.entries[k].plan.known_ns += half;
                                 }
@@ -157,15 +157,16 @@ impl<K: Kernel> Scene<K> {
             self.stats.box_rejects += 1;
             return Route::Known(false);
         }
-        // Posed polygons whose boxes meet: the snapshots their lazy poses owe.
+        // Posed polygons whose boxes meet: the snapshots their lazy poses owe (small
+        // polygons; a large one is read through its pose).
         self.settle(a);
         self.settle(b);
         let saving = self.saving(a, b);
         for (k, other) in [(a, b), (b, a)] {
-            let has_other = self.entries[other].snapshot.is_some();
+            let has_other = self.entries[other].has_array();
             let e = &mut self.entries[k];
             e.account.queried();
-            if e.snapshot.is_none() {
+            if !e.has_array() {
                 if !e.plan.touched {
                     e.plan.touched = true;
                     touched.push(k);

@@ -4,8 +4,8 @@
 
 use super::planner::Plan;
 use super::route::{
-    QueryWorkspace, Route, array_certified, array_test, linear_certified, linear_test, sampled_certified,
-    sampled_test,
+    ArrayRef, QueryWorkspace, Route, array_certified, array_test, linear_certified, linear_test,
+    sampled_certified, sampled_test,
 };
 use super::scene::{PolygonId, Scene, SceneError};
 use crate::intersect::{Certificate, Which};
@@ -26,7 +26,7 @@ impl<K: Kernel> Scene<K> {
     /// answers and times never depend on the order or the thread).
     fn answer(&self, route: Route, ws: &mut QueryWorkspace, seed: u64) -> bool {
         let e = |k: usize| &self.entries[k];
-        let snapshot = |k: usize| e(k).snapshot.as_ref().expect("planned snapshot");
+        let snapshot = |k: usize| e(k).array().expect("planned array");
         match route {
             Route::Known(v) => v,
             Route::Warm { .. } => false,
@@ -38,8 +38,8 @@ impl<K: Kernel> Scene<K> {
             }
             Route::Throwaway(a, b, linear) => array_test(
                 self.kernel,
-                &e(a).polygon.get().to_convex(),
-                &e(b).polygon.get().to_convex(),
+                ArrayRef::Stored(&e(a).polygon.get().to_convex()),
+                ArrayRef::Stored(&e(b).polygon.get().to_convex()),
                 linear,
             ),
         }
@@ -59,13 +59,13 @@ impl<K: Kernel> Scene<K> {
         seed: u64,
     ) -> Certificate {
         let e = |k: usize| &self.entries[k];
-        let snapshot = |k: usize| e(k).snapshot.as_ref().expect("planned snapshot");
+        let snapshot = |k: usize| e(k).array().expect("planned array");
         match route {
             Route::Known(true) => {
                 let point = e(a).polygon.get().point_at(0);
                 Certificate::VertexInside { of: Which::P, point }
             }
-            Route::Known(false) => match (&e(a).snapshot, &e(b).snapshot) {
+            Route::Known(false) => match (e(a).array(), e(b).array()) {
                 (Some(p), Some(q)) => array_certified(Exact, p, q, false),
                 _ => {
                     let mut rng = SmallRng::seed_from_u64(seed);
@@ -81,8 +81,8 @@ impl<K: Kernel> Scene<K> {
             }
             Route::Throwaway(a, b, linear) => array_certified(
                 self.kernel,
-                &e(a).polygon.get().to_convex(),
-                &e(b).polygon.get().to_convex(),
+                ArrayRef::Stored(&e(a).polygon.get().to_convex()),
+                ArrayRef::Stored(&e(b).polygon.get().to_convex()),
                 linear,
             ),
         }

@@ -4,10 +4,11 @@
 
 use crate::intersect::LinkedEngine;
 use crate::intersect::{
-    ArrayIntersection, Barba, Certificate, Clm, ClmWorkspace, Linear, LinearLinked, LinkedIntersection, Which,
+    ArrayIntersection, Barba, Certificate, Clm, ClmWorkspace, Linear, LinearLinked, LinkedIntersection,
+    Which, barba_certified_vertices, barba_vertices,
 };
-use crate::kernel::{Kernel, Point};
-use crate::polygon::{ConvexPolygon, LinkedPolygon};
+use crate::kernel::{BoundingBox, Kernel, Point};
+use crate::polygon::{ConvexPolygon, LinkedPolygon, PosedVertices};
 use rand::SeedableRng;
 use rand::rngs::SmallRng;
 
@@ -49,13 +50,71 @@ pub(crate) fn linear_array_test<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &Con
     Linear.intersects_with(kernel, p, q)
 }
 
+/// What the array test reads of one polygon: its snapshot, or a posed polygon's world
+/// vertices computed on demand from its shape's array and its pose (no O(n) snapshot
+/// per pose), with the world polygon's bounding box.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum ArrayRef<'a> {
+    Stored(&'a ConvexPolygon),
+    Posed(PosedVertices<'a>, BoundingBox),
+}
+
+impl ArrayRef<'_> {
+    /// The number of vertices.
+    pub(crate) fn len(self) -> usize {
+        match self {
+            ArrayRef::Stored(p) => p.len(),
+            ArrayRef::Posed(v, _) => crate::polygon::Vertices::len(&v),
+        }
+    }
+
+    /// The polygon as an array, O(n): a copy of the snapshot, or a posed view's world
+    /// vertices collected (for the linear walk of a pair with a view, itself O(n)).
+    fn to_convex(self) -> ConvexPolygon {
+        match self {
+            ArrayRef::Stored(p) => p.clone(),
+            ArrayRef::Posed(v, _) => ConvexPolygon::from_ccw_unchecked(v.to_points()),
+        }
+    }
+}
+
+/// Barba–Langerman through the vertex access of each side (at least one posed view).
+#[inline(never)]
+fn barba_mixed<K: Kernel>(kernel: K, p: ArrayRef<'_>, q: ArrayRef<'_>) -> bool {
+    use ArrayRef::{Posed, Stored};
+    match (p, q) {
+        (Stored(p), Stored(q)) => barba_test(kernel, p, q),
+        (Posed(p, pb), Posed(q, qb)) => barba_vertices(kernel, (&p, pb), (&q, qb)),
+        (Posed(p, pb), Stored(q)) => barba_vertices(kernel, (&p, pb), (q.vertices(), q.bounding_box())),
+        (Stored(p), Posed(q, qb)) => barba_vertices(kernel, (p.vertices(), p.bounding_box()), (&q, qb)),
+    }
+}
+
+/// [`barba_mixed`]'s certified call: the certificate names world vertices.
+#[inline(never)]
+fn barba_mixed_certified<K: Kernel>(kernel: K, p: ArrayRef<'_>, q: ArrayRef<'_>) -> Certificate {
+    use ArrayRef::{Posed, Stored};
+    match (p, q) {
+        (Stored(p), Stored(q)) => Barba.certified_with(kernel, p, q),
+        (Posed(p, pb), Posed(q, qb)) => barba_certified_vertices(kernel, (&p, pb), (&q, qb)),
+        (Posed(p, pb), Stored(q)) => {
+            barba_certified_vertices(kernel, (&p, pb), (q.vertices(), q.bounding_box()))
+        }
+        (Stored(p), Posed(q, qb)) => {
+            barba_certified_vertices(kernel, (p.vertices(), p.bounding_box()), (&q, qb))
+        }
+    }
+}
+
 /// The array test on two snapshots: linear when `linear` (small polygons), else
 /// Barba–Langerman.
-pub(crate) fn array_test<K: Kernel>(kernel: K, p: &ConvexPolygon, q: &ConvexPolygon, linear: bool) -> bool {
-    if linear {
-        linear_array_test(kernel, p, q)
-    } else {
-        barba_test(kernel, p, q)
+pub(crate) fn array_test<K: Kernel>(kernel: K, p: ArrayRef<'_>, q: ArrayRef<'_>, linear: bool) -> bool {
+    match (p, q) {
+        (ArrayRef::Stored(p), ArrayRef::Stored(q)) if linear => linear_array_test(kernel, p, q),
+        (ArrayRef::Stored(p), ArrayRef::Stored(q)) => barba_test(kernel, p, q),
+        // The linear walk reads every vertex anyway: on the world arrays.
+        _ if linear => linear_array_test(kernel, &p.to_convex(), &q.to_convex()),
+        _ => barba_mixed(kernel, p, q),
     }
 }
 
@@ -78,14 +137,15 @@ pub(crate) fn linear_certified<K: Kernel>(kernel: K, p: &LinkedPolygon, q: &Link
 /// [`array_test`]'s certified call.
 pub(crate) fn array_certified<K: Kernel>(
     kernel: K,
-    p: &ConvexPolygon,
-    q: &ConvexPolygon,
+    p: ArrayRef<'_>,
+    q: ArrayRef<'_>,
     linear: bool,
 ) -> Certificate {
-    if linear {
-        Linear.certified_with(kernel, p, q)
-    } else {
-        Barba.certified_with(kernel, p, q)
+    match (p, q) {
+        (ArrayRef::Stored(p), ArrayRef::Stored(q)) if linear => Linear.certified_with(kernel, p, q),
+        (ArrayRef::Stored(p), ArrayRef::Stored(q)) => Barba.certified_with(kernel, p, q),
+        _ if linear => Linear.certified_with(kernel, &p.to_convex(), &q.to_convex()),
+        _ => barba_mixed_certified(kernel, p, q),
     }
 }
 

@@ -5,11 +5,13 @@
 use super::broad::BroadPhase;
 use super::cost::{Account, CostModel, PlannerStats, Strategy};
 use super::lazy::LazyLinked;
-use super::route::QueryWorkspace;
+use super::route::{ArrayRef, QueryWorkspace};
 use super::warm::{WarmCache, WarmStats};
 use crate::kernel::BoundingBox;
 use crate::kernel::{Exact, Kernel, Point, PoseError};
-use crate::polygon::{ConvexPolygon, EditError, Identity, LinkedPolygon, PolygonError, VertexId};
+use crate::polygon::{
+    ConvexPolygon, EditError, Identity, LinkedPolygon, PolygonError, PosedVertices, VertexId,
+};
 use pose::Posed;
 use rand::SeedableRng;
 use rand::rngs::SmallRng;
@@ -169,9 +171,31 @@ impl Entry {
         self.snapshot.is_some() || self.posed.as_ref().is_some_and(|p| p.snapshot_due)
     }
 
-    /// Has a snapshot, or will have one before the plan is answered.
+    /// What the array test reads: the snapshot, or (a posed polygon whose lazy pose
+    /// left its snapshot owed, large enough that reading vertices through the pose beats
+    /// building the array) the world vertices through the pose. `None` without either.
+    #[inline]
+    pub(super) fn array(&self) -> Option<ArrayRef<'_>> {
+        if let Some(s) = &self.snapshot {
+            return Some(ArrayRef::Stored(s));
+        }
+        let posed = self.posed.as_deref().filter(|p| p.reads_through_pose())?;
+        // The owed snapshot is the image of `array` under `pose`, every image finite and
+        // the rounded image strictly convex (the lazy pose proved it); `bbox` is its box.
+        let view = PosedVertices::new_unchecked(posed.array.vertices(), posed.pose);
+        Some(ArrayRef::Posed(view, self.bbox))
+    }
+
+    /// Whether [`array`](Self::array) is `Some`.
+    #[inline]
+    pub(super) fn has_array(&self) -> bool {
+        self.snapshot.is_some() || self.posed.as_deref().is_some_and(|p| p.reads_through_pose())
+    }
+
+    /// Has an array (a snapshot or a posed view), or will have one before the plan is
+    /// answered.
     pub(super) fn will_have_snapshot(&self) -> bool {
-        self.snapshot.is_some() || self.plan.convert
+        self.has_array() || self.plan.convert
     }
 }
 
@@ -819,6 +843,9 @@ fn grid_of(p: Point) -> f64 {
 mod extreme;
 mod pose;
 mod user;
+mod weak;
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod view_tests;

@@ -117,7 +117,7 @@ impl<K: Kernel> Scene<K> {
         if !ea.bbox.overlaps(&eb.bbox) {
             return false;
         }
-        if let (Some(p), Some(q)) = (&ea.snapshot, &eb.snapshot) {
+        if let (Some(p), Some(q)) = (ea.array(), eb.array()) {
             let linear = self.costs.array_is_linear(p.len(), q.len());
             return array_test(self.kernel, p, q, linear);
         }

@@ -5,7 +5,7 @@ use super::{Variant, known};
 use crate::intersect::certificate::{same_direction, turn_gt};
 use crate::intersect::{ArrayIntersection, Linear, Probe};
 use crate::kernel::{Kernel, Orientation, Point, ShortEdges, line_meet_side, segments_intersect};
-use crate::polygon::ConvexPolygon;
+use crate::polygon::{ConvexPolygon, Vertices};
 use Orientation::{Ccw, Collinear, Cw};
 
 /// `len ≥ 3` consecutive vertices of a polygon from array index `start`. For P' it may
@@ -26,11 +26,11 @@ impl Range {
         if i >= n { i - n } else { i }
     }
     #[inline]
-    fn at(self, v: &[Point], pos: usize) -> Point {
-        v[self.idx(v.len(), pos)]
+    fn at<W: Vertices + ?Sized>(self, v: &W, pos: usize) -> Point {
+        v.get(self.idx(v.len(), pos))
     }
     #[inline]
-    fn sub(self, v: &[Point], from: usize, to: usize) -> Range {
+    fn sub<W: Vertices + ?Sized>(self, v: &W, from: usize, to: usize) -> Range {
         let s = self.start + from;
         Range {
             start: if s >= v.len() { s - v.len() } else { s },
@@ -155,10 +155,10 @@ pub(super) trait Mode {
     /// with them, and hands them to the witness ([`Exit::Segment`]).
     const CERTIFY: bool;
     /// The run on `pv` and `qv` ended with this answer; `exit` says how.
-    fn done<K: Kernel, V: Variant>(
+    fn done<K: Kernel, V: Variant, PV: Vertices + ?Sized, QV: Vertices + ?Sized>(
         k: K,
-        pv: &[Point],
-        qv: &[Point],
+        pv: &PV,
+        qv: &QV,
         meets: bool,
         exit: impl FnOnce() -> Exit,
     ) -> Self::Out;
@@ -171,10 +171,10 @@ impl Mode for Plain {
     type Out = bool;
     const CERTIFY: bool = false;
     #[inline(always)]
-    fn done<K: Kernel, V: Variant>(
+    fn done<K: Kernel, V: Variant, PV: Vertices + ?Sized, QV: Vertices + ?Sized>(
         _: K,
-        _: &[Point],
-        _: &[Point],
+        _: &PV,
+        _: &QV,
         meets: bool,
         _: impl FnOnce() -> Exit,
     ) -> bool {
@@ -189,10 +189,10 @@ impl Mode for Record {
     type Out = Exit;
     const CERTIFY: bool = true;
     #[inline(always)]
-    fn done<K: Kernel, V: Variant>(
+    fn done<K: Kernel, V: Variant, PV: Vertices + ?Sized, QV: Vertices + ?Sized>(
         _: K,
-        _: &[Point],
-        _: &[Point],
+        _: &PV,
+        _: &QV,
         _: bool,
         exit: impl FnOnce() -> Exit,
     ) -> Exit {
@@ -249,10 +249,10 @@ impl SideCache {
 }
 
 /// The test, returning what mode `M` asks for, in variant `V`.
-pub(super) fn run<K: Kernel, P: Probe, M: Mode, V: Variant>(
+pub(super) fn run<K: Kernel, P: Probe, M: Mode, V: Variant, PV: Vertices + ?Sized, QV: Vertices + ?Sized>(
     k: K,
-    pv: &[Point],
-    qv: &[Point],
+    pv: &PV,
+    qv: &QV,
     probe: &mut P,
 ) -> M::Out {
     let mut pr = Range {
@@ -272,7 +272,7 @@ pub(super) fn run<K: Kernel, P: Probe, M: Mode, V: Variant>(
                 range: qr,
                 chord: false,
             };
-            return against_small::<K, P, M, V>(k, pv, pr, qv, qs, probe);
+            return against_small::<K, P, M, V, PV, QV>(k, pv, pr, qv, qs, probe);
         }
         probe.iteration();
         pr = known::<V>(pr);
@@ -281,7 +281,7 @@ pub(super) fn run<K: Kernel, P: Probe, M: Mode, V: Variant>(
             tp: pr.tri(),
             q: crate::intersect::Span::new(qr.start, qr.len),
         });
-        let decision = step::<K, V>(k, pv, pr, qv, qr, &mut cache);
+        let decision = step::<K, V, PV, QV>(k, pv, pr, qv, qr, &mut cache);
         let (n, m) = (pv.len(), qv.len());
         let (tp, ep) = (pr.tri(), e_positions(qr));
         // A certified run computes its exit's positions only where it ends (the thirds
@@ -298,16 +298,18 @@ pub(super) fn run<K: Kernel, P: Probe, M: Mode, V: Variant>(
         };
         match decision {
             Step::InK(i) => {
-                return M::done::<K, V>(k, pv, qv, true, || Exit::PInside(pr.idx(n, tp()[i as usize])));
+                return M::done::<K, V, PV, QV>(k, pv, qv, true, || {
+                    Exit::PInside(pr.idx(n, tp()[i as usize]))
+                });
             }
             Step::InTriangle(x) => {
-                return M::done::<K, V>(k, pv, qv, true, || {
+                return M::done::<K, V, PV, QV>(k, pv, qv, true, || {
                     Exit::QInside(qr.idx(m, ep()[x as usize / 2] + x as usize % 2))
                 });
             }
             Step::Crossing(a, j) => {
                 let (a, b) = pr.chord(a as usize);
-                return M::done::<K, V>(k, pv, qv, true, || Exit::Chord {
+                return M::done::<K, V, PV, QV>(k, pv, qv, true, || Exit::Chord {
                     a: pr.idx(n, tp()[a]),
                     b: pr.idx(n, tp()[b]),
                     e: qr.idx(m, ep()[j as usize]),
@@ -315,15 +317,15 @@ pub(super) fn run<K: Kernel, P: Probe, M: Mode, V: Variant>(
             }
             Step::ApartLine(j) => {
                 let e = ep()[j as usize];
-                return M::done::<K, V>(k, pv, qv, false, || {
+                return M::done::<K, V, PV, QV>(k, pv, qv, false, || {
                     apart(Sep::QLine(qr.idx(m, e), qr.idx(m, e + 1)))
                 });
             }
             Step::ApartEdge(2) if !pr.thirds => {
-                return M::done::<K, V>(k, pv, qv, false, || apart(Sep::PChord));
+                return M::done::<K, V, PV, QV>(k, pv, qv, false, || apart(Sep::PChord));
             }
             Step::ApartEdge(a) => {
-                return M::done::<K, V>(k, pv, qv, false, || {
+                return M::done::<K, V, PV, QV>(k, pv, qv, false, || {
                     apart(Sep::PEdge(pr.idx(n, tp()[a as usize])))
                 });
             }
@@ -339,7 +341,7 @@ pub(super) fn run<K: Kernel, P: Probe, M: Mode, V: Variant>(
                     range: qr,
                     chord: true,
                 };
-                return against_small::<K, P, M, V>(k, pv, pr, qv, qs, probe);
+                return against_small::<K, P, M, V, PV, QV>(k, pv, pr, qv, qs, probe);
             }
             Step::KeepQ(pocket) => {
                 let m1 = (qr.len - 2) / 2;
@@ -352,7 +354,7 @@ pub(super) fn run<K: Kernel, P: Probe, M: Mode, V: Variant>(
             }
             Step::Stuck => {
                 let answer = fallback(k, pv, pr, qv, qr);
-                return M::done::<K, V>(k, pv, qv, answer, || Exit::Stuck(answer));
+                return M::done::<K, V, PV, QV>(k, pv, qv, answer, || Exit::Stuck(answer));
             }
         }
     }
@@ -360,11 +362,11 @@ pub(super) fn run<K: Kernel, P: Probe, M: Mode, V: Variant>(
 
 /// One iteration of the main loop (steps 1–5 of the module docs; in variant `V` step 5
 /// may come before step 2).
-pub(super) fn step<K: Kernel, V: Variant>(
+pub(super) fn step<K: Kernel, V: Variant, PV: Vertices + ?Sized, QV: Vertices + ?Sized>(
     k: K,
-    pv: &[Point],
+    pv: &PV,
     pr: Range,
-    qv: &[Point],
+    qv: &QV,
     qr: Range,
     cache: &mut SideCache,
 ) -> Step {
@@ -491,9 +493,9 @@ pub(super) fn keep_chain(pr: Range, c: usize) -> Option<usize> {
 /// strictly beyond the chain's first edge and strictly before its last edge.
 /// Otherwise the farthest point is a triangle vertex, strictly right of the line.
 #[inline]
-pub(super) fn prune_by_line<K: Kernel>(
+pub(super) fn prune_by_line<K: Kernel, PV: Vertices + ?Sized>(
     k: K,
-    pv: &[Point],
+    pv: &PV,
     pr: Range,
     (s, u): (Point, Point),
 ) -> Option<usize> {
@@ -540,18 +542,25 @@ pub(super) fn line_misses_hull<K: Kernel>(k: K, l: (Point, Point), lines: &[(Poi
 }
 
 /// Prunes P' against a Q' of at most six vertices (or a segment) given explicitly.
-pub(super) fn against_small<K: Kernel, P: Probe, M: Mode, V: Variant>(
+pub(super) fn against_small<
+    K: Kernel,
+    P: Probe,
+    M: Mode,
+    V: Variant,
+    PV: Vertices + ?Sized,
+    QV: Vertices + ?Sized,
+>(
     k: K,
-    pv: &[Point],
+    pv: &PV,
     mut pr: Range,
-    qv: &[Point],
+    qv: &QV,
     small: SmallQ,
     probe: &mut P,
 ) -> M::Out {
     let (idx, len) = small.indices(qv.len());
     let mut qs = [Point::default(); SMALL_Q];
     for (slot, &i) in qs.iter_mut().zip(&idx[..len]) {
-        *slot = qv[i];
+        *slot = qv.get(i);
     }
     let qs = &qs[..len];
     let n = pv.len();
@@ -570,7 +579,7 @@ pub(super) fn against_small<K: Kernel, P: Probe, M: Mode, V: Variant>(
                 Ok(axis) => Some(axis),
                 Err(table) => {
                     // From the positions and indices at hand (no division again).
-                    return M::done::<K, V>(k, pv, qv, true, || {
+                    return M::done::<K, V, PV, QV>(k, pv, qv, true, || {
                         let r = small.range;
                         Exit::Segment(SegmentExit {
                             t: tp.map(|pos| pr.idx(n, pos)),
@@ -588,7 +597,7 @@ pub(super) fn against_small<K: Kernel, P: Probe, M: Mode, V: Variant>(
             separating_axis(k, &t, qs)
         };
         let Some(axis) = axis else {
-            return M::done::<K, V>(k, pv, qv, true, || Exit::Small { pr, qs: small });
+            return M::done::<K, V, PV, QV>(k, pv, qv, true, || Exit::Small { pr, qs: small });
         };
         let keep = match axis {
             Axis::OfQ(i, j) => prune_by_line(k, pv, pr, (qs[i], qs[j])),
@@ -597,7 +606,7 @@ pub(super) fn against_small<K: Kernel, P: Probe, M: Mode, V: Variant>(
         match keep.and_then(|c| pr.chain_ends(c)) {
             Some((from, to)) => pr = pr.sub(pv, from, to),
             None => {
-                return M::done::<K, V>(k, pv, qv, false, || {
+                return M::done::<K, V, PV, QV>(k, pv, qv, false, || {
                     let line = match axis {
                         Axis::OfQ(i, j) => Sep::QLine(idx[i], idx[j]),
                         Axis::OfTriangle(2) if !pr.thirds => Sep::PChord,
@@ -718,8 +727,14 @@ impl SegmentExit {
 
 /// Only for kernels that contradict themselves: the O(n + m) reference on the
 /// remaining pieces.
-pub(super) fn fallback<K: Kernel>(k: K, pv: &[Point], pr: Range, qv: &[Point], qr: Range) -> bool {
-    let piece =
-        |v: &[Point], r: Range| ConvexPolygon::from_ccw_unchecked((0..r.len).map(|i| r.at(v, i)).collect());
-    Linear.intersects_with(k, &piece(pv, pr), &piece(qv, qr))
+pub(super) fn fallback<K: Kernel, PV: Vertices + ?Sized, QV: Vertices + ?Sized>(
+    k: K,
+    pv: &PV,
+    pr: Range,
+    qv: &QV,
+    qr: Range,
+) -> bool {
+    let p = ConvexPolygon::from_ccw_unchecked((0..pr.len).map(|i| pr.at(pv, i)).collect());
+    let q = ConvexPolygon::from_ccw_unchecked((0..qr.len).map(|i| qr.at(qv, i)).collect());
+    Linear.intersects_with(k, &p, &q)
 }

@@ -131,8 +131,8 @@ mod tests;
 
 use super::engine::{ArrayEngine, array_entry_points};
 use super::{ArrayIntersection, Certificate, Derivation, Probe};
-use crate::kernel::Kernel;
-use crate::polygon::ConvexPolygon;
+use crate::kernel::{BoundingBox, Kernel};
+use crate::polygon::{ConvexPolygon, Vertices};
 use engine::{Plain, Range, SMALL_Q, run};
 use witness::{Certify, Derive};
 
@@ -251,7 +251,7 @@ impl<const T: bool, const S: usize, const E: bool> ArrayIntersection for BarbaVa
     /// certificate, written once instead of passed up as a [`Derivation`] and moved.
     fn certified_with<K: Kernel>(&self, k: K, p: &ConvexPolygon, q: &ConvexPolygon) -> Certificate {
         let k = k.within([p.bounding_box(), q.bounding_box()]);
-        run::<K::Within, (), Certify, Self>(k, p.vertices(), q.vertices(), &mut ())
+        run::<K::Within, (), Certify, Self, _, _>(k, p.vertices(), q.vertices(), &mut ())
     }
 }
 
@@ -264,7 +264,7 @@ impl<const T: bool, const S: usize, const E: bool> ArrayEngine for BarbaVariant<
         probe: &mut P,
     ) -> bool {
         let k = k.within([p.bounding_box(), q.bounding_box()]);
-        run::<K::Within, P, Plain, Self>(k, p.vertices(), q.vertices(), probe)
+        run::<K::Within, P, Plain, Self, _, _>(k, p.vertices(), q.vertices(), probe)
     }
 
     /// See the module docs' "Certificate" section.
@@ -276,6 +276,35 @@ impl<const T: bool, const S: usize, const E: bool> ArrayEngine for BarbaVariant<
         probe: &mut P,
     ) -> Derivation {
         let k = k.within([p.bounding_box(), q.bounding_box()]);
-        run::<K::Within, P, Derive, Self>(k, p.vertices(), q.vertices(), probe)
+        run::<K::Within, P, Derive, Self, _, _>(k, p.vertices(), q.vertices(), probe)
     }
+}
+
+/// [`Barba`] on polygons read through [`Vertices`] (a posed view computes each vertex it
+/// reads), given their bounding boxes (which the exact kernel's filters are scaled to:
+/// each must contain its polygon). The same search as on arrays, generic over the
+/// access, so that on slices it is the array call's code.
+///
+/// # Complexity
+/// O(log n + log m) vertex reads and predicates for the answer; the certificate of an
+/// exit other than a vertex inside reads the polygons as slices
+/// ([`Vertices::with_slice`]: O(n + m) for computed vertices).
+#[inline]
+pub(crate) fn intersects_vertices<K: Kernel, PV: Vertices + ?Sized, QV: Vertices + ?Sized>(
+    k: K,
+    (pv, pbox): (&PV, BoundingBox),
+    (qv, qbox): (&QV, BoundingBox),
+) -> bool {
+    run::<K::Within, (), Plain, Ours, PV, QV>(k.within([pbox, qbox]), pv, qv, &mut ())
+}
+
+/// [`intersects_vertices`] with the certificate [`Barba`]'s certified call gives on the
+/// same vertices (every vertex it names is read through the access).
+#[inline]
+pub(crate) fn certified_vertices<K: Kernel, PV: Vertices + ?Sized, QV: Vertices + ?Sized>(
+    k: K,
+    (pv, pbox): (&PV, BoundingBox),
+    (qv, qbox): (&QV, BoundingBox),
+) -> Certificate {
+    run::<K::Within, (), Certify, Ours, PV, QV>(k.within([pbox, qbox]), pv, qv, &mut ())
 }

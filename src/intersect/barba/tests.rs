@@ -100,7 +100,8 @@ fn disjoint_exits_lift_to_certificates() {
                 }
                 let (pv, qv) = (p.vertices(), q.vertices());
                 let k = Exact.within([p.bounding_box(), q.bounding_box()]);
-                let Exit::Apart { pr, q: qs, line } = run::<_, (), Record, Ours>(k, pv, qv, &mut ()) else {
+                let Exit::Apart { pr, q: qs, line } = run::<_, (), Record, Ours, _, _>(k, pv, qv, &mut ())
+                else {
                     panic!("{family:?}: a disjoint pair ends without separation");
                 };
                 let lifted = lift(k, pv, qv, pr, qs, line);
@@ -154,7 +155,7 @@ fn meeting_exits_give_certificates() {
                     }
                     let (pv, qv) = (p.vertices(), q.vertices());
                     let k = Exact.within([p.bounding_box(), q.bounding_box()]);
-                    let exit = run::<_, (), Record, Ours>(k, pv, qv, &mut ());
+                    let exit = run::<_, (), Record, Ours, _, _>(k, pv, qv, &mut ());
                     let segment = matches!(exit, Exit::Segment(_));
                     // The segment is Q's own edge Q[d] → Q[c] when Q' was all of Q.
                     let q_edge = matches!(exit, Exit::Segment(s) if s.q_edge);

@@ -11,6 +11,7 @@ use crate::intersect::certificate::{
 use crate::intersect::engine::{Completer, Completion};
 use crate::intersect::{Certificate, Derivation, Which};
 use crate::kernel::{Kernel, Orientation, Point, SegmentContact, point_on_segment};
+use crate::polygon::Vertices;
 use Orientation::{Ccw, Collinear, Cw};
 
 /// The certified call: the exit turned into a certificate where it ends, so that no
@@ -21,10 +22,10 @@ impl Mode for Derive {
     type Out = Derivation;
     const CERTIFY: bool = true;
     #[inline(always)]
-    fn done<K: Kernel, V: Variant>(
+    fn done<K: Kernel, V: Variant, PV: Vertices + ?Sized, QV: Vertices + ?Sized>(
         k: K,
-        pv: &[Point],
-        qv: &[Point],
+        pv: &PV,
+        qv: &QV,
         _: bool,
         exit: impl FnOnce() -> Exit,
     ) -> Derivation {
@@ -34,14 +35,18 @@ impl Mode for Derive {
         match exit() {
             Exit::PInside(i) => Derivation::Certified(Certificate::VertexInside {
                 of: Which::P,
-                point: pv[i],
+                point: pv.get(i),
             }),
             Exit::QInside(j) => Derivation::Certified(Certificate::VertexInside {
                 of: Which::Q,
-                point: qv[j],
+                point: qv.get(j),
             }),
-            Exit::Segment(exit) => segment_derivation(k, pv, qv, exit),
-            other => derivation::<K, V>(k, pv, qv, other),
+            // The other exits read vertices all over both polygons: on slices (a
+            // computed polygon's vertices collected first, O(n), only where a run ends).
+            Exit::Segment(exit) => {
+                pv.with_slice(|pv| qv.with_slice(|qv| segment_derivation(k, pv, qv, exit)))
+            }
+            other => pv.with_slice(|pv| qv.with_slice(|qv| derivation::<K, V>(k, pv, qv, other))),
         }
     }
 }
@@ -55,24 +60,27 @@ impl Mode for Certify {
     type Out = Certificate;
     const CERTIFY: bool = true;
     #[inline(always)]
-    fn done<K: Kernel, V: Variant>(
+    fn done<K: Kernel, V: Variant, PV: Vertices + ?Sized, QV: Vertices + ?Sized>(
         k: K,
-        pv: &[Point],
-        qv: &[Point],
+        pv: &PV,
+        qv: &QV,
         _: bool,
         exit: impl FnOnce() -> Exit,
     ) -> Certificate {
         match exit() {
             Exit::PInside(i) => Certificate::VertexInside {
                 of: Which::P,
-                point: pv[i],
+                point: pv.get(i),
             },
             Exit::QInside(j) => Certificate::VertexInside {
                 of: Which::Q,
-                point: qv[j],
+                point: qv.get(j),
             },
-            Exit::Segment(exit) => segment_certificate(k, pv, qv, exit),
-            other => completed::<K, V>(k, pv, qv, other),
+            // As in `Derive`: the other exits on slices.
+            Exit::Segment(exit) => {
+                pv.with_slice(|pv| qv.with_slice(|qv| segment_certificate(k, pv, qv, exit)))
+            }
+            other => pv.with_slice(|pv| qv.with_slice(|qv| completed::<K, V>(k, pv, qv, other))),
         }
     }
 }
@@ -101,7 +109,7 @@ pub(super) fn completed<K: Kernel, V: Variant>(k: K, pv: &[Point], qv: &[Point],
 /// edge if [`lift`] finds one.
 #[inline]
 pub(super) fn rerun_lift<K: Kernel, V: Variant>(k: K, pv: &[Point], qv: &[Point]) -> Option<Certificate> {
-    match run::<K, (), Record, V>(k, qv, pv, &mut ()) {
+    match run::<K, (), Record, V, _, _>(k, qv, pv, &mut ()) {
         Exit::Apart { pr, q, line } => lift(k, qv, pv, pr, q, line).map(Certificate::swapped),
         _ => None,
     }
@@ -142,7 +150,7 @@ pub(super) fn derivation<K: Kernel, V: Variant>(k: K, pv: &[Point], qv: &[Point]
 /// the pair disjoint (or an inconsistent kernel gets stuck): what [`Linear`]'s and
 /// [`Dobkin`](crate::intersect::Dobkin)'s certified calls use for intersecting pairs.
 pub(crate) fn meeting_certificate<K: Kernel>(k: K, pv: &[Point], qv: &[Point]) -> Option<Certificate> {
-    meet_certificate(k, pv, qv, run::<K, (), Record, Ours>(k, pv, qv, &mut ()))
+    meet_certificate(k, pv, qv, run::<K, (), Record, Ours, _, _>(k, pv, qv, &mut ()))
 }
 
 /// The certificate of a meeting exit (`None` for the others).

@@ -31,6 +31,7 @@
 //! changes nothing.
 
 mod edits;
+pub(crate) use edits::turn_margin;
 pub(super) mod sampling;
 
 use super::{ConvexPolygon, EditError, PolygonError};

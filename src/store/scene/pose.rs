@@ -5,9 +5,13 @@
 //! A pose is set in O(log n) when the shape's rounding margin proves the rounded image
 //! strictly convex ([`proves_convex`], O(1)): the world box from four extreme-vertex
 //! searches on the shape's array (`extreme.rs`), the pose recorded, the world polygon
-//! and its snapshot built only when something reads them (the linked image by the
-//! first reader, O(n); the snapshot, when the polygon had one, by the planner when the
-//! polygon's box meets another's, one O(n) pass over the shape's array). Otherwise
+//! built only when something reads it (the linked image by the first reader, O(n)).
+//! A snapshot the polygon had stays owed: from [`VIEW_MIN_VERTICES`] vertices the
+//! array test reads the world vertices through the pose (`Pose::apply` of the O(log n)
+//! vertices its search reads, `polygon::PosedVertices`), so the snapshot is never
+//! built; below it, where n images cost about what the four searches do, the pose
+//! computes the world array at once (O(n) with a small constant), which gives the box
+//! exactly and is the snapshot. Otherwise
 //! (first pose, a margin too small for the coordinates' rounding, an overflowing
 //! extreme) it is O(n): the image with its exact strict-convexity check, its box and
 //! its snapshot. Vertex edits of a posed polygon are O(n) (the new shape's array and
@@ -20,6 +24,7 @@
 
 use super::super::lazy::LazyLinked;
 use super::extreme;
+use super::weak::WeakTurns;
 use super::{PolygonId, Scene, SceneError};
 use crate::kernel::{BoundingBox, Kernel, Point, Pose, PoseError};
 use crate::polygon::{ConvexPolygon, EditError, LinkedPolygon};
@@ -39,18 +44,43 @@ pub(in crate::store) struct Posed {
     /// The least `turn_margin` of the shape's turns (0 when none is proved): a bound on
     /// how far rounding may move the image's vertices and keep it strictly convex.
     pub(in crate::store) margin: f64,
+    /// The turns too flat for `margin`, each checked on its own at a pose (`weak.rs`).
+    pub(in crate::store) weak: WeakTurns,
     /// The polygon had a snapshot when a lazy pose dropped it: the planner rebuilds it
     /// (from `array`) when the polygon's box next meets another's.
     pub(in crate::store) snapshot_due: bool,
 }
 
+/// From this many vertices a posed polygon whose lazy pose left its snapshot owed is
+/// read by the array test through its pose ([`PosedVertices`](crate::polygon::PosedVertices):
+/// `Pose::apply` of each vertex the O(log n) search reads) instead of settling the
+/// snapshot (n applies). Below it the snapshot is built: a search on a small polygon
+/// reads a large share of its vertices, some more than once, and the linear walk the
+/// cost model picks there reads them all.
+pub(in crate::store) const VIEW_MIN_VERTICES: usize = 24;
+
 impl Posed {
+    /// Whether the array test reads this polygon through its pose: its snapshot is owed
+    /// (never built for this pose) and it has at least [`VIEW_MIN_VERTICES`] vertices.
+    #[inline]
+    pub(in crate::store) fn reads_through_pose(&self) -> bool {
+        self.snapshot_due && self.array.len() >= VIEW_MIN_VERTICES
+    }
+
+    /// Whether the rounded image under `pose`, lying in `world`, is proved strictly
+    /// convex: by the shape-wide margin, else by the strong turns' margin and each weak
+    /// turn on its own (`weak.rs`). O(1), or O(k) for k weak turns.
+    fn proves_convex(&self, pose: &Pose, world: &BoundingBox) -> bool {
+        proves_convex(self.margin, pose, world) || self.weak.prove(self.array.vertices(), pose, world)
+    }
+
     /// `shape` (strictly convex) under `pose`. O(n): the array and the margin.
     fn new(pose: Pose, shape: LinkedPolygon) -> Posed {
         let (array, margin) = shape_facts(&shape);
         Posed {
             pose,
             shape: Arc::new(shape),
+            weak: WeakTurns::of(array.vertices()),
             array,
             margin,
             snapshot_due: false,
@@ -87,29 +117,56 @@ pub(super) fn shape_facts(shape: &LinkedPolygon) -> (ConvexPolygon, f64) {
 /// several ulps each; outside [2^-600, 2^600] for ρ² (where products could leave the
 /// normal range) nothing is proved.
 pub(super) fn proves_convex(margin: f64, pose: &Pose, world: &BoundingBox) -> bool {
-    const U: f64 = f64::EPSILON / 2.0;
     if margin <= 0.0 {
         return false;
     }
+    rounding_bound(pose, world).is_some_and(|b| b.proves(margin))
+}
+
+/// What [`proves_convex`] compares a margin with: δ, the most rounding moves a world
+/// coordinate in `world`, and bounds on ρ² = c² + s² (below) and ρ (above). `None` where
+/// nothing is proved (coordinates beyond 2^52, ρ² outside [2^-600, 2^600]).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct RoundingBound {
+    pub(super) delta: f64,
+    pub(super) rho2_low: f64,
+    pub(super) rho_high: f64,
+}
+
+impl RoundingBound {
+    /// Whether a turn of margin `margin` stays strictly left under every motion of its
+    /// vertices by at most δ per coordinate.
+    pub(super) fn proves(&self, margin: f64) -> bool {
+        const U: f64 = f64::EPSILON / 2.0;
+        let need = self.delta * std::f64::consts::SQRT_2 * self.rho_high.max(1.0) * (1.0 + 16.0 * U);
+        let have = margin * self.rho2_low * (1.0 - 16.0 * U);
+        need < have
+    }
+}
+
+pub(super) fn rounding_bound(pose: &Pose, world: &BoundingBox) -> Option<RoundingBound> {
+    const U: f64 = f64::EPSILON / 2.0;
     let largest = [world.min.x, world.min.y, world.max.x, world.max.y]
         .into_iter()
         .fold(0.0f64, |m, v| m.max(v.abs()));
     if largest.is_nan() || largest > 2f64.powi(52) {
-        return false;
+        return None;
     }
     let delta = largest * U * (1.0 + f64::EPSILON) + f64::from_bits(1);
     let [c, s] = pose.rotation();
     let rho2 = c * c + s * s;
     if !(2f64.powi(-600)..=2f64.powi(600)).contains(&rho2) {
-        return false;
+        return None;
     }
     // c² + s² rounds three times: within a factor (1 ± 3.01U); 8U covers it, and the
     // square root, the constant √2 and each product below round once more.
     let rho2_low = rho2 * (1.0 - 8.0 * U);
     let rho_high = (rho2 * (1.0 + 8.0 * U)).sqrt() * (1.0 + 4.0 * U);
-    let need = delta * std::f64::consts::SQRT_2 * rho_high.max(1.0) * (1.0 + 16.0 * U);
-    let have = margin * rho2_low * (1.0 - 16.0 * U);
-    need < have
+    Some(RoundingBound {
+        delta,
+        rho2_low,
+        rho_high,
+    })
 }
 
 /// The image of `shape` under `pose`, each coordinate correctly rounded, checked exactly.
@@ -191,11 +248,52 @@ impl<K: Kernel> Scene<K> {
         let Some(posed) = e.posed.as_deref_mut() else {
             return false;
         };
+        let owed = e.snapshot.is_some() || posed.snapshot_due;
+        if owed && posed.array.len() < VIEW_MIN_VERTICES {
+            // A small polygon that holds (or owes) a snapshot: its world array, n images,
+            // costs about what the four extreme searches do, gives the box exactly, and
+            // is the snapshot the planner would build (in the old snapshot's buffer).
+            // Taking the old snapshot leaves it owed for the pose in place, so that an
+            // early return (the full path, or a refusal that keeps the old pose) builds
+            // it again when it is needed.
+            let mut world = e
+                .snapshot
+                .take()
+                .map(ConvexPolygon::into_vertices)
+                .unwrap_or_default();
+            posed.snapshot_due = true;
+            world.clear();
+            for &p in posed.array.vertices() {
+                // An overflowing image: the full path names the shape point.
+                let Some(w) = pose.apply(p) else {
+                    return false;
+                };
+                world.push(w);
+            }
+            let bbox = crate::polygon::box_of(&world);
+            if !posed.proves_convex(&pose, &bbox) {
+                return false;
+            }
+            posed.pose = pose;
+            posed.snapshot_due = false;
+            e.snapshot = Some(ConvexPolygon::from_ccw_unchecked(world));
+            e.polygon.remap(&posed.shape, pose);
+            e.bbox = bbox;
+            e.bbox_tight = true;
+            e.rounding_margin = 0.0;
+            e.version += 1;
+            self.broad.mark(key);
+            #[cfg(test)]
+            {
+                self.lazy_poses += 1;
+            }
+            return true;
+        }
         // An overflowing extreme: the full path names the shape point.
         let Some(bbox) = extreme::image_box(posed.array.vertices(), &pose) else {
             return false;
         };
-        if !proves_convex(posed.margin, &pose, &bbox) {
+        if !posed.proves_convex(&pose, &bbox) {
             return false;
         }
         posed.pose = pose;
@@ -214,13 +312,14 @@ impl<K: Kernel> Scene<K> {
     }
 
     /// Builds the world snapshot a lazy pose left owed (one pass over the shape's
-    /// array); O(1) when none is owed.
+    /// array); O(1) when none is owed, or when the array test reads the polygon through
+    /// its pose instead ([`Posed::reads_through_pose`]: the snapshot stays owed).
     pub(in crate::store) fn settle(&mut self, key: usize) {
         let e = &mut self.entries[key];
         let Some(posed) = e.posed.as_deref_mut() else {
             return;
         };
-        if !std::mem::take(&mut posed.snapshot_due) {
+        if posed.reads_through_pose() || !std::mem::take(&mut posed.snapshot_due) {
             return;
         }
         let pose = posed.pose;
@@ -281,6 +380,7 @@ impl<K: Kernel> Scene<K> {
         let out = edit(&mut shape).map_err(|err| SceneError::Edit(id, err))?;
         let world = world_of(&shape, &posed.pose).map_err(|err| SceneError::Pose(id, err))?;
         (posed.array, posed.margin) = shape_facts(&shape);
+        posed.weak = WeakTurns::of(posed.array.vertices());
         posed.shape = Arc::new(shape);
         e.polygon = LazyLinked::new(world);
         e.account.edited();
