@@ -350,7 +350,10 @@ impl<'a> PairSearch<'a> {
     }
 
     /// One pruning iteration; `Some(answer)` once the search is decided (then
-    /// `verdict` says why).
+    /// `verdict` says why). `#[inline]` so that every codegen unit that runs the
+    /// searches has its own copy, called without the cross-unit calling convention
+    /// (the loop in [`run`] calls it once per iteration).
+    #[inline]
     pub(super) fn step<K: Kernel, P: Probe, const LEMMA_BY_LEMMA: bool>(
         &mut self,
         k: K,
