@@ -274,19 +274,9 @@ impl<K: Kernel> Scene<K> {
             if !posed.proves_convex(&pose, &bbox) {
                 return false;
             }
-            posed.pose = pose;
             posed.snapshot_due = false;
             e.snapshot = Some(ConvexPolygon::from_ccw_unchecked(world));
-            e.polygon.remap(&posed.shape, pose);
-            e.bbox = bbox;
-            e.bbox_tight = true;
-            e.rounding_margin = 0.0;
-            e.version += 1;
-            self.broad.mark(key);
-            #[cfg(test)]
-            {
-                self.lazy_poses += 1;
-            }
+            self.accept_lazy_pose(key, pose, bbox);
             return true;
         }
         // An overflowing extreme: the full path names the shape point.
@@ -296,8 +286,17 @@ impl<K: Kernel> Scene<K> {
         if !posed.proves_convex(&pose, &bbox) {
             return false;
         }
-        posed.pose = pose;
         posed.snapshot_due |= e.snapshot.take().is_some();
+        self.accept_lazy_pose(key, pose, bbox);
+        true
+    }
+
+    /// What a lazy pose proved sets: the pose, the image left to its readers, the box,
+    /// the version, the broad phase (the snapshot is the caller's: built or owed).
+    fn accept_lazy_pose(&mut self, key: usize, pose: Pose, bbox: BoundingBox) {
+        let e = &mut self.entries[key];
+        let posed = e.posed.as_deref_mut().expect("a posed polygon");
+        posed.pose = pose;
         e.polygon.remap(&posed.shape, pose);
         e.bbox = bbox;
         e.bbox_tight = true;
@@ -308,7 +307,6 @@ impl<K: Kernel> Scene<K> {
         {
             self.lazy_poses += 1;
         }
-        true
     }
 
     /// Builds the world snapshot a lazy pose left owed (one pass over the shape's
