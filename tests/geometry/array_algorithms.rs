@@ -4,6 +4,7 @@
 //! disagreements are counted per family and printed (a measurement, not a failure).
 //! Run with `--nocapture` to see the counts.
 
+use crate::cases::companions;
 use polysect::generate::{self, Family, Relation, map_pair};
 use polysect::intersect::{Algorithm, ArrayIntersection, Linear, brute_force};
 use polysect::{ConvexPolygon, Exact, Point, Precision};
@@ -147,47 +148,10 @@ fn touching_containment_identical_nested() {
             &format!("identical rotated n={n}"),
             &mut fast,
         );
-        // Containment: a shrunken copy about an interior point (the vertex average).
-        let c = p
-            .vertices()
-            .iter()
-            .fold(Point::new(0., 0.), |s, v| Point::new(s.x + v.x, s.y + v.y));
-        let c = Point::new(c.x / p.len() as f64, c.y / p.len() as f64);
-        let f = [0.5, 0.9, 0.999][i % 3];
-        if let Ok(inner) = p.map(|v| Point::new(c.x + f * (v.x - c.x), c.y + f * (v.y - c.y))) {
-            check(
-                &(p.clone(), inner.starting_at(i)),
-                "containment",
-                &format!("contained n={n}"),
-                &mut fast,
-            );
-        }
-        // Triangles against the polygon: around vertices, on edges, outside near edges.
-        let v = p.vertex(i * 7);
-        let w = p.vertex(i * 7 + 1);
-        let s = 0.01 * (1 + i % 5) as f64;
-        let tris = [
-            [[v.x, v.y], [v.x + s, v.y], [v.x, v.y + s]],
-            [
-                [(v.x + w.x) / 2.0, (v.y + w.y) / 2.0],
-                [v.x * 1.5, v.y * 1.5],
-                [w.x * 1.5, w.y * 1.5],
-            ],
-            [
-                [v.x * 1.01, v.y * 1.01],
-                [v.x * 1.3, v.y * 1.01],
-                [v.x * 1.01, v.y * 1.3],
-            ],
-        ];
-        for t in tris {
-            if let Ok(t) = ConvexPolygon::new(t) {
-                check(
-                    &(p.clone(), t),
-                    "triangle-vs-large",
-                    &format!("triangle n={n} #{i}"),
-                    &mut fast,
-                );
-            }
+        // Containment (a shrunken copy) and triangles against the polygon: around
+        // vertices, on edges, outside near edges.
+        for (q, family, what) in companions(&p, i) {
+            check(&(p.clone(), q), family, &what, &mut fast);
         }
     }
     // Nested regular n-gons: the inner one inscribed in the outer one's edge midpoints

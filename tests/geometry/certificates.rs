@@ -14,6 +14,7 @@
 //!
 //! `POLYSECT_CERT_PAIRS` scales the number of random pairs per family (default 150).
 
+use crate::cases::companions;
 use polysect::generate::{self, Family, Relation, map_pair};
 use polysect::intersect::{
     Algorithm, ArrayIntersection, Barba, Certificate, ChazelleDobkin, Clm, ClmWorkspace, Convert,
@@ -302,42 +303,8 @@ fn containment_identical_and_small_against_large() {
             "identical",
             &format!("identical n={n}"),
         );
-        let c = p
-            .vertices()
-            .iter()
-            .fold(Point::new(0., 0.), |s, v| Point::new(s.x + v.x, s.y + v.y));
-        let c = Point::new(c.x / p.len() as f64, c.y / p.len() as f64);
-        let f = [0.5, 0.9, 0.999][i % 3];
-        if let Ok(inner) = p.map(|v| Point::new(c.x + f * (v.x - c.x), c.y + f * (v.y - c.y))) {
-            h.check(
-                &(p.clone(), inner.starting_at(i)),
-                "containment",
-                &format!("contained n={n}"),
-            );
-        }
-        let v = p.vertex(i * 7);
-        let w = p.vertex(i * 7 + 1);
-        let s = 0.01 * (1 + i % 5) as f64;
-        for t in [
-            [[v.x, v.y], [v.x + s, v.y], [v.x, v.y + s]],
-            [
-                [(v.x + w.x) / 2.0, (v.y + w.y) / 2.0],
-                [v.x * 1.5, v.y * 1.5],
-                [w.x * 1.5, w.y * 1.5],
-            ],
-            [
-                [v.x * 1.01, v.y * 1.01],
-                [v.x * 1.3, v.y * 1.01],
-                [v.x * 1.01, v.y * 1.3],
-            ],
-        ] {
-            if let Ok(t) = ConvexPolygon::new(t) {
-                h.check(
-                    &(p.clone(), t),
-                    "triangle-vs-large",
-                    &format!("triangle n={n} #{i}"),
-                );
-            }
+        for (q, family, what) in companions(&p, i) {
+            h.check(&(p.clone(), q), family, &what);
         }
     }
     h.tally.print("containment, identical, triangles");

@@ -3,6 +3,7 @@
 //! property tests, the LP and its chain walk, extreme vertices, line queries, calipers
 //! and the shape constructors. Every module checks against an exact reference.
 
+mod cases;
 mod hulls;
 
 mod array_algorithms;
