@@ -316,6 +316,9 @@ pub(super) fn union_side(p: &ConvexPolygon, q: &ConvexPolygon) -> f64 {
 }
 
 /// The pruning itself; `e` gives [`short_edges`] of the polygons, for the frame's kernel.
+/// `#[inline]` so that it is compiled into its callers' codegen units, as when it lived
+/// beside them (called once per query, it is the whole query).
+#[inline]
 pub(super) fn run<'a, K: Kernel, P: Probe>(
     k: K,
     pv: &'a [Point],
