@@ -6,18 +6,11 @@
 //! strategy and precision. Printed coordinates must be, bit for bit, vertices of the
 //! cleaned polygons. Corrupted printed certificates are rejected.
 
+use crate::answers;
 use crate::common::run;
 use polysect::intersect::{Certificate, CertificateError, Which, brute_force, verify};
 use polysect::{ConvexPolygon, Point};
 use serde_json::Value;
-
-fn lines(args: &[&str], input: &str) -> Vec<Value> {
-    let (code, out, err) = run(args, input.as_bytes());
-    assert_eq!(code, 0, "stderr: {err}");
-    out.lines()
-        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{e}: {l}")))
-        .collect()
-}
 
 fn points(v: &Value) -> Vec<Point> {
     v.as_array()
@@ -177,7 +170,7 @@ fn check_certificates_verify_for_every_algorithm_and_precision() {
                 "--seed",
                 "5",
             ];
-            let replies = lines(&args, &input);
+            let replies = answers(&args, &input);
             assert_eq!(replies.len(), pairs.len());
             for (i, ((p, q), reply)) in pairs.iter().zip(&replies).enumerate() {
                 assert_eq!(reply["id"], i, "{reply}");
@@ -306,7 +299,7 @@ fn scene_certificates_verify_for_every_strategy_and_precision() {
                 "--seed",
                 "3",
             ];
-            let replies = lines(&args, &input);
+            let replies = answers(&args, &input);
             for (at, a, b) in &queries {
                 assert!(replies[*at].get("error").is_none(), "{}", replies[*at]);
                 let poly = |r: &Value| ConvexPolygon::new(points(&r["points"])).unwrap();
@@ -325,7 +318,7 @@ fn corrupted_printed_certificates_are_rejected() {
     // P the square, Q a triangle one unit to its right: P's edge x = 2 separates.
     let input = "{\"p\": [[0,0],[2,0],[2,2],[0,2]], \"q\": [[3,0],[4,0],[4,1]]}\n\
                  {\"p\": [[0,0],[2,0],[2,2],[0,2]], \"q\": [[1,1],[3,1],[3,3]]}\n";
-    let replies = lines(&["check", "--certificate", "--algorithm", "linear"], input);
+    let replies = answers(&["check", "--certificate", "--algorithm", "linear"], input);
     let p = cleaned("[[0,0],[2,0],[2,2],[0,2]]");
     let q = cleaned("[[3,0],[4,0],[4,1]]");
     let sep = check_printed(&replies[0], &p, &q, "separated");

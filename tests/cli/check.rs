@@ -1,14 +1,7 @@
 //! The `polysect` binary per the CLI contract: JSON Lines in, one line out per line.
 
+use crate::answers;
 use crate::common::run;
-
-fn answers(args: &[&str], input: &str) -> Vec<serde_json::Value> {
-    let (code, out, err) = run(args, input.as_bytes());
-    assert_eq!(code, 0, "stderr: {err}");
-    out.lines()
-        .map(|l| serde_json::from_str(l).expect("every output line is JSON"))
-        .collect()
-}
 
 const CASES: &str = r#"{"p": [[0,0],[2,0],[2,2],[0,2]], "q": [[2,2],[3,2],[3,3]]}
 {"p": [[0,0],[2,0],[2,2],[0,2]], "q": [[2,1],[3,0],[3,2]]}

@@ -1,17 +1,10 @@
 //! `polysect crossings` per the CLI contract: JSON Lines in, one `{"points": ...}`
 //! or `{"error": ...}` line out per input line, in order.
 
-use serde_json::{Value, json};
+use serde_json::json;
 
+use crate::answers;
 use crate::common::run;
-
-fn answers(args: &[&str], input: &str) -> Vec<Value> {
-    let (code, out, err) = run(args, input.as_bytes());
-    assert_eq!(code, 0, "stderr: {err}");
-    out.lines()
-        .map(|l| serde_json::from_str(l).expect("every output line is JSON"))
-        .collect()
-}
 
 const SQUARE: &str = "[[0,0],[4,0],[4,4],[0,4]]";
 

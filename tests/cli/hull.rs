@@ -7,15 +7,8 @@ use serde_json::{Value, json};
 use std::io::{BufRead, BufReader, Write};
 use std::process::{Command, Stdio};
 
+use crate::answers;
 use crate::common::run;
-
-fn answers(args: &[&str], input: &str) -> Vec<Value> {
-    let (code, out, err) = run(args, input.as_bytes());
-    assert_eq!(code, 0, "stderr: {err}");
-    out.lines()
-        .map(|l| serde_json::from_str(l).expect("every output line is JSON"))
-        .collect()
-}
 
 #[test]
 fn hulls_diameters_and_degenerate_sets() {
